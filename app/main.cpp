@@ -1,0 +1,35 @@
+// The `lattice` command. Subcommands live in app/cmd_*.cpp; exit codes are
+// documented in docs/cli.md and defined by lattice::ErrorKind.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+
+#include "app/command_registry.hpp"
+#include "util/error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App root{"lattice: three-dimensional texturing using lattices (Lewis 1988), rendered to\n"
+                "PNG, Tektronix 4125/4027 command streams and a simulated Apollo DN660."};
+  root.set_version_flag("--version", LATTICE_VERSION);
+  root.require_subcommand(1);
+  root.footer("Run `lattice COMMAND --help` for a command's options. Exit codes: docs/cli.md.");
+  for (auto adder : lattice::app::commandAdders()) adder(root);
+
+  try {
+    root.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int code = root.exit(e);  // prints help/version (code 0) or the parse error
+    return code == 0 ? 0 : static_cast<int>(lattice::ErrorKind::Usage);
+  } catch (const lattice::Error& e) {
+    std::fflush(stdout);
+    fmt::print(stderr, "lattice: error: {}\n", e.what());
+    return e.exitCode();
+  } catch (const std::exception& e) {
+    std::fflush(stdout);
+    fmt::print(stderr, "lattice: internal error: {}\n(please report this with the command line that caused it)\n", e.what());
+    return static_cast<int>(lattice::ErrorKind::Internal);
+  }
+  return 0;
+}

@@ -1,0 +1,92 @@
+#include "io/png.hpp"
+
+#include <fmt/format.h>
+#include <png.h>
+
+#include <cstring>
+
+#include "io/atomic_file.hpp"
+#include "util/error.hpp"
+
+namespace lattice {
+namespace {
+
+void encodeAndWrite(const std::filesystem::path& path, png_image& image, const void* pixels,
+                    const void* colormap) {
+  png_alloc_size_t size = 0;
+  if (!png_image_write_to_memory(&image, nullptr, &size, 0, pixels, 0, colormap))
+    throw Error(ErrorKind::Output, fmt::format("{}: PNG encoding failed: {}", path.string(), image.message));
+  std::vector<std::uint8_t> buffer(size);
+  if (!png_image_write_to_memory(&image, buffer.data(), &size, 0, pixels, 0, colormap))
+    throw Error(ErrorKind::Output, fmt::format("{}: PNG encoding failed: {}", path.string(), image.message));
+  buffer.resize(size);
+  writeFileAtomically(path, buffer);
+}
+
+}  // namespace
+
+void writePng(const std::filesystem::path& path, const RgbImage& img) {
+  if (img.width <= 0 || img.height <= 0)
+    throw Error(ErrorKind::Output, fmt::format("{}: cannot write an empty image", path.string()));
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  image.width = static_cast<png_uint_32>(img.width);
+  image.height = static_cast<png_uint_32>(img.height);
+  image.format = PNG_FORMAT_RGB;
+  encodeAndWrite(path, image, img.rgb.data(), nullptr);
+}
+
+void writePng(const std::filesystem::path& path, const IndexedImage& img) {
+  if (img.width <= 0 || img.height <= 0)
+    throw Error(ErrorKind::Output, fmt::format("{}: cannot write an empty image", path.string()));
+  if (img.colormap.empty() || img.colormap.size() > 256) {
+    writePng(path, toRgbImage(img));
+    return;
+  }
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  image.width = static_cast<png_uint_32>(img.width);
+  image.height = static_cast<png_uint_32>(img.height);
+  image.format = PNG_FORMAT_RGB_COLORMAP;
+  image.colormap_entries = static_cast<png_uint_32>(img.colormap.size());
+  std::vector<std::uint8_t> cmap;
+  for (const Rgb8& c : img.colormap) cmap.insert(cmap.end(), {c.r, c.g, c.b});
+  // Indices beyond the map would make libpng fail; clamp them to entry 0 (a
+  // decoder's framebuffer may hold an index the stream never defined).
+  std::vector<std::uint8_t> pixels(img.pixels.begin(), img.pixels.end());
+  for (auto& p : pixels)
+    if (p >= img.colormap.size()) p = 0;
+  encodeAndWrite(path, image, pixels.data(), cmap.data());
+}
+
+RgbImage readPng(const std::filesystem::path& path) {
+  std::vector<std::uint8_t> data = readWholeFile(path);
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_memory(&image, data.data(), data.size()))
+    throw Error(ErrorKind::Input, fmt::format("{}: not a readable PNG: {}", path.string(), image.message));
+  image.format = PNG_FORMAT_RGB;
+  if (image.width == 0 || image.height == 0 || image.width > 65535 || image.height > 65535) {
+    png_image_free(&image);
+    throw Error(ErrorKind::Input, fmt::format("{}: unsupported PNG size {}x{}", path.string(), image.width, image.height));
+  }
+  RgbImage out(static_cast<int>(image.width), static_cast<int>(image.height));
+  // Composite any alpha onto black, so transparent pixels have a defined colour.
+  png_color black{0, 0, 0};
+  if (!png_image_finish_read(&image, &black, out.rgb.data(), 0, nullptr))
+    throw Error(ErrorKind::Input, fmt::format("{}: PNG decoding failed: {}", path.string(), image.message));
+  return out;
+}
+
+RgbImage toRgbImage(const IndexedImage& img) {
+  RgbImage out;
+  out.width = img.width;
+  out.height = img.height;
+  out.rgb = img.toRgb();
+  return out;
+}
+
+}  // namespace lattice

@@ -1,0 +1,20 @@
+#pragma once
+// Writes a stream to standard output (`--stream -`), e.g. to pipe into a
+// terminal emulator or `tee`.
+#include "io/byte_sink.hpp"
+
+namespace lattice {
+
+class StdoutSink final : public ByteSink {
+ public:
+  using ByteSink::write;
+  void write(std::span<const std::uint8_t> bytes) override;
+  void flush() override;
+  void close() override { flush(); }
+  std::uint64_t bytesWritten() const override { return written_; }
+
+ private:
+  std::uint64_t written_ = 0;
+};
+
+}  // namespace lattice
