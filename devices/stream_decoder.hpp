@@ -1,0 +1,38 @@
+#pragma once
+// An emulator is an ordinary decoder: feed it the bytes of a command stream
+// in any chunking (one byte at a time too) and it keeps an indexed
+// framebuffer and colour map, as the terminal's screen would. Any test can
+// drive one; `lattice emulate` writes its image as PNG.
+//
+// Decoders never throw on stream content: unknown commands and garbage are
+// skipped (resynchronising at the next command introducer) and counted in the
+// report. They never read out of bounds or loop without consuming input.
+#include <cstdint>
+#include <map>
+#include <span>
+#include <string>
+
+#include "pipeline/indexed_image.hpp"
+
+namespace lattice {
+
+struct DecodeReport {
+  std::uint64_t bytes = 0;            // bytes fed
+  std::uint64_t commands = 0;         // commands recognised and executed
+  std::uint64_t unknownCommands = 0;  // well-formed introducer, unknown name
+  std::uint64_t malformed = 0;        // bad parameters, truncated commands, stray bytes
+  std::map<std::string, std::uint64_t> unknownByName;  // name -> count, for --report
+  std::string summary() const;                         // multi-line human-readable
+};
+
+class StreamDecoder {
+ public:
+  virtual ~StreamDecoder() = default;
+  virtual void feed(std::span<const std::uint8_t> bytes) = 0;
+  // End of stream: a command cut off by the end is counted as malformed.
+  virtual void finish() = 0;
+  virtual const IndexedImage& image() const = 0;
+  virtual const DecodeReport& report() const = 0;
+};
+
+}  // namespace lattice
