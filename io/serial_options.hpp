@@ -1,0 +1,50 @@
+#pragma once
+// How to reach a terminal over a serial line: the port and its line settings.
+// `lattice send` and `lattice render --port` take the same flags
+// (app/serial_options.hpp) and open the line with openSerialSink().
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "io/line_timing.hpp"
+
+namespace lattice {
+
+enum class Parity { None, Even, Odd };
+enum class FlowControl { None, XonXoff, RtsCts };
+
+struct SerialOptions {
+  std::string port = "auto";  // a device path, or "auto": the only USB-serial adapter
+  int baud = 9600;
+  int dataBits = 8;           // 7 or 8
+  Parity parity = Parity::None;
+  int stopBits = 1;           // 1 or 2
+  FlowControl flow = FlowControl::XonXoff;  // Tektronix terminals "flag" with DC1/DC3
+  double stallTimeoutSeconds = 30.0;        // no progress for this long -> ErrorKind::Stalled
+  bool pace = false;          // limit our own rate to the baud rate (ptys, network bridges)
+
+  LineFormat lineFormat() const { return {baud, dataBits, parity != Parity::None, stopBits}; }
+  // Throws Error(Usage) naming the bad setting and the accepted values.
+  void validate() const;
+};
+
+// Flag spellings, shared by the CLI, error messages and the resume command.
+Parity parseParity(std::string_view text);           // none|even|odd, Error(Usage) otherwise
+FlowControl parseFlowControl(std::string_view text); // none|xonxoff|rtscts, Error(Usage) otherwise
+std::string_view toString(Parity parity);
+std::string_view toString(FlowControl flow);
+
+// The flags that reproduce these options ("--port /dev/ttyUSB0 --baud 9600 ..."),
+// so an error can print the exact command to resume with.
+std::string serialFlags(const SerialOptions& options);
+
+class SerialSink;
+// Resolves "auto" through port discovery under sysfsRoot, opens and configures
+// the port. Errors: Usage (bad settings), Serial (no such port, busy, refused).
+std::unique_ptr<SerialSink> openSerialSink(const SerialOptions& options,
+                                           const std::filesystem::path& sysfsRoot = "/sys",
+                                           const std::filesystem::path& devRoot = "/dev");
+
+}  // namespace lattice

@@ -1,0 +1,25 @@
+#pragma once
+// What a caller can choose about quantization. The defaults are Heckbert's
+// 1982 median cut with no dithering; everything else is a measured extension
+// (docs/quantize.md has the figures).
+namespace lattice {
+
+// Where a box is cut along its longest dimension.
+enum class SplitRule {
+  Median,    // Heckbert 1982: half the pixels on each side
+  Variance,  // the cut that minimises the two halves' summed squared error along that axis
+};
+
+enum class Dither {
+  None,            // every pixel maps to its nearest palette entry
+  FloydSteinberg,  // error diffusion, serpentine, one error row
+  Bayer,           // ordered 8x8 threshold matrix: no state between pixels
+};
+
+struct QuantizeOptions {
+  SplitRule split = SplitRule::Median;
+  int refineIterations = 0;  // k-means (Lloyd) passes over the histogram after the cut
+  Dither dither = Dither::None;
+};
+
+}  // namespace lattice

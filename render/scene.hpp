@@ -1,0 +1,110 @@
+#pragma once
+// The scene description: what a scene file says, in double precision, before
+// any ray is traced. The renderer builds an intersectable tree for its scalar
+// type T from it (buildPrimitive<T>), once.
+//
+// Objects form a CSG tree of NodeDesc (thesis sec. 3.1, fig. 4). Any node may
+// carry a local transform and a material; building the tree propagates both
+// downwards, so only leaves end up holding a transform (object -> world) and a
+// material, as the thesis keeps them. A leaf is anything implementing
+// LeafDesc: quartic shapes (render/), lattices (lht/), ...
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/bounds.hpp"
+#include "render/camera.hpp"
+#include "render/light.hpp"
+#include "render/material.hpp"
+#include "render/primitive.hpp"
+#include "render/vec.hpp"
+
+namespace lattice {
+
+// How leaves are built; set by the renderer's caller.
+struct BuildOptions {
+  // Replace every lattice by the exact object it was rasterized from (the
+  // reference image a lattice render is compared with).
+  bool fullRayTrace = false;
+  // Lattices cast shadows on each other and on themselves (thesis plate 4);
+  // off, they behave like a particle system (plate 3).
+  bool latticeShadows = true;
+};
+
+// A leaf of the CSG tree: something that can build an intersector for itself.
+// The two build() overloads differ only in the scalar type; the last argument
+// is a tag selecting it (pass T{}).
+class LeafDesc {
+ public:
+  virtual ~LeafDesc() = default;
+  virtual PrimitivePtr<float> build(const Mat4d& objectToWorld, MaterialId material, const BuildOptions& options,
+                                    float tag) const = 0;
+  virtual PrimitivePtr<double> build(const Mat4d& objectToWorld, MaterialId material, const BuildOptions& options,
+                                     double tag) const = 0;
+  // The solid's box in its own (object) coordinates; may be infinite.
+  virtual Bounds<double> objectBounds() const = 0;
+  // A short human-readable name for messages ("sphere", "lattice 'hair'").
+  virtual std::string describe() const = 0;
+};
+
+using LeafDescPtr = std::shared_ptr<const LeafDesc>;
+
+struct NodeDesc {
+  enum class Kind { Leaf, Union, Intersection, Difference };
+  Kind kind = Kind::Union;
+  // Kind::Leaf only.
+  LeafDescPtr leaf;
+  // Set operations: the operands. Difference is children[0] minus the union of
+  // the rest. An empty union is empty space.
+  std::vector<NodeDesc> children;
+  // This node's coordinates -> its parent's coordinates.
+  Mat4d transform{1.0};
+  // Unset: inherited from the nearest ancestor that has one (the scene's
+  // "default" material, id 0, at the root).
+  std::optional<MaterialId> material;
+  // Where the node was defined ("scene.toml:12:3"), for messages.
+  std::string origin;
+
+  static NodeDesc makeLeaf(LeafDescPtr leafDesc, std::string where = {});
+  static NodeDesc makeOperation(Kind kind, std::vector<NodeDesc> operands, std::string where = {});
+};
+
+struct SceneOptions {
+  Vec3d ambient{0.2};         // I_amb per channel
+  double attenuationK = 1.0;  // K in 1 / (D_i + K)
+  Vec3d background{0.0};      // colour of rays that hit nothing (linear, 0..1)
+  int width = 256;            // default image size (the CLI may override)
+  int height = 256;
+  bool shadows = true;        // trace shadow rays (off: every light is visible)
+};
+
+struct SceneDesc {
+  std::filesystem::path source;  // the file it came from (empty when built in code)
+  CameraDesc camera;
+  std::vector<PointLight<double>> lights;
+  // Index = MaterialId. Entry 0 is always the "default" material.
+  std::vector<NamedMaterial> materials{NamedMaterial{"default", Material<double>{}}};
+  SceneOptions options;
+  NodeDesc root;  // the union of the scene's top-level objects
+
+  // MaterialId of a name, if defined.
+  std::optional<MaterialId> findMaterial(const std::string& name) const;
+  // Adds (or replaces) a named material and returns its id.
+  MaterialId addMaterial(const std::string& name, const Material<double>& material);
+};
+
+// Builds the intersector of a subtree for T. The node's transform is applied
+// after parentToWorld (world <- parent <- node), and leaves without a material
+// get `inherited`. Throws lattice::Error(Input) when a leaf cannot be built.
+template <typename T>
+PrimitivePtr<T> buildPrimitive(const NodeDesc& node, const Mat4d& parentToWorld, const BuildOptions& options,
+                               MaterialId inherited = 0);
+
+extern template PrimitivePtr<float> buildPrimitive<float>(const NodeDesc&, const Mat4d&, const BuildOptions&,
+                                                          MaterialId);
+extern template PrimitivePtr<double> buildPrimitive<double>(const NodeDesc&, const Mat4d&, const BuildOptions&,
+                                                            MaterialId);
+
+}  // namespace lattice
