@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Quantizer quality/time/memory table for docs/quantize.md, with pngquant side
+# by side when it is installed (Debian: apt-get install pngquant).
+#   bench/quantize-quality.sh [BUILD_DIR] [extra.png ...]
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="${1:-$root/build}"
+shift || true
+if ! command -v pngquant >/dev/null 2>&1; then
+  echo "pngquant is not installed: its rows are skipped (apt-get install -y pngquant)" >&2
+fi
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" --target quantize_bench -j2 >&2
+"$build/bench/quantize_bench" "$@"

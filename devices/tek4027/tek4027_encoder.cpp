@@ -1,0 +1,289 @@
+#include "devices/tek4027/tek4027_encoder.hpp"
+
+#include <fmt/format.h>
+
+#include <iterator>
+
+namespace lattice {
+
+const char* strategyName(Tek4027Strategy strategy) {
+  switch (strategy) {
+    case Tek4027Strategy::RowOrder: return "row-order";
+    case Tek4027Strategy::ColourOrder: return "colour-order";
+    case Tek4027Strategy::Chained: return "chained";
+    case Tek4027Strategy::ChainedRelative: return "chained-relative";
+    case Tek4027Strategy::Layered: return "layered";
+    case Tek4027Strategy::LayeredChained: return "layered-chained";
+    case Tek4027Strategy::Shortest: return "shortest";
+  }
+  return "?";
+}
+
+namespace {
+
+// Spells commands. Between commands no terminator is written: the next
+// command character ends a command on the terminal, which saves a byte each.
+class CommandWriter {
+ public:
+  CommandWriter(std::string& out, const Tek4027Profile& profile, Tek4027StreamStats& stats)
+      : out_(out), profile_(profile), stats_(stats) {}
+
+  void command(const char* name) {
+    out_ += profile_.commandChar;
+    out_ += name;
+    firstArg_ = true;
+    ++stats_.commands;
+  }
+  void arg(long value) {
+    separate();
+    fmt::format_to(std::back_inserter(out_), "{}", value);
+  }
+  void arg(const char* text) {
+    separate();
+    out_ += text;
+  }
+  void pot(int n) {
+    separate();
+    out_ += 'C';
+    out_ += static_cast<char>('0' + n);
+  }
+  void end() { out_ += profile_.terminator; }
+
+ private:
+  // The name is always followed by a space (it must be delimited from a
+  // first argument that could start with a letter, e.g. "C3").
+  void separate() {
+    out_ += firstArg_ ? ' ' : profile_.separator;
+    firstArg_ = false;
+  }
+
+  std::string& out_;
+  const Tek4027Profile& profile_;
+  Tek4027StreamStats& stats_;
+  bool firstArg_ = true;
+};
+
+class Encoder {
+ public:
+  Encoder(const Tek4027Picture& picture, const Tek4027Profile& profile, Tek4027StreamStats& stats)
+      : picture_(picture), frame_(picture.frame), profile_(profile), stats_(stats), w_(out_, profile, stats) {}
+
+  std::string run(Tek4027Strategy strategy) {
+    preamble();
+    switch (strategy) {
+      case Tek4027Strategy::RowOrder: rowOrder(); break;
+      case Tek4027Strategy::ColourOrder: colourOrder(); break;
+      case Tek4027Strategy::Chained: chained(false, false); break;
+      case Tek4027Strategy::ChainedRelative: chained(true, false); break;
+      case Tek4027Strategy::Layered: layered(); break;
+      case Tek4027Strategy::LayeredChained: chained(true, true); break;
+      case Tek4027Strategy::Shortest: break;  // resolved by the caller
+    }
+    w_.end();
+    return std::move(out_);
+  }
+
+ private:
+  // Terminal coordinates: y counts up from the bottom of the graphics area.
+  long termY(int imageY) const { return static_cast<long>(profile_.height) - 1 - imageY; }
+
+  void preamble() {
+    w_.command("WOR");
+    w_.arg(profile_.workspaceLines);
+    w_.command("GRA");
+    w_.arg(profile_.graphicsFirstRow);
+    w_.arg(profile_.graphicsLastRow);
+    // Pots first, so the erase already shows the new background colour.
+    for (int p = 0; p < 8; ++p) {
+      const auto& hls = picture_.potColours[static_cast<std::size_t>(p)];
+      if (!hls) continue;
+      w_.command("MAP");
+      w_.pot(p);
+      w_.arg(hls->hue);
+      w_.arg(hls->lightness);
+      w_.arg(hls->saturation);
+    }
+    w_.command("ERA");
+    w_.arg("G");
+  }
+
+  void select(int pot) {
+    if (pot == currentPot_) return;
+    w_.command("COL");
+    w_.pot(pot);
+    currentPot_ = pot;
+    ++stats_.colourSelects;
+  }
+
+  void vector(const PotRun& r) {
+    w_.command("VEC");
+    w_.arg(r.x0);
+    w_.arg(termY(r.y));
+    w_.arg(r.x1);
+    w_.arg(termY(r.y));
+    ++stats_.vectorCommands;
+  }
+
+  void rowOrder() {
+    for (int y = 0; y < frame_.height; ++y)
+      for (const PotRun& r : rowRuns(frame_, y)) {
+        select(r.pot);
+        vector(r);
+      }
+  }
+
+  void colourOrder() {
+    std::array<std::vector<PotRun>, 8> byPot;
+    for (int y = 0; y < frame_.height; ++y)
+      for (const PotRun& r : rowRuns(frame_, y)) byPot[static_cast<std::size_t>(r.pot)].push_back(r);
+    for (int p = 0; p < 8; ++p) {
+      if (byPot[static_cast<std::size_t>(p)].empty()) continue;
+      select(p);
+      for (const PotRun& r : byPot[static_cast<std::size_t>(p)]) vector(r);
+    }
+  }
+
+  // A long chain is cut into commands of at most maxPointsPerCommand points;
+  // each piece starts where the last ended, so the picture is unchanged.
+  std::string absoluteChain(const std::vector<FramePoint>& chain, std::uint64_t& commands) {
+    std::string text;
+    Tek4027StreamStats scratch;
+    CommandWriter w(text, profile_, scratch);
+    const auto limit = static_cast<std::size_t>(profile_.maxPointsPerCommand);
+    std::size_t inCommand = limit;
+    for (std::size_t i = 0; i < chain.size(); ++i) {
+      if (inCommand == limit) {
+        w.command("VEC");
+        inCommand = 0;
+        if (i > 0) {
+          w.arg(chain[i - 1].x);
+          w.arg(termY(chain[i - 1].y));
+          ++inCommand;
+        }
+      }
+      w.arg(chain[i].x);
+      w.arg(termY(chain[i].y));
+      ++inCommand;
+    }
+    commands = scratch.commands;
+    return text;
+  }
+
+  // First segment absolute (it positions the beam), the rest as deltas:
+  // !RVE continues from the beam, so a long chain is several !RVE commands.
+  std::string relativeChain(const std::vector<FramePoint>& chain, std::uint64_t& commands) {
+    std::string text;
+    Tek4027StreamStats scratch;
+    CommandWriter w(text, profile_, scratch);
+    w.command("VEC");
+    for (std::size_t i = 0; i < 2; ++i) {
+      w.arg(chain[i].x);
+      w.arg(termY(chain[i].y));
+    }
+    const auto limit = static_cast<std::size_t>(profile_.maxPointsPerCommand);
+    for (std::size_t i = 2; i < chain.size(); ++i) {
+      if ((i - 2) % limit == 0) w.command("RVE");
+      w.arg(chain[i].x - chain[i - 1].x);
+      w.arg(termY(chain[i].y) - termY(chain[i - 1].y));
+    }
+    commands = scratch.commands;
+    return text;
+  }
+
+  // Pots in drawing order, each with the pots it may paint over (drawn later).
+  std::vector<std::pair<int, unsigned>> drawingOrder(bool layered) const {
+    std::vector<std::pair<int, unsigned>> order;
+    if (!layered) {
+      for (int p = 0; p < 8; ++p)
+        if (p != frame_.backgroundPot) order.emplace_back(p, 0u);
+      return order;
+    }
+    unsigned later = 0;
+    const std::vector<int> pots = layerOrder(frame_);
+    for (int p : pots) later |= 1u << p;
+    for (int p : pots) {
+      later &= ~(1u << p);
+      order.emplace_back(p, later);
+    }
+    return order;
+  }
+
+  std::vector<std::vector<PotRun>> spansByRow(int pot, unsigned coverable) const {
+    std::vector<std::vector<PotRun>> rows(static_cast<std::size_t>(frame_.height));
+    for (int y = 0; y < frame_.height; ++y) rows[static_cast<std::size_t>(y)] = coverRuns(frame_, y, pot, coverable);
+    return rows;
+  }
+
+  void layered() {
+    for (const auto& [pot, coverable] : drawingOrder(true))
+      for (const auto& row : spansByRow(pot, coverable))
+        for (const PotRun& r : row) {
+          select(pot);
+          vector(r);
+        }
+  }
+
+  void chained(bool relative, bool layered) {
+    ChainOptions options;
+    options.enterInterior = relative;
+    for (const auto& [p, coverable] : drawingOrder(layered)) {
+      auto chains = chainRuns(spansByRow(p, coverable), options);
+      if (chains.empty()) continue;
+      select(p);
+      for (const auto& chain : chains) {
+        std::uint64_t commands = 0;
+        std::string text = absoluteChain(chain, commands);
+        if (relative && chain.size() > 2) {
+          std::uint64_t altCommands = 0;
+          std::string alt = relativeChain(chain, altCommands);
+          if (alt.size() < text.size()) {
+            text = std::move(alt);
+            commands = altCommands;
+          }
+        }
+        out_ += text;
+        stats_.commands += commands;
+        stats_.vectorCommands += commands;
+      }
+    }
+  }
+
+  const Tek4027Picture& picture_;
+  const PotFrame& frame_;
+  const Tek4027Profile& profile_;
+  Tek4027StreamStats& stats_;
+  std::string out_;
+  CommandWriter w_;
+  int currentPot_ = -1;
+};
+
+}  // namespace
+
+std::string encodeTek4027(const Tek4027Picture& picture, const Tek4027Profile& profile, Tek4027Strategy strategy,
+                          Tek4027StreamStats* stats) {
+  if (strategy == Tek4027Strategy::Shortest) {
+    std::string best;
+    Tek4027StreamStats bestStats;
+    for (auto s : {Tek4027Strategy::RowOrder, Tek4027Strategy::ColourOrder, Tek4027Strategy::Chained,
+                   Tek4027Strategy::ChainedRelative, Tek4027Strategy::Layered, Tek4027Strategy::LayeredChained}) {
+      Tek4027StreamStats candidateStats;
+      std::string candidate = encodeTek4027(picture, profile, s, &candidateStats);
+      if (best.empty() || candidate.size() < best.size()) {
+        best = std::move(candidate);
+        bestStats = candidateStats;
+      }
+    }
+    if (stats != nullptr) *stats = bestStats;
+    return best;
+  }
+  Tek4027StreamStats local;
+  local.strategy = strategy;
+  std::string text = Encoder(picture, profile, local).run(strategy);
+  local.bytes = text.size();
+  local.lineSeconds = transmitSeconds(local.bytes, profile.line);
+  local.terminalSeconds = static_cast<double>(local.bytes) / profile.terminalCharsPerSecond;
+  if (stats != nullptr) *stats = local;
+  return text;
+}
+
+}  // namespace lattice

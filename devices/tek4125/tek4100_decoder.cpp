@@ -1,0 +1,454 @@
+#include "devices/tek4125/tek4100_decoder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "devices/tek4125/tek_canvas.hpp"
+
+namespace lattice {
+
+namespace {
+
+constexpr std::uint8_t kEsc = 0x1B, kFF = 0x0C, kGS = 0x1D, kUS = 0x1F, kCR = 0x0D;
+constexpr std::size_t kMaxPanelPoints = 65536;  // bounds the fill work a stream can ask for
+
+std::uint8_t percentTo8(int percent) {
+  const int p = std::clamp(percent, 0, 100);
+  return static_cast<std::uint8_t>((p * 255 + 50) / 100);
+}
+
+// Tek HLS: hue in degrees with blue at 0, red at 120, green at 240 (assumed
+// from the 4100 colour-cone diagrams); lightness and saturation 0..100.
+Rgb8 hlsToRgb(int hue, int lightness, int saturation) {
+  const double h = std::fmod(std::fmod(hue + 240.0, 360.0) + 360.0, 360.0) / 360.0;  // standard hue
+  const double l = std::clamp(lightness, 0, 100) / 100.0, s = std::clamp(saturation, 0, 100) / 100.0;
+  const double q = l < 0.5 ? l * (1 + s) : l + s - l * s, p = 2 * l - q;
+  auto channel = [&](double t) {
+    t -= std::floor(t);
+    double v = t < 1.0 / 6 ? p + (q - p) * 6 * t : t < 0.5 ? q : t < 2.0 / 3 ? p + (q - p) * (2.0 / 3 - t) * 6 : p;
+    return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255));
+  };
+  return Rgb8{channel(h + 1.0 / 3), channel(h), channel(h - 1.0 / 3)};
+}
+
+}  // namespace
+
+const std::vector<Tek4100Decoder::Spec>& Tek4100Decoder::commandTable() {
+  using P = Param;
+  static const std::vector<Spec> table = {
+      {"TM", Action::TM, 1, {P::Int, P::Int, P::Int}},    // colour mode, overlay, grey
+      {"TG", Action::TG, 2, {P::Int, P::IntArray}},       // surface, (index c1 c2 c3)...
+      {"RU", Action::RU, 3, {P::Int, P::Int, P::Int}},    // surface, ALU mode, bits per pixel
+      {"RS", Action::RS, 2, {P::Xy, P::Xy}},              // pixel viewport corners
+      {"RH", Action::RH, 1, {P::Xy}},                     // beam position in the viewport
+      {"RP", Action::RP, 2, {P::Int, P::Raster}},         // pixel count, packed string
+      {"RR", Action::RR, 3, {P::Xy, P::Xy, P::Int}},      // rectangle corners, index
+      {"LF", Action::LF, 1, {P::Xy}},                     // move
+      {"LG", Action::LG, 1, {P::Xy}},                     // draw (or panel point)
+      {"ML", Action::ML, 1, {P::Int}},                    // line index
+      {"MP", Action::MP, 1, {P::Int}},                    // fill pattern
+      {"LP", Action::LP, 2, {P::Xy, P::Int}},             // begin panel, boundary flag
+      {"LE", Action::LE, 0, {}},                          // end panel
+      // Dialog area, text and housekeeping: parsed so they resynchronise
+      // nothing, but with no visible effect on the graphics here.
+      {"KA", Action::Accept, 1, {P::Int}},  // dialog area enable
+      {"LV", Action::Accept, 1, {P::Int}},  // dialog area visibility
+      {"LL", Action::Accept, 1, {P::Int}},  // dialog area lines
+      {"LB", Action::Accept, 1, {P::Int}},  // dialog area buffer size
+      {"LZ", Action::Accept, 0, {}},        // clear dialog area
+      {"MN", Action::Accept, 1, {P::Int}},  // text path
+      {"MC", Action::Accept, 2, {P::Int, P::Int, P::Int}},  // text size (gnuplot sends two)
+      {"MQ", Action::Accept, 1, {P::Int}},                  // text precision
+      {"MT", Action::Accept, 1, {P::Int}},                  // text index
+      {"MG", Action::Accept, 1, {P::Int}},                  // text write mode
+      {"MV", Action::Accept, 1, {P::Int}},                  // line style
+      {"MM", Action::Accept, 1, {P::Int}},                  // marker type
+      {"MR", Action::Accept, 2, {P::Int, P::Int}},          // text rotation (a real)
+      {"RK", Action::Accept, 1, {P::Int}},                  // renew view
+      {"SK", Action::Accept, 1, {P::Int}},                  // delete segment
+      {"LH", Action::Accept, 1, {P::Xy}},                   // marker (not drawn)
+      {"LT", Action::Accept, 1, {P::String}},               // graphic text (no font: not drawn)
+  };
+  return table;
+}
+
+Palette Tek4100Decoder::defaultColorMap(int entries) {
+  static const Rgb8 first16[16] = {{0, 0, 0},     {255, 255, 255}, {255, 0, 0},   {0, 255, 0},
+                                   {0, 0, 255},   {0, 255, 255},   {255, 0, 255}, {255, 255, 0},
+                                   {255, 128, 0}, {128, 255, 0},   {0, 255, 128}, {0, 128, 255},
+                                   {128, 0, 255}, {255, 0, 128},   {85, 85, 85},  {170, 170, 170}};
+  Palette map(static_cast<std::size_t>(entries));
+  for (int i = 0; i < entries && i < 16; ++i) map[static_cast<std::size_t>(i)] = first16[i];
+  return map;
+}
+
+Tek4100Decoder::Tek4100Decoder(const Tek4125Profile& profile)
+    : profile_(profile), mask_(0), bitsPerPixel_(profile.planes) {
+  profile_.validate();
+  mask_ = profile_.colorMapSize() - 1;
+  screen_ = IndexedImage(profile_.width, profile_.height, 0);
+  screen_.colormap = defaultColorMap(profile_.colorMapSize());
+  vx1_ = profile_.width - 1;
+  vy1_ = profile_.height - 1;
+}
+
+void Tek4100Decoder::feed(std::span<const std::uint8_t> bytes) {
+  for (std::uint8_t c : bytes) feedByte(c);
+  report_.bytes += bytes.size();
+}
+
+void Tek4100Decoder::finish() {
+  if (state_ == State::Params) abandonCommand();
+  else if (state_ == State::Esc || state_ == State::Percent || state_ == State::PercentBang ||
+           state_ == State::Name)
+    malformed();
+  if (graphMode_ && xyReader_.started()) malformed();
+  xyReader_.reset();
+  state_ = State::Ground;
+}
+
+void Tek4100Decoder::malformed() { ++report_.malformed; }
+
+void Tek4100Decoder::feedByte(std::uint8_t c) {
+  if (c == kEsc) {
+    if (state_ == State::Params) abandonCommand();
+    else if (state_ == State::Percent || state_ == State::PercentBang || state_ == State::Name) malformed();
+    state_ = State::Esc;
+    return;
+  }
+  switch (state_) {
+    case State::Ground: return ground(c);
+    case State::Esc: return escape(c);
+    case State::Percent:
+      if (c == '!') {
+        state_ = State::PercentBang;
+        int_.reset();
+      } else if (c >= 0x20) {
+        malformed();
+        state_ = State::SkipToEsc;
+      }
+      return;
+    case State::PercentBang: {
+      if (c < 0x20) return;
+      const tek::ReadStatus s = int_.feed(c);
+      if (s == tek::ReadStatus::More) return;
+      state_ = State::Ground;
+      if (s == tek::ReadStatus::Bad) return malformed();
+      const int mode = int_.value();
+      if (mode == 0 || mode == 1) {
+        tekMode_ = mode == 0;
+        graphMode_ = false;
+        ++report_.commands;
+      } else {
+        ++report_.unknownCommands;
+        ++report_.unknownByName["%!" + std::to_string(mode)];
+      }
+      return;
+    }
+    case State::Name:
+      if (c < 0x20) return;  // control characters inside a command are ignored
+      if (c < 'A' || c > 'Z') {
+        malformed();
+        state_ = State::SkipToEsc;
+        return;
+      }
+      name_[1] = static_cast<char>(c);
+      for (const Spec& spec : commandTable())
+        if (spec.name[0] == name_[0] && spec.name[1] == name_[1]) return startCommand(spec);
+      ++report_.unknownCommands;
+      ++report_.unknownByName[std::string(name_, 2)];
+      state_ = State::SkipToEsc;  // its parameters are unknown: resynchronise at the next ESC
+      return;
+    case State::Params: return parameter(c);
+    case State::SkipToEsc: return;
+  }
+}
+
+void Tek4100Decoder::ground(std::uint8_t c) {
+  if (!tekMode_) return;  // ANSI mode: text for the dialog area, not graphics
+  if (c == kGS) {
+    graphMode_ = true;
+    darkVector_ = true;
+    xyReader_.reset();
+    return;
+  }
+  if (c == kUS || c == kCR) {  // back to alpha mode
+    graphMode_ = false;
+    xyReader_.reset();
+    return;
+  }
+  if (!graphMode_ || c < 0x20) return;  // alpha text is not drawn; other controls ignored
+  const tek::ReadStatus s = xyReader_.feed(c, xy_);
+  if (s != tek::ReadStatus::Done) return;
+  xyReader_.reset();
+  if (darkVector_) darkVector_ = false;
+  else line(penX_, penY_, xy_.x(), xy_.y(), lineIndex_);
+  penX_ = xy_.x();
+  penY_ = xy_.y();
+}
+
+void Tek4100Decoder::escape(std::uint8_t c) {
+  if (c == '%') {
+    state_ = State::Percent;
+    return;
+  }
+  if (!tekMode_) {  // ANSI sequences are not ours: skip to the next ESC
+    if (c >= 0x20) state_ = State::SkipToEsc;
+    return;
+  }
+  if (c == kFF) {  // page clear, back to alpha mode
+    std::fill(screen_.pixels.begin(), screen_.pixels.end(), PaletteIndex{0});
+    graphMode_ = false;
+    ++report_.commands;
+    state_ = State::Ground;
+    return;
+  }
+  if (c < 0x20) return;  // ignored, the ESC still stands
+  if (c >= 'A' && c <= 'Z') {
+    name_[0] = static_cast<char>(c);
+    state_ = State::Name;
+    return;
+  }
+  malformed();
+  state_ = State::SkipToEsc;
+}
+
+void Tek4100Decoder::startCommand(const Spec& spec) {
+  spec_ = &spec;
+  paramIndex_ = 0;
+  ints_.clear();
+  xys_.clear();
+  int_.reset();
+  xyReader_.reset();
+  remaining_ = -1;
+  state_ = State::Params;
+  if (spec.params.empty()) execute();
+}
+
+bool Tek4100Decoder::paramInProgress() const {
+  return int_.started() || xyReader_.started() || remaining_ >= 0;
+}
+
+void Tek4100Decoder::abandonCommand() {
+  if (paramIndex_ >= spec_->required && !paramInProgress()) {
+    execute();
+  } else {
+    malformed();
+    state_ = State::Ground;
+  }
+}
+
+void Tek4100Decoder::nextParameter() {
+  int_.reset();
+  xyReader_.reset();
+  remaining_ = -1;
+  if (++paramIndex_ == spec_->params.size()) execute();
+}
+
+void Tek4100Decoder::parameter(std::uint8_t c) {
+  const Param p = spec_->params[paramIndex_];
+  const bool inBody = remaining_ >= 0;
+  if (p == Param::String && inBody) {  // string characters are taken raw
+    if (--remaining_ == 0) nextParameter();
+    return;
+  }
+  if (c < 0x20) return;  // the terminal ignores control characters between parameter bytes
+  if (p == Param::Raster && inBody) {
+    rasterChar(c);
+    if (--remaining_ == 0) nextParameter();
+    return;
+  }
+  if (p == Param::Xy) {
+    const tek::ReadStatus s = xyReader_.feed(c, xy_);
+    if (s == tek::ReadStatus::Done) {
+      xys_.push_back(xy_.x());
+      xys_.push_back(xy_.y());
+      nextParameter();
+    } else if (s == tek::ReadStatus::Bad) {
+      malformed();
+      state_ = State::SkipToEsc;
+    }
+    return;
+  }
+  const tek::ReadStatus s = int_.feed(c);
+  if (s == tek::ReadStatus::More) return;
+  if (s == tek::ReadStatus::Bad) {
+    malformed();
+    state_ = State::SkipToEsc;
+    return;
+  }
+  const int v = int_.value();
+  int_.reset();
+  if (p == Param::Int) {
+    ints_.push_back(v);
+    return nextParameter();
+  }
+  if (inBody) {  // an array element
+    ints_.push_back(v);
+    if (--remaining_ == 0) nextParameter();
+    return;
+  }
+  // A count: of array entries, string characters or raster characters.
+  if (v < 0) {
+    malformed();
+    state_ = State::SkipToEsc;
+    return;
+  }
+  if (p == Param::Raster) {
+    // The pixel count came before; start the raster write now, so pixels
+    // stream onto the screen as their characters arrive.
+    rasterPixels_ = ints_.empty() ? 0 : std::max(ints_.back(), 0);
+    rasterBits_ = 0;
+    rasterHeld_ = 0;
+  }
+  if (p == Param::IntArray) ints_.push_back(v);
+  if (v == 0) return nextParameter();
+  remaining_ = v;
+}
+
+int Tek4100Decoder::pixelX(int x) const { return x * profile_.width / 4096; }
+// The same scale vertically, so terminal space keeps its aspect ratio; y
+// beyond the screen's top (above 3276 on a 1280x1024 screen) is clipped.
+int Tek4100Decoder::pixelY(int y) const { return y * profile_.width / 4096; }
+
+void Tek4100Decoder::plot(int px, int py, int index) {
+  PaletteIndex* p = tek::pixelAt(screen_, px, py);
+  if (p == nullptr) return;
+  const int v = index & mask_;
+  *p = static_cast<PaletteIndex>(alu_ == 7 ? (*p ^ v) : v);
+}
+
+// Vectors overwrite: the ALU mode belongs to pixel operations.
+void Tek4100Decoder::line(int x0, int y0, int x1, int y1, int index) {
+  tek::drawLine(screen_, pixelX(x0), pixelY(y0), pixelX(x1), pixelY(y1), static_cast<PaletteIndex>(index & mask_));
+}
+
+// Patterns above 0 are drawn solid in the line index (no pattern bitmaps
+// are emulated); the fill uses the same scale as vectors.
+void Tek4100Decoder::fillPanel() {
+  panelOpen_ = false;
+  const std::size_t n = panel_.size() / 2;
+  const int index = fillPattern_ <= 0 ? -fillPattern_ : lineIndex_;
+  const double scale = profile_.width / 4096.0;
+  std::vector<double> points(panel_.size());
+  for (std::size_t i = 0; i < panel_.size(); ++i) points[i] = panel_[i] * scale;
+  tek::fillPolygon(screen_, points, static_cast<PaletteIndex>(index & mask_));
+  if (panelBoundary_ && n >= 2)
+    for (std::size_t i = 0, j = n - 1; i < n; j = i++)
+      line(panel_[2 * j], panel_[2 * j + 1], panel_[2 * i], panel_[2 * i + 1], lineIndex_);
+  panel_.clear();
+}
+
+void Tek4100Decoder::rasterChar(std::uint8_t c) {
+  if (c > 0x5F) return malformed();  // not a 6-bit group character
+  rasterBits_ = (rasterBits_ << 6 | (c - 0x20u)) & 0xFFFu;  // at most 8 + 6 - 1 bits are ever held
+  rasterHeld_ += 6;
+  while (rasterHeld_ >= bitsPerPixel_ && rasterPixels_ > 0) {
+    rasterHeld_ -= bitsPerPixel_;
+    const int value = static_cast<int>(rasterBits_ >> rasterHeld_) & ((1 << bitsPerPixel_) - 1);
+    if (beamX_ > vx1_) {  // the beam wraps to the viewport's next row down
+      beamX_ = vx0_;
+      --beamY_;
+    }
+    if (beamY_ >= vy0_ && beamY_ <= vy1_ && beamX_ >= vx0_) plot(beamX_, beamY_, value);
+    ++beamX_;
+    --rasterPixels_;
+  }
+  if (rasterPixels_ == 0) rasterHeld_ = 0;  // padding bits of the last character
+  rasterBits_ &= (1u << rasterHeld_) - 1u;
+}
+
+void Tek4100Decoder::setColor(int index, int c1, int c2, int c3) {
+  if (index < 0 || index > mask_) return malformed();
+  Rgb8 rgb;
+  if (colorMode_ == 3) rgb = hlsToRgb(c1, c2, c3);
+  else if (colorMode_ == 2) rgb = Rgb8{percentTo8(100 - c1), percentTo8(100 - c2), percentTo8(100 - c3)};
+  else rgb = Rgb8{percentTo8(c1), percentTo8(c2), percentTo8(c3)};
+  screen_.colormap[static_cast<std::size_t>(index)] = rgb;
+}
+
+void Tek4100Decoder::execute() {
+  state_ = State::Ground;
+  ++report_.commands;
+  auto xy = [&](std::size_t i) { return i * 2 + 1 < xys_.size() ? xys_[i * 2] : 0; };
+  auto xyY = [&](std::size_t i) { return i * 2 + 1 < xys_.size() ? xys_[i * 2 + 1] : 0; };
+  auto intAt = [&](std::size_t i, int fallback) { return i < ints_.size() ? ints_[i] : fallback; };
+  switch (spec_->action) {
+    case Action::TM:
+      if (const int mode = intAt(0, colorMode_); mode >= 1 && mode <= 3) colorMode_ = mode;
+      else malformed();
+      break;
+    case Action::TG: {
+      // ints_: surface, count, entries...
+      const std::size_t entries = ints_.size() >= 2 ? ints_.size() - 2 : 0;
+      if (entries % 4 != 0) malformed();
+      for (std::size_t i = 0; i + 4 <= entries; i += 4)
+        setColor(ints_[2 + i], ints_[3 + i], ints_[4 + i], ints_[5 + i]);
+      break;
+    }
+    case Action::RU:
+      alu_ = intAt(1, 11);
+      if (const int bits = intAt(2, bitsPerPixel_); bits >= 1 && bits <= 8) bitsPerPixel_ = bits;
+      else malformed();
+      break;
+    case Action::RS:
+      vx0_ = std::clamp(std::min(xy(0), xy(1)), 0, profile_.width - 1);
+      vx1_ = std::clamp(std::max(xy(0), xy(1)), 0, profile_.width - 1);
+      vy0_ = std::clamp(std::min(xyY(0), xyY(1)), 0, profile_.height - 1);
+      vy1_ = std::clamp(std::max(xyY(0), xyY(1)), 0, profile_.height - 1);
+      beamX_ = vx0_;
+      beamY_ = vy1_;
+      break;
+    case Action::RH:
+      beamX_ = vx0_ + xy(0);
+      beamY_ = vy0_ + xyY(0);
+      break;
+    case Action::RP:
+      if (rasterPixels_ > 0) malformed();  // fewer characters than pixels
+      rasterPixels_ = 0;
+      break;
+    case Action::RR: {
+      const int x0 = std::max(std::min(xy(0), xy(1)), 0), x1 = std::min(std::max(xy(0), xy(1)), profile_.width - 1);
+      const int y0 = std::max(std::min(xyY(0), xyY(1)), 0), y1 = std::min(std::max(xyY(0), xyY(1)), profile_.height - 1);
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) plot(x, y, intAt(0, 0));
+      break;
+    }
+    case Action::LF:
+      penX_ = xy(0);
+      penY_ = xyY(0);
+      break;
+    case Action::LG:
+      if (panelOpen_) {
+        if (panel_.size() / 2 < kMaxPanelPoints) panel_.insert(panel_.end(), {xy(0), xyY(0)});
+        else malformed();
+      } else {
+        line(penX_, penY_, xy(0), xyY(0), lineIndex_);
+      }
+      penX_ = xy(0);
+      penY_ = xyY(0);
+      break;
+    case Action::ML: lineIndex_ = intAt(0, lineIndex_); break;
+    case Action::MP: fillPattern_ = intAt(0, fillPattern_); break;
+    case Action::LP:
+      if (panelOpen_) fillPanel();  // a new panel ends the open one
+      panelOpen_ = true;
+      panelBoundary_ = intAt(0, 0) != 0;
+      panel_.assign({xy(0), xyY(0)});
+      penX_ = xy(0);
+      penY_ = xyY(0);
+      break;
+    case Action::LE:
+      if (panelOpen_) fillPanel();
+      else malformed();
+      break;
+    case Action::Accept: break;
+  }
+}
+
+std::unique_ptr<Tek4100Decoder> makeTek4100Decoder(const Tek4125Profile& profile) {
+  return std::make_unique<Tek4100Decoder>(profile);
+}
+
+}  // namespace lattice

@@ -1,0 +1,42 @@
+#pragma once
+// Everything Lattice assumes about a Tektronix 4125, in one place. The
+// values no public source confirms are marked "assumed" (docs/tek4125.md
+// gives the reasoning); each can be overridden from the command line with
+// "key=value" (applyOverride), so a user with a real terminal can correct us.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "io/line_timing.hpp"
+
+namespace lattice {
+
+struct Tek4125Profile {
+  int width = 1280;          // visible pixels (assumed, as the sibling 4115B)
+  int height = 1024;
+  int planes = 8;            // bit planes: 4 or 8 (assumed 8; "planes=4" for a 16-colour unit)
+  int paletteBits = 24;      // colour map precision: 8 bits a gun, loaded as 0..100 percent
+  int reserved = 0;          // colour map entries left alone (e.g. for dialog-area text)
+  int baud = 38400;          // the fastest standard rate of the 4100 family's host port (assumed)
+  int dataBits = 8;
+  bool parity = false;
+  int stopBits = 1;
+  bool xonXoff = true;       // DC1/DC3 flagging, the usual setting at these rates
+
+  int colorMapSize() const { return 1 << planes; }
+  // Colours a picture may use: the map minus reserved entries.
+  int maxColors() const { return colorMapSize() - reserved; }
+  LineFormat line() const { return LineFormat{baud, dataBits, parity, stopBits}; }
+  // Throws lattice::Error(Usage) naming the bad field and its legal range.
+  void validate() const;
+};
+
+// Apply one "key=value" (keys: width, height, planes, palette-bits, reserved,
+// baud, data-bits, parity (none|even|odd), stop-bits, xon-xoff (on|off)).
+// Unknown keys and bad values throw lattice::Error(Usage) listing the keys.
+void applyOverride(Tek4125Profile& profile, std::string_view keyValue);
+void applyOverrides(Tek4125Profile& profile, const std::vector<std::string>& keyValues);
+// One line per field, for `--help`-style listings and reports.
+std::string describe(const Tek4125Profile& profile);
+
+}  // namespace lattice

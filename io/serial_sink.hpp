@@ -1,0 +1,75 @@
+#pragma once
+// A ByteSink on a serial line: every byte, in order, through flow control,
+// or an error that says exactly where the stream stopped.
+//
+// Counting. "Accepted" bytes were taken by the kernel; "sent" bytes have
+// left the kernel's output queue (accepted minus TIOCOUTQ). When the line
+// stalls or hangs up, the sink reads the queue, then discards it (TCOFLUSH):
+// from then on exactly `sent` bytes have gone out and none will follow late,
+// so resending the stream from offset `sent` repeats nothing and skips
+// nothing. (A USB adapter's own FIFO, a few hundred bytes at most, is
+// invisible to the kernel and counted as sent; see docs/serial.md.)
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <span>
+
+#include "io/byte_sink.hpp"
+#include "io/rate_limiter.hpp"
+#include "io/serial_options.hpp"
+#include "io/serial_port.hpp"
+#include "util/error.hpp"
+
+namespace lattice {
+
+// ErrorKind::Stalled or HangUp, with the counts a caller needs to resume.
+// Offsets include the sink's base offset (the --resume the stream started at).
+class SerialFault : public Error {
+ public:
+  SerialFault(ErrorKind kind, const std::string& message, std::uint64_t acceptedOffset, std::uint64_t resumeOffset)
+      : Error(kind, message), accepted_(acceptedOffset), resume_(resumeOffset) {}
+  std::uint64_t acceptedOffset() const noexcept { return accepted_; }
+  // The offset of the first byte that did not go out: resend from here.
+  std::uint64_t resumeOffset() const noexcept { return resume_; }
+
+ private:
+  std::uint64_t accepted_;
+  std::uint64_t resume_;
+};
+
+class SerialSink final : public ByteSink {
+ public:
+  // Takes an open port and configures it with `options`.
+  SerialSink(SerialPort port, const SerialOptions& options);
+  ~SerialSink() override;
+
+  using ByteSink::write;
+  // Blocks until the kernel has accepted every byte. Throws SerialFault
+  // (Stalled) after options.stallTimeoutSeconds without progress, or
+  // (HangUp) when the peer goes away.
+  void write(std::span<const std::uint8_t> bytes) override;
+  // Waits (with the same stall timeout) until the output queue is empty and
+  // the last byte has left, then closes the port.
+  void close() override;
+  std::uint64_t bytesWritten() const override { return accepted_; }
+
+  // Where this sink's first byte sits in the whole stream (a resumed send
+  // starts at --resume N); errors report offsets in the whole stream.
+  void setStreamOffset(std::uint64_t offset) { base_ = offset; }
+  const std::string& path() const { return port_.path(); }
+
+ private:
+  [[noreturn]] void fail(ErrorKind kind, const std::string& why);
+  void stallCheck(std::chrono::steady_clock::time_point lastProgress, const char* where);
+  double now() const;
+
+  SerialPort port_;
+  SerialOptions options_;
+  std::optional<RateLimiter> pacer_;
+  std::uint64_t accepted_ = 0;
+  std::uint64_t base_ = 0;
+  bool closed_ = false;
+  std::chrono::steady_clock::time_point epoch_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace lattice

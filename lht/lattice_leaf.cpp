@@ -1,0 +1,100 @@
+#include "lht/lattice_leaf.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "util/error.hpp"
+
+namespace lattice::lht {
+
+namespace {
+
+template <typename T>
+class LatticeLeaf final : public Primitive<T> {
+ public:
+  LatticeLeaf(std::shared_ptr<const LhtFile> lht, const Mat4d& objectToWorld, MaterialId material, bool castsShadows)
+      : lht_(std::move(lht)), material_(material), castsShadows_(castsShadows) {
+    const Mat4d latticeToWorld = objectToWorld * lht_->box.latticeToObject();
+    const double det = glm::determinant(Mat3<double>(latticeToWorld));
+    if (!(std::abs(det) > 1e-300) || !std::isfinite(det))
+      throw Error(ErrorKind::Input, "a lattice's transform is singular; check its scale");
+    const Mat4d worldToLattice = glm::inverse(latticeToWorld);
+    worldToLattice_ = Mat4<T>(worldToLattice);
+    // Normals go back with the inverse transpose of lattice -> world.
+    normalToWorld_ = Mat3<T>(glm::transpose(Mat3<double>(worldToLattice)));
+    const auto& c = lht_->box.cells();
+    box_ = {Vec3<T>(T(0)), Vec3<T>(T(c[0]), T(c[1]), T(c[2]))};
+    const Bounds<double> world = transformBounds(Bounds<double>{Vec3d(0.0), Vec3d(c[0], c[1], c[2])}, latticeToWorld);
+    bounds_ = {Vec3<T>(world.lo), Vec3<T>(world.hi)};
+  }
+
+  const Bounds<T>& bounds() const override { return bounds_; }
+
+  bool anyHit(const Ray<T>& ray, T tmin, T tmax) const override {
+    return castsShadows_ && Primitive<T>::anyHit(ray, tmin, tmax);
+  }
+
+  void spans(const Ray<T>& ray, T tmin, T tmax, SpanList<T>& out) const override {
+    const Ray<T> local = ray.transformed(worldToLattice_);
+    T t0, t1;
+    // The whole line through the box, not just (tmin, tmax): the lookup needs
+    // the box's entry and exit even for a ray starting inside it.
+    const T inf = std::numeric_limits<T>::infinity();
+    if (!box_.clip(local, -inf, inf, t0, t1) || !(t1 > t0)) return;
+    if (t1 <= tmin || t0 >= tmax) return;
+    const LatticePoint in = nearestPoint(local.at(t0));
+    const LatticePoint outPoint = nearestPoint(local.at(t1));
+    if (in == outPoint) return;
+    const auto enter = lht_->table.find(in, outPoint);
+    if (!enter) return;
+    const auto leave = lht_->table.find(outPoint, in);
+    Span<T> span;
+    span.enter.t = t0 + (t1 - t0) * T(enter->s);
+    span.enter.normal = toWorld(enter->normal);
+    span.enter.material = material_;
+    // (p_o, p_i) hits whenever (p_i, p_o) does (same segment); guard anyway.
+    span.leave.t = leave ? t1 - (t1 - t0) * T(leave->s) : span.enter.t;
+    span.leave.normal = leave ? toWorld(leave->normal) : -span.enter.normal;
+    span.leave.material = material_;
+    if (span.leave.t < span.enter.t) span.leave.t = span.enter.t;  // a chord thinner than the quantization
+    // One cell along the ray, in t: the reach of the rounding error.
+    const T cellT = T(1) / glm::length(local.direction);
+    if (span.leave.t <= tmin + cellT && span.enter.t < tmin + cellT) return;  // the surface the ray starts on
+    if (span.leave.t <= tmin || span.enter.t >= tmax) return;
+    out.push_back(span);
+  }
+
+ private:
+  LatticePoint nearestPoint(const Vec3<T>& p) const {
+    const auto& c = lht_->box.cells();
+    const auto coord = [&](int a) {
+      const T v = std::round(p[a]);
+      return static_cast<std::uint8_t>(std::clamp(static_cast<int>(v), 0, c[a]));
+    };
+    return {coord(0), coord(1), coord(2)};
+  }
+  Vec3<T> toWorld(const Vec3d& n) const { return glm::normalize(normalToWorld_ * Vec3<T>(n)); }
+
+  std::shared_ptr<const LhtFile> lht_;
+  MaterialId material_;
+  bool castsShadows_;
+  Mat4<T> worldToLattice_{T(1)};
+  Mat3<T> normalToWorld_{T(1)};
+  Bounds<T> box_;
+  Bounds<T> bounds_;
+};
+
+}  // namespace
+
+template <typename T>
+PrimitivePtr<T> makeLatticeLeaf(std::shared_ptr<const LhtFile> table, const Mat4d& objectToWorld, MaterialId material,
+                                bool castsShadows) {
+  if (!table) throw Error(ErrorKind::Internal, "makeLatticeLeaf: no table");
+  return std::make_unique<LatticeLeaf<T>>(std::move(table), objectToWorld, material, castsShadows);
+}
+
+template PrimitivePtr<float> makeLatticeLeaf<float>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId, bool);
+template PrimitivePtr<double> makeLatticeLeaf<double>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId, bool);
+
+}  // namespace lattice::lht

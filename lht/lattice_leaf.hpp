@@ -1,0 +1,35 @@
+#pragma once
+// A lattice as a CSG leaf (thesis sec. 3.2.2): the ray is carried into
+// lattice coordinates by the leaf's own transform, clipped to the lattice
+// box, its entry and exit rounded to the nearest grid points p_i and p_o, and
+// the LHT answers: (p_i, p_o) gives where the ray enters the object, (p_o,
+// p_i) where it leaves. So a lattice yields a span like any other solid and
+// takes part in union, intersection and difference.
+#include <memory>
+
+#include "lht/lht_file.hpp"
+#include "render/primitive.hpp"
+
+namespace lattice::lht {
+
+// table: the rasterized lattice (shared by every instance of it).
+// objectToWorld: places the lattice's object; the lattice box's own map
+// (lattice -> object) is applied first.
+// castsShadows false: anyHit() (shadow rays) never reports this lattice, so
+// lattices shade like a particle system (thesis plate 3).
+// Shadow rays leaving a lattice's own surface: rounding p_i and p_o moves
+// the looked-up surface by up to half a cell, so a span that ends within one
+// cell (measured along the ray) after tmin is taken as the surface the ray
+// starts on and dropped; without that, every lit lattice point would shadow
+// itself ("acne"). Crossings further away - another part of the same object,
+// another lattice - shadow as usual.
+template <typename T>
+PrimitivePtr<T> makeLatticeLeaf(std::shared_ptr<const LhtFile> table, const Mat4d& objectToWorld, MaterialId material,
+                                bool castsShadows = true);
+
+extern template PrimitivePtr<float> makeLatticeLeaf<float>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId,
+                                                           bool);
+extern template PrimitivePtr<double> makeLatticeLeaf<double>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId,
+                                                           bool);
+
+}  // namespace lattice::lht

@@ -1,0 +1,57 @@
+#pragma once
+// The .lht file: a rasterized lattice saved so a scene need not rasterize it
+// again. Layout (all integers little-endian, reals IEEE-754 binary64):
+//
+//   offset size
+//        0    8  magic "LATLHT\r\n" (the CR LF catches text-mode mangling)
+//        8    4  version (kLhtVersion)
+//       12    6  cells along x, y, z (u16 each, 1..255)
+//       18    2  reserved, 0
+//       20    8  lambda (object units)
+//       28    8  f_lat
+//       36   24  lattice origin in object coordinates (x, y, z)
+//       60    8  object hash (FNV-1a 64 of the object's definition)
+//       68    8  N_lp (pairs, as eq. 1.3 counts them)
+//       76    8  N_iz (hitting pairs, same counting)
+//       84    8  entries
+//       92    8  buckets (primary slots)
+//      100    8  slots (primary + overflow)
+//      108  14n  the slots, LhtEntry bytes as in memory
+//      end    8  FNV-1a 64 of every byte before it
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "lht/lattice_box.hpp"
+#include "lht/table.hpp"
+
+namespace lattice::lht {
+
+inline constexpr std::uint32_t kLhtVersion = 1;
+inline constexpr std::size_t kLhtHeaderBytes = 108;
+
+struct LhtFile {
+  LatticeBox box{{1, 1, 1}, 1.0, 1.0, Vec3d(0.0)};
+  std::uint64_t objectHash = 0;
+  std::uint64_t pairs = 0;  // N_lp
+  std::uint64_t hits = 0;   // N_iz
+  LatticeHashTable table;
+};
+
+// FNV-1a, 64 bit: the object hash and the file checksum.
+std::uint64_t fnv1a64(std::span<const std::uint8_t> bytes, std::uint64_t seed = 0xcbf29ce484222325ull);
+std::uint64_t fnv1a64(std::string_view text);
+
+std::vector<std::uint8_t> serializeLht(const LhtFile& lht);
+// `name` is used in messages. With expectedObjectHash, a file rasterized
+// from another object definition is refused.
+LhtFile parseLht(std::span<const std::uint8_t> bytes, const std::string& name,
+                 std::optional<std::uint64_t> expectedObjectHash = std::nullopt);
+
+void writeLhtFile(const std::filesystem::path& path, const LhtFile& lht);  // atomically
+LhtFile readLhtFile(const std::filesystem::path& path, std::optional<std::uint64_t> expectedObjectHash = std::nullopt);
+
+}  // namespace lattice::lht

@@ -1,0 +1,154 @@
+#include "lht/rasterize.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include "util/progress.hpp"
+
+namespace lattice::lht {
+
+namespace {
+
+// Traces one segment in object coordinates. The segment's ray keeps s as its
+// parameter (an affine map preserves t), so the hit's t is s directly.
+bool traceSegment(const Primitive<double>& object, const Mat4d& latticeToObject, const Vec3d& from,
+                  const Vec3d& to, double& s, Vec3d& normal) {
+  const Ray<double> lattice{from, to - from};
+  const Ray<double> ray = lattice.transformed(latticeToObject);
+  Hit<double> hit;
+  if (!object.firstHit(ray, 0.0, 1.0, hit)) return false;
+  s = hit.t;
+  normal = hit.normal;
+  return true;
+}
+
+class Rasterizer {
+ public:
+  Rasterizer(const LatticeBox& box, const Primitive<double>& object, const RasterOptions& options)
+      : object_(object), options_(options), points_(box.boundaryPoints()) {
+    latticeToObject_ = box.latticeToObject();
+    faces_.reserve(points_.size());
+    for (const LatticePoint& p : points_) faces_.push_back(box.facesOf(p));
+    // The object's box in lattice coordinates, grown by the graze tolerance:
+    // a segment that misses it cannot touch the object.
+    const Bounds<double>& b = object.bounds();
+    if (b.isFinite() && !b.empty()) {
+      bounds_ = transformBounds(b, box.objectToLattice());
+      bounds_.lo -= Vec3d(2 * options.grazeTolerance);
+      bounds_.hi += Vec3d(2 * options.grazeTolerance);
+    } else {
+      bounds_ = Bounds<double>::infinite();
+    }
+    perPoint_.resize(points_.size());
+  }
+
+  RasterResult run() {
+    const auto start = std::chrono::steady_clock::now();
+    unsigned threads = options_.threads ? options_.threads : std::max(1u, std::thread::hardware_concurrency());
+    threads = std::min<unsigned>(threads, static_cast<unsigned>(std::max<std::size_t>(1, points_.size())));
+    Progress progress("rasterize", points_.size(), "points");
+    if (!options_.progress) progress.setEnabled(false);
+
+    std::vector<RasterStats> stats(threads);
+    std::vector<std::thread> workers;
+    for (unsigned w = 0; w < threads; ++w)
+      workers.emplace_back([this, &stats, &progress, w] {
+        for (std::size_t i = next_.fetch_add(1); i < points_.size(); i = next_.fetch_add(1)) {
+          tracePoint(i, stats[w]);
+          progress.advance();
+        }
+      });
+    for (std::thread& t : workers) t.join();
+    progress.finish();
+
+    RasterResult result;
+    for (const RasterStats& s : stats) {
+      result.stats.pairs += s.pairs;
+      result.stats.hits += s.hits;
+      result.stats.distinctPairs += s.distinctPairs;
+      result.stats.traced += s.traced;
+    }
+    std::size_t total = 0;
+    for (const auto& list : perPoint_) total += list.size();
+    result.hits.reserve(total);
+    for (auto& list : perPoint_) result.hits.insert(result.hits.end(), list.begin(), list.end());
+    result.stats.buildMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+  }
+
+ private:
+  void tracePoint(std::size_t i, RasterStats& stats) {
+    const LatticePoint& in = points_[i];
+    const Vec3d from = in.toVec();
+    std::vector<RasterHit>& out = perPoint_[i];
+    for (std::size_t j = 0; j < points_.size(); ++j) {
+      const int multiplicity = LatticeBox::pairMultiplicity(faces_[i], faces_[j]);
+      if (multiplicity == 0) continue;
+      stats.pairs += static_cast<std::uint64_t>(multiplicity);
+      if (i == j) continue;  // a point, not a segment
+      ++stats.distinctPairs;
+      // Points sharing a face span a segment inside that face, and the object
+      // lies at least lambda/2 inside the box: a certain miss.
+      if (faces_[i] & faces_[j]) continue;
+      const Vec3d to = points_[j].toVec();
+      double t0, t1;
+      if (!bounds_.clip(Ray<double>{from, to - from}, 0.0, 1.0, t0, t1)) continue;
+      ++stats.traced;
+      RasterHit hit{in, points_[j], 0.0, {}};
+      if (traceClosed(from, to, hit.s, hit.normal)) {
+        stats.hits += static_cast<std::uint64_t>(multiplicity);
+        hit.normal = glm::normalize(hit.normal);
+        out.push_back(hit);
+      }
+    }
+  }
+
+  // The segment against the closed object: if it misses, the four segments
+  // shifted sideways by the graze tolerance decide whether it touches the
+  // surface (an exactly tangent segment gives a double root that rounding may
+  // lose either way; a shifted one cuts a clean chord).
+  bool traceClosed(const Vec3d& from, const Vec3d& to, double& s, Vec3d& normal) const {
+    if (traceSegment(object_, latticeToObject_, from, to, s, normal)) return true;
+    const Vec3d d = to - from;
+    const Vec3d a = std::abs(d.x) <= std::abs(d.y) && std::abs(d.x) <= std::abs(d.z) ? Vec3d(1, 0, 0)
+                    : std::abs(d.y) <= std::abs(d.z)                                 ? Vec3d(0, 1, 0)
+                                                                                    : Vec3d(0, 0, 1);
+    const Vec3d u = glm::normalize(glm::cross(d, a));
+    const Vec3d v = glm::normalize(glm::cross(d, u));
+    const double e = options_.grazeTolerance;
+    bool found = false;
+    for (const Vec3d& offset : {u * e, -u * e, v * e, -v * e}) {
+      double sOffset;
+      Vec3d nOffset;
+      if (traceSegment(object_, latticeToObject_, from + offset, to + offset, sOffset, nOffset) &&
+          (!found || sOffset < s)) {
+        found = true;
+        s = sOffset;
+        normal = nOffset;
+      }
+    }
+    return found;
+  }
+
+  const Primitive<double>& object_;
+  RasterOptions options_;
+  std::vector<LatticePoint> points_;
+  std::vector<std::uint8_t> faces_;
+  Mat4d latticeToObject_{1.0};
+  Bounds<double> bounds_;
+  std::vector<std::vector<RasterHit>> perPoint_;
+  std::atomic<std::size_t> next_{0};
+};
+
+}  // namespace
+
+RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const RasterOptions& options) {
+  Rasterizer rasterizer(box, object, options);
+  return rasterizer.run();
+}
+
+}  // namespace lattice::lht

@@ -1,0 +1,46 @@
+#pragma once
+// Rasterization (thesis sec. 2.1): for every entry point p_i on the lattice
+// box and every exit point p_o, trace the segment p_i + (p_o - p_i) s,
+// s in [0, 1], against the exact object and keep the hit closest to p_i.
+#include <cstdint>
+#include <vector>
+
+#include "lht/lattice_box.hpp"
+#include "render/primitive.hpp"
+
+namespace lattice::lht {
+
+// One (p_i, p_o) pair that hits the object.
+struct RasterHit {
+  LatticePoint in, out;
+  double s = 0.0;    // hit = in + (out - in) s
+  Vec3d normal{};    // unit, lattice coordinates (= object directions: the map is a uniform scale)
+};
+
+struct RasterStats {
+  std::uint64_t pairs = 0;  // N_lp: ordered face pairs, as eq. 1.3 counts them (with duplicates)
+  std::uint64_t hits = 0;   // N_iz: the same pairs that hit the object
+  std::uint64_t distinctPairs = 0;  // distinct (p_i, p_o) with p_i != p_o that eq. 1.3 counts
+  std::uint64_t traced = 0;         // segments actually traced (the rest provably miss)
+  double buildMs = 0.0;
+};
+
+struct RasterResult {
+  std::vector<RasterHit> hits;  // one per distinct hitting (p_i, p_o), in a deterministic order
+  RasterStats stats;
+};
+
+struct RasterOptions {
+  unsigned threads = 0;     // 0: all hardware threads
+  bool progress = true;     // a progress bar on stderr (when it is a terminal)
+  // A segment passing within this distance (in cells) of the surface counts
+  // as a hit: the object is taken as a closed set, so grazing segments hit.
+  // It must stay far below the smallest non-zero clearance of lattice
+  // segments (~1e-5 cells for a 255-cell lattice) to add only true tangents.
+  double grazeTolerance = 1e-7;
+};
+
+// `object` is in object coordinates; box says how they map to lattice ones.
+RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const RasterOptions& options = {});
+
+}  // namespace lattice::lht

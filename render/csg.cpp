@@ -1,0 +1,220 @@
+// CSG nodes: span-list merging (render/span_ops.hpp) with box pruning at
+// every node, and unions over a BVH.
+#include "render/csg.hpp"
+
+#include <algorithm>
+
+#include "render/bvh.hpp"
+#include "render/span_ops.hpp"
+#include "util/error.hpp"
+
+namespace lattice {
+
+namespace {
+
+template <typename T>
+Bounds<T> intersectBoxes(const Bounds<T>& a, const Bounds<T>& b) {
+  return {glm::max(a.lo, b.lo), glm::min(a.hi, b.hi)};
+}
+
+template <typename T>
+class CsgNode : public Primitive<T> {
+ public:
+  explicit CsgNode(std::vector<PrimitivePtr<T>> children) : children_(std::move(children)) {}
+  const Bounds<T>& bounds() const override { return bounds_; }
+  void limitBounds(const Bounds<T>& limit) { bounds_ = intersectBoxes(bounds_, limit); }
+
+ protected:
+  std::vector<PrimitivePtr<T>> children_;
+  Bounds<T> bounds_;
+};
+
+// Inside every child. A ray that leaves the running result empty stops; each
+// later child is only asked about the part of the ray still in play.
+template <typename T>
+class IntersectionNode final : public CsgNode<T> {
+ public:
+  explicit IntersectionNode(std::vector<PrimitivePtr<T>> children) : CsgNode<T>(std::move(children)) {
+    this->bounds_ = Bounds<T>::infinite();
+    for (const auto& c : this->children_) this->bounds_ = intersectBoxes(this->bounds_, c->bounds());
+  }
+
+  void spans(const Ray<T>& ray, T tmin, T tmax, SpanList<T>& out) const override {
+    T t0, t1;
+    if (this->bounds_.empty() || !this->bounds_.clip(ray, tmin, tmax, t0, t1)) return;
+    SpanList<T> acc, child, next;
+    this->children_[0]->spans(ray, tmin, tmax, acc);
+    for (std::size_t n = 1; n < this->children_.size() && !acc.empty(); ++n) {
+      T lo = std::max(tmin, acc[0].enter.t), hi = std::min(tmax, acc.back().leave.t);
+      child.clear();
+      if (this->children_[n]->bounds().clip(ray, lo, hi, t0, t1)) this->children_[n]->spans(ray, lo, hi, child);
+      next.clear();
+      intersectSpans(acc, child, next);
+      acc = next;
+    }
+    keepOverlapping(acc, tmin, tmax);
+    for (const Span<T>& s : acc) out.push_back(s);
+  }
+};
+
+// Inside the first child and outside all the others.
+template <typename T>
+class DifferenceNode final : public CsgNode<T> {
+ public:
+  explicit DifferenceNode(std::vector<PrimitivePtr<T>> children) : CsgNode<T>(std::move(children)) {
+    this->bounds_ = this->children_[0]->bounds();
+  }
+
+  void spans(const Ray<T>& ray, T tmin, T tmax, SpanList<T>& out) const override {
+    T t0, t1;
+    if (this->bounds_.empty() || !this->bounds_.clip(ray, tmin, tmax, t0, t1)) return;
+    SpanList<T> acc, child, next;
+    this->children_[0]->spans(ray, tmin, tmax, acc);
+    for (std::size_t n = 1; n < this->children_.size() && !acc.empty(); ++n) {
+      T lo = std::max(tmin, acc[0].enter.t), hi = std::min(tmax, acc.back().leave.t);
+      if (!this->children_[n]->bounds().clip(ray, lo, hi, t0, t1)) continue;
+      child.clear();
+      this->children_[n]->spans(ray, lo, hi, child);
+      if (child.empty()) continue;
+      next.clear();
+      subtractSpans(acc, child, next);
+      acc = next;
+    }
+    keepOverlapping(acc, tmin, tmax);
+    for (const Span<T>& s : acc) out.push_back(s);
+  }
+};
+
+// Inside any child. Children with finite boxes live in a BVH, the others
+// (half-spaces, cylinders...) in a flat list that every ray visits.
+template <typename T>
+class UnionNode final : public CsgNode<T> {
+ public:
+  explicit UnionNode(std::vector<PrimitivePtr<T>> children) : CsgNode<T>(std::move(children)) {
+    std::vector<Bounds<T>> boxes;
+    for (std::uint32_t n = 0; n < this->children_.size(); ++n) {
+      const Bounds<T>& b = this->children_[n]->bounds();
+      if (b.empty()) continue;  // an empty solid adds nothing
+      this->bounds_.extend(b);
+      if (b.isFinite()) {
+        boxes.push_back(b);
+        finite_.push_back(n);
+      } else {
+        unbounded_.push_back(n);
+      }
+    }
+    bvh_ = Bvh<T>(boxes);
+  }
+
+  void spans(const Ray<T>& ray, T tmin, T tmax, SpanList<T>& out) const override {
+    T t0, t1;
+    if (this->bounds_.empty() || !this->bounds_.clip(ray, tmin, tmax, t0, t1)) return;
+    SpanList<T> all;
+    auto add = [&](std::uint32_t child) {
+      SpanList<T> list;
+      this->children_[child]->spans(ray, tmin, tmax, list);
+      for (const Span<T>& s : list) all.push_back(s);
+    };
+    for (std::uint32_t n : unbounded_) add(n);
+    bvh_.visitAll(ray, tmin, tmax, [&](std::uint32_t item) {
+      add(finite_[item]);
+      return false;
+    });
+    coalesceSpans(all);
+    for (const Span<T>& s : all) out.push_back(s);
+  }
+
+  // Front to back with early termination. While no child contains the ray at
+  // tmin, the union's first crossing is the earliest enter of any child, so
+  // subtrees starting beyond the best enter so far are skipped. A ray that
+  // starts inside a child (rare: shadow rays start on surfaces, cameras
+  // outside) takes the exact path through spans().
+  bool firstHit(const Ray<T>& ray, T tmin, T tmax, Hit<T>& hit) const override {
+    T t0, t1;
+    if (this->bounds_.empty() || !this->bounds_.clip(ray, tmin, tmax, t0, t1)) return false;
+    T limit = tmax;
+    bool found = false, startsInside = false;
+    SpanList<T> list;
+    auto visit = [&](std::uint32_t child, T& lim) {
+      if (startsInside) return;
+      list.clear();
+      this->children_[child]->spans(ray, tmin, lim, list);
+      if (list.empty()) return;
+      const Span<T>& s = list[0];
+      if (s.enter.t <= tmin) {
+        startsInside = true;
+        lim = tmin;  // stops the traversal
+        return;
+      }
+      if (s.enter.t < lim) {
+        lim = s.enter.t;
+        hit = s.enter;
+        found = true;
+      }
+    };
+    for (std::uint32_t n : unbounded_) visit(n, limit);
+    if (!startsInside)
+      bvh_.visitFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) { visit(finite_[item], lim); });
+    if (!startsInside) return found;
+    SpanList<T> all;
+    spans(ray, tmin, tmax, all);
+    return firstCrossing(all, tmin, tmax, hit);
+  }
+
+  bool anyHit(const Ray<T>& ray, T tmin, T tmax) const override {
+    T t0, t1;
+    if (this->bounds_.empty() || !this->bounds_.clip(ray, tmin, tmax, t0, t1)) return false;
+    for (std::uint32_t n : unbounded_)
+      if (this->children_[n]->anyHit(ray, tmin, tmax)) return true;
+    // Nearer subtrees first: a shadow ray is most likely blocked near its start.
+    bool blocked = false;
+    T limit = tmax;
+    bvh_.visitFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) {
+      if (!blocked && this->children_[finite_[item]]->anyHit(ray, tmin, tmax)) {
+        blocked = true;
+        lim = tmin;  // every remaining subtree now starts at or beyond the limit
+      }
+    });
+    return blocked;
+  }
+
+ private:
+  Bvh<T> bvh_;
+  std::vector<std::uint32_t> finite_;     // BVH item -> child index
+  std::vector<std::uint32_t> unbounded_;  // children with infinite boxes
+};
+
+template <typename T>
+std::unique_ptr<CsgNode<T>> makeNode(CsgOp op, std::vector<PrimitivePtr<T>> children) {
+  if (children.empty())
+    throw Error(ErrorKind::Input, "CSG node without children: union, intersection and difference need at least one");
+  for (const auto& c : children)
+    if (!c) throw Error(ErrorKind::Internal, "CSG node given a null child");
+  switch (op) {
+    case CsgOp::Union: return std::make_unique<UnionNode<T>>(std::move(children));
+    case CsgOp::Intersection: return std::make_unique<IntersectionNode<T>>(std::move(children));
+    case CsgOp::Difference: return std::make_unique<DifferenceNode<T>>(std::move(children));
+  }
+  throw Error(ErrorKind::Internal, "unknown CSG operation");
+}
+
+}  // namespace
+
+template <typename T>
+PrimitivePtr<T> makeCsgNode(CsgOp op, std::vector<PrimitivePtr<T>> children) {
+  return makeNode(op, std::move(children));
+}
+
+template <typename T>
+PrimitivePtr<T> makeCsgNode(CsgOp op, std::vector<PrimitivePtr<T>> children, const Bounds<T>& limit) {
+  auto node = makeNode(op, std::move(children));
+  node->limitBounds(limit);
+  return node;
+}
+
+template PrimitivePtr<float> makeCsgNode<float>(CsgOp, std::vector<PrimitivePtr<float>>);
+template PrimitivePtr<double> makeCsgNode<double>(CsgOp, std::vector<PrimitivePtr<double>>);
+template PrimitivePtr<float> makeCsgNode<float>(CsgOp, std::vector<PrimitivePtr<float>>, const Bounds<float>&);
+template PrimitivePtr<double> makeCsgNode<double>(CsgOp, std::vector<PrimitivePtr<double>>, const Bounds<double>&);
+
+}  // namespace lattice

@@ -1,0 +1,19 @@
+#pragma once
+// Exact composite shapes built from quartics with CSG, used by lattice
+// rasterization and scenes.
+#include "render/csg.hpp"
+#include "render/shapes.hpp"
+
+namespace lattice {
+
+// A capsule: the segment from (0,0,0) to (0,0,length) in object space swept
+// by a ball of `radius`, as (cylinder ∩ z >= 0 ∩ z <= length) ∪ two end
+// spheres, placed by objectToWorld. length may be 0 (a sphere).
+// Throws lattice::Error (Input) for radius <= 0, length < 0 or non-finite values.
+template <typename T>
+PrimitivePtr<T> makeCapsule(double radius, double length, const Mat4d& objectToWorld, MaterialId material);
+
+extern template PrimitivePtr<float> makeCapsule<float>(double, double, const Mat4d&, MaterialId);
+extern template PrimitivePtr<double> makeCapsule<double>(double, double, const Mat4d&, MaterialId);
+
+}  // namespace lattice

@@ -1,0 +1,146 @@
+#pragma once
+// Fixed-point arithmetic for a renderer with no floating-point unit (the
+// thesis's Sun 3/60 could run without its 68881). Fixed<F> is a signed 64-bit
+// integer holding value * 2^F: with F = 32 (the default, "Q31.32") the range
+// is about +-2.1e9 and the resolution 2.3e-10.
+//
+// Rules, chosen so that overflow never wraps silently:
+// - +, -, *, / saturate to the largest representable magnitude on overflow
+//   (products and quotients use 128-bit intermediates).
+// - Division by zero gives the saturated value with the sign of the dividend
+//   (0/0 gives 0): like IEEE infinity, it compares larger than any finite
+//   value the renderer uses, so ray code keeps working.
+// - Conversions from double round to nearest and saturate; NaN converts to 0.
+// - std::numeric_limits<Fixed>::infinity() is the saturated maximum, so code
+//   written for float/double that starts searches at "infinity" works.
+#include <cstdint>
+#include <limits>
+
+namespace lattice {
+
+// 128-bit intermediates (a GCC/Clang extension; __extension__ keeps -Wpedantic quiet).
+__extension__ typedef __int128 Int128;
+__extension__ typedef unsigned __int128 UInt128;
+
+template <int F>
+class Fixed {
+  static_assert(F > 0 && F < 62, "fraction bits must leave room for an integer part");
+
+ public:
+  using Raw = std::int64_t;
+  static constexpr int kFractionBits = F;
+  static constexpr Raw kOne = Raw(1) << F;
+  static constexpr Raw kMaxRaw = std::numeric_limits<Raw>::max();
+  static constexpr Raw kMinRaw = -kMaxRaw;  // symmetric, so negation never overflows
+
+  constexpr Fixed() = default;
+  constexpr Fixed(int v) : raw_(saturate(static_cast<Int128>(v) << F)) {}  // NOLINT: implicit like a number
+  constexpr explicit Fixed(double v) : raw_(fromDouble(v)) {}
+  constexpr explicit Fixed(float v) : raw_(fromDouble(static_cast<double>(v))) {}
+
+  static constexpr Fixed fromRaw(Raw raw) {
+    Fixed f;
+    f.raw_ = raw < kMinRaw ? kMinRaw : raw;
+    return f;
+  }
+  constexpr Raw raw() const { return raw_; }
+  constexpr double toDouble() const { return static_cast<double>(raw_) / static_cast<double>(kOne); }
+  constexpr explicit operator double() const { return toDouble(); }
+  constexpr explicit operator float() const { return static_cast<float>(toDouble()); }
+  constexpr explicit operator int() const { return static_cast<int>(raw_ >> F); }  // floor
+  constexpr bool saturated() const { return raw_ == kMaxRaw || raw_ == kMinRaw; }
+
+  friend constexpr Fixed operator+(Fixed a, Fixed b) { return fromRaw(saturate(static_cast<Int128>(a.raw_) + b.raw_)); }
+  friend constexpr Fixed operator-(Fixed a, Fixed b) { return fromRaw(saturate(static_cast<Int128>(a.raw_) - b.raw_)); }
+  constexpr Fixed operator-() const { return fromRaw(-raw_); }
+  constexpr Fixed operator+() const { return *this; }
+  friend constexpr Fixed operator*(Fixed a, Fixed b) {
+    Int128 p = static_cast<Int128>(a.raw_) * b.raw_;
+    // Round to nearest, ties away from zero, so a*b and (-a)*b are mirror images.
+    Int128 half = static_cast<Int128>(1) << (F - 1);
+    p = p >= 0 ? (p + half) >> F : -((-p + half) >> F);
+    return fromRaw(saturate(p));
+  }
+  friend constexpr Fixed operator/(Fixed a, Fixed b) {
+    if (b.raw_ == 0) return fromRaw(a.raw_ > 0 ? kMaxRaw : (a.raw_ < 0 ? kMinRaw : 0));
+    Int128 n = static_cast<Int128>(a.raw_) << F;
+    Int128 d = b.raw_;
+    bool negative = (n < 0) != (d < 0);
+    Int128 un = n < 0 ? -n : n, ud = d < 0 ? -d : d;
+    Int128 q = (un + ud / 2) / ud;  // round to nearest
+    return fromRaw(saturate(negative ? -q : q));
+  }
+  constexpr Fixed& operator+=(Fixed o) { return *this = *this + o; }
+  constexpr Fixed& operator-=(Fixed o) { return *this = *this - o; }
+  constexpr Fixed& operator*=(Fixed o) { return *this = *this * o; }
+  constexpr Fixed& operator/=(Fixed o) { return *this = *this / o; }
+
+  friend constexpr auto operator<=>(Fixed a, Fixed b) = default;
+  friend constexpr bool operator==(Fixed a, Fixed b) = default;
+
+ private:
+  static constexpr Raw saturate(Int128 v) {
+    if (v > kMaxRaw) return kMaxRaw;
+    if (v < kMinRaw) return kMinRaw;
+    return static_cast<Raw>(v);
+  }
+  static constexpr Raw fromDouble(double v) {
+    if (v != v) return 0;
+    double scaled = v * static_cast<double>(kOne);
+    if (scaled >= 9.2233720368547758e18) return kMaxRaw;
+    if (scaled <= -9.2233720368547758e18) return kMinRaw;
+    return static_cast<Raw>(scaled >= 0 ? scaled + 0.5 : scaled - 0.5);
+  }
+
+  Raw raw_ = 0;
+};
+
+using Fixed32 = Fixed<32>;
+
+template <int F>
+constexpr Fixed<F> abs(Fixed<F> x) {
+  return x < Fixed<F>() ? -x : x;
+}
+
+// Square root by integer Newton iteration on the 128-bit scaled value
+// (sqrt(raw * 2^F) is the raw result). Negative input gives 0, like a
+// clamped discriminant.
+template <int F>
+constexpr Fixed<F> sqrt(Fixed<F> x) {
+  if (x.raw() <= 0) return Fixed<F>();
+  UInt128 n = static_cast<UInt128>(x.raw()) << F;
+  // Initial guess: a power of two at or above the root, then Newton descends monotonically.
+  int bits = 0;
+  for (UInt128 t = n; t != 0; t >>= 1) ++bits;
+  UInt128 r = static_cast<UInt128>(1) << ((bits + 1) / 2);
+  while (true) {
+    UInt128 next = (r + n / r) >> 1;
+    if (next >= r) break;
+    r = next;
+  }
+  // r = floor(sqrt(n)); round to nearest.
+  if ((r + 1) * (r + 1) - n <= n - r * r) ++r;
+  return Fixed<F>::fromRaw(static_cast<typename Fixed<F>::Raw>(r));
+}
+
+}  // namespace lattice
+
+namespace std {
+template <int F>
+class numeric_limits<lattice::Fixed<F>> {
+ public:
+  using T = lattice::Fixed<F>;
+  static constexpr bool is_specialized = true;
+  static constexpr bool is_signed = true;
+  static constexpr bool is_integer = false;
+  static constexpr bool is_exact = true;
+  static constexpr bool has_infinity = false;  // infinity() saturates instead
+  static constexpr bool is_iec559 = false;
+  static constexpr int digits = 63;
+  static constexpr T max() { return T::fromRaw(T::kMaxRaw); }
+  static constexpr T lowest() { return T::fromRaw(T::kMinRaw); }
+  static constexpr T min() { return T::fromRaw(1); }
+  static constexpr T epsilon() { return T::fromRaw(1); }
+  static constexpr T infinity() { return max(); }
+};
+}  // namespace std

@@ -1,0 +1,14 @@
+#pragma once
+// The table of built-in object types of scene files (render/node_types.cpp).
+// The loader seeds its registry from it; adding a primitive to the format
+// means adding one entry there.
+#include <map>
+#include <string>
+
+#include "render/scene_loader.hpp"
+
+namespace lattice {
+
+std::map<std::string, NodeParser> builtinNodeTypes();
+
+}  // namespace lattice

@@ -1,0 +1,175 @@
+#include "render/renderer.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <thread>
+
+#include "util/error.hpp"
+#include "util/progress.hpp"
+
+namespace lattice {
+
+namespace {
+
+constexpr int kMaxImageSide = 16384;
+constexpr int kMaxThreads = 256;
+// Rows per thread in one band of row(): enough to amortise starting threads,
+// few enough that a streaming consumer sees rows early.
+constexpr int kBandRowsPerThread = 2;
+
+int resolveThreads(int requested) {
+  if (requested < 0 || requested > kMaxThreads)
+    throw Error(ErrorKind::Usage, fmt::format("--threads {} is out of range; use 1..{} (or 0 for all cores)",
+                                              requested, kMaxThreads));
+  if (requested > 0) return requested;
+  const unsigned hw = std::thread::hardware_concurrency();
+  return hw == 0 ? 1 : static_cast<int>(std::min<unsigned>(hw, kMaxThreads));
+}
+
+int resolveSide(int requested, int sceneDefault, const char* name) {
+  const int v = requested > 0 ? requested : sceneDefault;
+  if (requested < 0 || v < 1 || v > kMaxImageSide)
+    throw Error(ErrorKind::Usage, fmt::format("image {} {} is out of range; use 1..{}", name, requested < 0 ? requested : v,
+                                              kMaxImageSide));
+  return v;
+}
+
+// Runs work(y) for y in [y0, y1) on `threads` threads. Rows are handed out
+// one at a time from a shared counter, so uneven rows balance out; which
+// thread renders a row never changes its pixels.
+template <typename Work>
+void parallelRows(int y0, int y1, int threads, Work&& work) {
+  const int n = std::min(threads, y1 - y0);
+  if (n <= 1) {
+    for (int y = y0; y < y1; ++y) work(y);
+    return;
+  }
+  std::atomic<int> next{y0};
+  std::exception_ptr failure;
+  std::mutex failureMutex;
+  auto worker = [&] {
+    try {
+      for (int y = next.fetch_add(1); y < y1; y = next.fetch_add(1)) work(y);
+    } catch (...) {
+      std::lock_guard lock(failureMutex);
+      if (!failure) failure = std::current_exception();
+      next.store(y1);
+    }
+  };
+  std::vector<std::jthread> pool;
+  pool.reserve(static_cast<std::size_t>(n - 1));
+  for (int i = 1; i < n; ++i) pool.emplace_back(worker);
+  worker();
+  pool.clear();  // joins
+  if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace
+
+template <typename T>
+Renderer<T>::Renderer(const SceneDesc& scene, const RenderSettings& settings)
+    : width_(resolveSide(settings.width, scene.options.width, "width")),
+      height_(resolveSide(settings.height, scene.options.height, "height")),
+      threads_(resolveThreads(settings.threads)),
+      camera_(scene.camera, width_, height_),
+      root_(buildPrimitive<T>(scene.root, Mat4d(1.0), settings.build, 0)),
+      background_(Vec3<T>(glm::clamp(scene.options.background, Vec3d(0.0), Vec3d(1.0)))),
+      shadows_(scene.options.shadows) {
+  lighting_.ambient = Vec3<T>(scene.options.ambient);
+  lighting_.attenuationK = static_cast<T>(scene.options.attenuationK);
+  for (const auto& light : scene.lights) lighting_.lights.push_back(light.template cast<T>());
+  for (const auto& m : scene.materials) lighting_.materials.push_back(m.material.template cast<T>());
+}
+
+template <typename T>
+Renderer<T>::~Renderer() = default;
+
+template <typename T>
+Vec3<T> Renderer<T>::trace(const Ray<T>& ray, std::uint64_t& rays) const {
+  ++rays;
+  Hit<T> hit;
+  if (!root_->firstHit(ray, T(0), std::numeric_limits<T>::infinity(), hit)) return background_;
+  const Vec3<T> point = ray.at(hit.t);
+  const Vec3<T> toObserver = -ray.direction;
+  return shade(lighting_, point, hit.normal, toObserver, hit.material, [&](std::size_t i, const Vec3<T>& facing) {
+    if (!shadows_) return true;
+    ++rays;
+    return !inShadow(*root_, point, facing, lighting_.lights[i].position);
+  });
+}
+
+template <typename T>
+Vec3<T> Renderer<T>::trace(const Ray<T>& ray) const {
+  std::uint64_t rays = 0;
+  Vec3<T> c = trace(ray, rays);
+  rays_.fetch_add(rays, std::memory_order_relaxed);
+  return c;
+}
+
+template <typename T>
+Vec3<T> Renderer<T>::pixel(int x, int y) const {
+  return trace(camera_.primaryRay(x, y));
+}
+
+template <typename T>
+void Renderer<T>::rowLinear(int y, std::span<Vec3<T>> out) const {
+  if (y < 0 || y >= height_ || out.size() != static_cast<std::size_t>(width_))
+    throw Error(ErrorKind::Internal, fmt::format("row {} of {} asked with a buffer of {} for width {}", y, height_,
+                                                 out.size(), width_));
+  std::uint64_t rays = 0;
+  for (int x = 0; x < width_; ++x) out[static_cast<std::size_t>(x)] = trace(camera_.primaryRay(x, y), rays);
+  rays_.fetch_add(rays, std::memory_order_relaxed);
+}
+
+template <typename T>
+void Renderer<T>::renderBand(int y0) {
+  const int rows = std::min(height_ - y0, std::max(1, threads_ * kBandRowsPerThread));
+  band_.assign(static_cast<std::size_t>(rows) * static_cast<std::size_t>(width_), 0);
+  parallelRows(y0, y0 + rows, threads_, [&](int y) {
+    std::vector<Vec3<T>> linear(static_cast<std::size_t>(width_));
+    rowLinear(y, linear);
+    Color18* dst = band_.data() + static_cast<std::size_t>(y - y0) * static_cast<std::size_t>(width_);
+    for (int x = 0; x < width_; ++x) {
+      const Vec3<T>& c = linear[static_cast<std::size_t>(x)];
+      dst[x] = packColor18(quantize6(static_cast<double>(c.r)), quantize6(static_cast<double>(c.g)),
+                           quantize6(static_cast<double>(c.b)));
+    }
+  });
+  bandStart_ = y0;
+  bandRows_ = rows;
+}
+
+template <typename T>
+void Renderer<T>::row(int y, std::span<Color18> out) {
+  if (y < 0 || y >= height_ || out.size() != static_cast<std::size_t>(width_))
+    throw Error(ErrorKind::Internal, fmt::format("row {} of {} asked with a buffer of {} for width {}", y, height_,
+                                                 out.size(), width_));
+  std::lock_guard lock(bandMutex_);
+  if (y < bandStart_ || y >= bandStart_ + bandRows_) renderBand(y);
+  const Color18* src = band_.data() + static_cast<std::size_t>(y - bandStart_) * static_cast<std::size_t>(width_);
+  std::copy(src, src + width_, out.begin());
+}
+
+template <typename T>
+RgbImage renderImage(Renderer<T>& renderer, Progress* progress) {
+  RgbImage image(renderer.width(), renderer.height());
+  parallelRows(0, renderer.height(), renderer.threads(), [&](int y) {
+    std::vector<Vec3<T>> linear(static_cast<std::size_t>(renderer.width()));
+    renderer.rowLinear(y, linear);
+    for (int x = 0; x < renderer.width(); ++x) {
+      std::uint8_t* p = image.pixel(x, y);
+      for (int c = 0; c < 3; ++c)
+        p[c] = static_cast<std::uint8_t>(quantize8(static_cast<double>(linear[static_cast<std::size_t>(x)][c])));
+    }
+    if (progress) progress->advance();
+  });
+  return image;
+}
+
+template class Renderer<float>;
+template class Renderer<double>;
+template RgbImage renderImage<float>(Renderer<float>&, Progress*);
+template RgbImage renderImage<double>(Renderer<double>&, Progress*);
+
+}  // namespace lattice

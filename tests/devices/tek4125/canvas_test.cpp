@@ -1,0 +1,59 @@
+// The emulator's drawing primitives: Tek orientation, clipping, fill rule.
+#include <catch2/catch.hpp>
+
+#include "devices/tek4125/tek_canvas.hpp"
+
+using namespace lattice;
+using namespace lattice::tek;
+
+namespace {
+long count(const IndexedImage& s, int index) {
+  long n = 0;
+  for (PaletteIndex p : s.pixels) n += p == index;
+  return n;
+}
+}  // namespace
+
+TEST_CASE("pixel y = 0 is the bottom row of the framebuffer") {
+  IndexedImage s(8, 4, 2);
+  *pixelAt(s, 2, 0) = 1;
+  CHECK(s.at(2, 3) == 1);
+  CHECK(pixelAt(s, 8, 0) == nullptr);
+  CHECK(pixelAt(s, 0, -1) == nullptr);
+  CHECK(pixelAt(s, 0, 4) == nullptr);
+}
+
+TEST_CASE("lines draw both ends and clip without touching memory off the screen") {
+  IndexedImage s(10, 10, 4);
+  drawLine(s, 0, 0, 9, 9, 1);
+  CHECK(count(s, 1) == 10);
+  drawLine(s, -100, 5, 100, 5, 2);  // crosses the screen
+  CHECK(count(s, 2) == 10);
+  drawLine(s, -50, -50, -10, 200, 3);  // entirely off the screen
+  CHECK(count(s, 3) == 0);
+  drawLine(s, 4, 4, 4, 4, 3);  // a single point
+  CHECK(count(s, 3) == 1);
+}
+
+TEST_CASE("polygons fill pixels whose centres are inside, even-odd, clipped") {
+  IndexedImage s(20, 20, 4);
+  const double square[] = {2, 2, 6, 2, 6, 6, 2, 6};  // covers centres 2.5..5.5: 4 x 4
+  fillPolygon(s, square, 1);
+  CHECK(count(s, 1) == 16);
+  const double big[] = {-5, -5, 30, -5, 30, 30, -5, 30};
+  fillPolygon(s, big, 2);
+  CHECK(count(s, 2) == 400);
+  // A bow tie: its edges cross at the centre, leaving a left and a right
+  // triangle, both filled; above and below the crossing is outside.
+  IndexedImage b(20, 20, 4);
+  const double bowTie[] = {0, 0, 20, 20, 20, 0, 0, 20};
+  fillPolygon(b, bowTie, 1);
+  CHECK(count(b, 1) == Approx(200).margin(20));
+  CHECK(b.at(2, 10) == 1);   // left triangle
+  CHECK(b.at(17, 10) == 1);  // right triangle
+  CHECK(b.at(10, 2) == 0);   // above the crossing (Tek y = 17)
+  CHECK(b.at(10, 17) == 0);  // below it (Tek y = 2)
+  const double line[] = {0, 0, 10, 10};  // fewer than three points: nothing
+  fillPolygon(b, line, 3);
+  CHECK(count(b, 3) == 0);
+}

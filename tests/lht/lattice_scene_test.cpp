@@ -1,0 +1,217 @@
+// Lattices in scene files: the [[lattices]] section, the lattice /
+// lattice_scatter / polyline node types, the cache file, and the image a
+// lattice renders compared with the full ray trace of its object.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "lht/lattice_scene.hpp"
+#include "render/renderer.hpp"
+#include "render/scene_loader.hpp"
+#include "tests/support/golden.hpp"
+#include "util/error.hpp"
+
+using namespace lattice;
+using namespace lattice::lht;
+
+namespace {
+
+// A small fuzzy sphere (thesis sec. 3.4) with a floor, two lights.
+std::string fuzzyScene(int hairs, const std::string& extraLatticeKeys = "") {
+  return R"(
+[options]
+width = 72
+height = 72
+ambient = 0.2
+K = 0
+[camera]
+type = "look_at"
+eye = [0.0, 1.0, -3.6]
+target = [0.0, 0.0, 0.0]
+fov = 40
+[materials.fur]
+diffuse = [0.9, 0.6, 0.3]
+specular = 0.4
+shininess = 30
+[[lights]]
+position = [4.0, 6.0, -5.0]
+intensity = 9.0
+[[lights]]
+position = [-6.0, 3.0, -2.0]
+intensity = 3.0
+[[lattices]]
+name = "hair"
+spacing = 0.03
+oversample = 2
+)" + extraLatticeKeys + R"(
+object = { type = "polyline", radius = 0.015, points = [[0, 0, 0], [0.02, 0, 0.15], [0.08, 0.01, 0.3]] }
+[[objects]]
+type = "sphere"
+radius = 0.9
+[[objects]]
+type = "lattice_scatter"
+lattice = "hair"
+count = )" + std::to_string(hairs) + R"(
+radius = 0.9
+seed = 7
+material = "fur"
+[[objects]]
+type = "half_space"
+normal = [0.0, 1.0, 0.0]
+offset = -1.3
+)";
+}
+
+RgbImage render(const SceneDesc& scene, bool full, bool latticeShadows = true) {
+  RenderSettings settings;
+  settings.threads = 2;
+  settings.build.fullRayTrace = full;
+  settings.build.latticeShadows = latticeShadows;
+  Renderer<double> renderer(scene, settings);
+  return renderImage(renderer);
+}
+
+std::string loadError(const std::string& text) {
+  try {
+    parseScene(text, "bad.toml");
+  } catch (const Error& e) {
+    CHECK(e.kind() == ErrorKind::Input);
+    return e.what();
+  }
+  FAIL("the scene was accepted");
+  return {};
+}
+
+}  // namespace
+
+TEST_CASE("lattice scene: a lattice renders close to the full ray trace of its object") {
+  registerLatticeSceneTypes();
+  const SceneDesc scene = parseScene(fuzzyScene(300), "fuzzy.toml");
+  const RgbImage lattice = render(scene, false);
+  const RgbImage full = render(scene, true);
+  const testing::ImageDifference diff = testing::compareImages(lattice, full);
+  INFO("differing pixels " << diff.differingPixels << ", max delta " << diff.maxChannelDelta << ", MSE "
+                           << diff.meanSquaredError);
+  // Hairs here are about one pixel thick, so nearly every hair pixel is a
+  // silhouette pixel, and rounding a ray to the lattice moves silhouettes by
+  // up to half a cell: pixel by pixel the images differ a lot (measured:
+  // ~23% of pixels, MSE ~650). What must agree is the texture at the scale of
+  // a few pixels, which is what a lattice promises (thesis sec. 2.1): mean
+  // brightness over 8 x 8 blocks.
+  CHECK(diff.differingPixels > 0);  // the two paths really are different code
+  CHECK(diff.differingPixels < 72 * 72 * 35 / 100);
+  double worstBlock = 0.0, sumBlock = 0.0;
+  int blocks = 0;
+  for (int by = 0; by < 72; by += 8)
+    for (int bx = 0; bx < 72; bx += 8) {
+      double a = 0.0, b = 0.0;
+      for (int y = by; y < by + 8; ++y)
+        for (int x = bx; x < bx + 8; ++x)
+          for (int c = 0; c < 3; ++c) {
+            const std::size_t i = (static_cast<std::size_t>(y) * 72 + static_cast<std::size_t>(x)) * 3 + c;
+            a += lattice.rgb[i];
+            b += full.rgb[i];
+          }
+      const double delta = std::abs(a - b) / (8 * 8 * 3);
+      worstBlock = std::max(worstBlock, delta);
+      sumBlock += delta;
+      ++blocks;
+    }
+  INFO("8x8 block mean |difference|: worst " << worstBlock << ", average " << sumBlock / blocks);
+  CHECK(worstBlock < 20.0);   // measured 11.8 of 255
+  CHECK(sumBlock / blocks < 4.0);  // measured 2.05
+}
+
+TEST_CASE("lattice scene: lattice-lattice shadows can be switched off (plate 3 vs plate 4)") {
+  registerLatticeSceneTypes();
+  const SceneDesc scene = parseScene(fuzzyScene(300), "fuzzy.toml");
+  const RgbImage withShadows = render(scene, false, true);
+  const RgbImage without = render(scene, false, false);
+  const auto diff = testing::compareImages(withShadows, without);
+  CHECK(diff.differingPixels > 20);  // hair shadows on the sphere and floor disappear
+  // Without shadows nothing gets darker.
+  long brighter = 0, darker = 0;
+  for (std::size_t i = 0; i < without.rgb.size(); ++i) {
+    if (without.rgb[i] > withShadows.rgb[i]) ++brighter;
+    if (without.rgb[i] < withShadows.rgb[i]) ++darker;
+  }
+  CHECK(brighter > 20 * darker);
+  // The per-lattice switch does the same.
+  const SceneDesc off = parseScene(fuzzyScene(300, "shadows = false"), "fuzzy.toml");
+  CHECK(testing::compareImages(render(off, false), without).differingPixels == 0);
+}
+
+TEST_CASE("lattice scene: scatter places N instances on the sphere") {
+  registerLatticeSceneTypes();
+  const SceneDesc scene = parseScene(fuzzyScene(50), "fuzzy.toml");
+  // root = union of the top-level objects; the scatter is the second one.
+  REQUIRE(scene.root.children.size() == 3);
+  const NodeDesc& scatter = scene.root.children[1];
+  REQUIRE(scatter.children.size() == 50);
+  for (const NodeDesc& hair : scatter.children) {
+    const Vec3d root = transformPoint(scatter.transform * hair.transform, Vec3d(0.0));
+    CHECK(glm::length(root) == Approx(0.9));
+    const Vec3d up = glm::normalize(transformDirection(hair.transform, Vec3d(0, 0, 1)));
+    CHECK(glm::dot(up, glm::normalize(root)) == Approx(1.0));
+  }
+  const auto points = fibonacciSphere(1000);
+  double closest = 10.0;
+  for (std::size_t i = 1; i < points.size(); ++i) closest = std::min(closest, glm::length(points[i] - points[0]));
+  CHECK(closest > 0.05);  // almost uniform: no two points bunch up (mean spacing ~0.11)
+}
+
+TEST_CASE("lattice scene: the cache file is written, reused, and refused when the object changes") {
+  registerLatticeSceneTypes();
+  const auto dir = std::filesystem::temp_directory_path() / ("lattice-lht-scene-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto write = [&](const std::string& text) {
+    std::ofstream(dir / "s.toml") << text;
+  };
+  write(fuzzyScene(5, "cache = \"hair.lht\""));
+  {
+    const SceneDesc scene = loadScene(dir / "s.toml");
+    render(scene, false);  // builds the lattice: rasterizes and writes the cache
+  }
+  REQUIRE(std::filesystem::exists(dir / "hair.lht"));
+  const auto firstWrite = std::filesystem::last_write_time(dir / "hair.lht");
+  {
+    const SceneDesc scene = loadScene(dir / "s.toml");
+    render(scene, false);  // reads the cache
+  }
+  CHECK(std::filesystem::last_write_time(dir / "hair.lht") == firstWrite);
+  // Same cache name, thicker hair: the old table must not be used.
+  std::string changed = fuzzyScene(5, "cache = \"hair.lht\"");
+  changed.replace(changed.find("radius = 0.015"), 14, "radius = 0.014");
+  write(changed);
+  const SceneDesc scene = loadScene(dir / "s.toml");
+  try {
+    render(scene, false);
+    FAIL("a stale cache was used");
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    CHECK(message.find("hair.lht") != std::string::npos);
+    CHECK(message.find("different object") != std::string::npos);
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("lattice scene: mistakes are located errors") {
+  registerLatticeSceneTypes();
+  CHECK(loadError("[[objects]]\ntype = \"lattice\"\nlattice = \"nope\"\n").find("no lattice named 'nope'") !=
+        std::string::npos);
+  CHECK(loadError("[[lattices]]\nname = \"a\"\nspacing = 1\n").find("object") != std::string::npos);
+  CHECK(loadError("[[lattices]]\nname = \"a\"\nspacing = -1\nobject = { type = \"sphere\", radius = 1 }\n")
+            .find("bad.toml:") != std::string::npos);
+  CHECK(loadError("[[lattices]]\nname = \"a\"\nspacing = 1\noversample = 0.5\nobject = { type = \"sphere\", radius = 1 }\n")
+            .find("oversample") != std::string::npos);
+  CHECK(loadError("[[objects]]\ntype = \"polyline\"\nradius = 1\npoints = [[0, 0, 0]]\n").find("two points") !=
+        std::string::npos);
+  const std::string twice =
+      "[[lattices]]\nname = \"a\"\nspacing = 1\nobject = { type = \"sphere\", radius = 1 }\n"
+      "[[lattices]]\nname = \"a\"\nspacing = 1\nobject = { type = \"sphere\", radius = 1 }\n";
+  CHECK(loadError(twice).find("defined twice") != std::string::npos);
+}
