@@ -1,12 +1,33 @@
-// `lattice render SCENE.toml -o OUT.png`: ray traces a scene file into a PNG.
+// `lattice render SCENE.toml`: ray traces a scene and sends the picture down
+// the output chain the user picks:
+//   --device png      truecolour PNG (-o)
+//   --device apollo   the simulated Apollo display, written as PNG (-o)
+//   --device tek4125 | tek4027
+//                     a command stream to a file (--stream), standard output
+//                     (--stream -) or a serial line (--port), and/or the
+//                     emulator's picture of that very stream (-o)
 #include <fmt/format.h>
 
 #include <chrono>
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "app/command_registry.hpp"
+#include "app/pipeline_args.hpp"
+#include "app/serial_options.hpp"
+#include "app/stream_devices.hpp"
+#include "devices/apollo_sim/apollo_output.hpp"
+#include "devices/apollo_sim/apollo_profile.hpp"
+#include "io/atomic_file.hpp"
 #include "io/png.hpp"
+#include "io/serial_sink.hpp"
+#include "io/stdout_sink.hpp"
+#include "io/tee_sink.hpp"
+#include "lht/lattice_scene.hpp"
+#include "pipeline/run_pipeline.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_loader.hpp"
 #include "util/error.hpp"
@@ -14,74 +35,237 @@
 
 namespace {
 
+using lattice::Error;
+using lattice::ErrorKind;
+
 struct RenderCommandOptions {
   std::string scene;
-  std::string output;
+  std::string output;  // PNG: truecolour, Apollo screen, or the emulated stream
+  std::string device = "png";
+  std::string stream;  // file or "-" for standard output
   int width = 0;
   int height = 0;
   int threads = 0;
   std::string arith = "double";
+  bool full = false;
+  bool noLatticeShadows = false;
+  std::string apolloProfile = "dn660";
+  std::vector<std::string> settings;  // device profile key=value overrides
+  lattice::app::PipelineArgs pipeline;
+  lattice::SerialOptions serial;
 };
 
-// All of the command's flags in one place (more output options will join them).
+// All of the command's flags in one place.
 void defineRenderOptions(CLI::App& cmd, RenderCommandOptions& o) {
   cmd.add_option("scene", o.scene, "Scene file (TOML, see docs/scene-format.md)")->required();
-  cmd.add_option("-o,--output", o.output, "PNG file to write (written atomically)")->required();
-  cmd.add_option("--width", o.width, "Image width in pixels (default: the scene's [options] width)")
+  cmd.add_option("-o,--output", o.output,
+                 "PNG to write (atomically): the truecolour picture, the Apollo screen, or the emulator's view of "
+                 "the Tek stream");
+  cmd.add_option("--device", o.device,
+                 "png (truecolour), apollo (simulated DN660/DN580), tek4125 or tek4027 (command streams)")
+      ->check(CLI::IsMember({"png", "apollo", "tek4125", "tek4027"}))
+      ->capture_default_str();
+  cmd.add_option("--stream", o.stream, "Tek devices: write the command stream to this file, or - for stdout");
+  cmd.add_option("--set", o.settings,
+                 "Tek devices: override a profile assumption, key=value (repeatable), e.g. --set planes=4; "
+                 "docs/tek4125.md and docs/tek4027.md list the keys");
+  cmd.add_option("--apollo-profile", o.apolloProfile, "apollo: dn660 (8 planes), dn660-4 (4 planes) or dn580")
+      ->check(CLI::IsMember(lattice::apolloProfileNames()))
+      ->capture_default_str();
+  cmd.add_option("--width", o.width, "Image width in pixels (default: the scene's, fitted to the device)")
       ->check(CLI::Range(1, 16384));
-  cmd.add_option("--height", o.height, "Image height in pixels (default: the scene's [options] height)")
+  cmd.add_option("--height", o.height, "Image height in pixels (default: the scene's, fitted to the device)")
       ->check(CLI::Range(1, 16384));
   cmd.add_option("--threads", o.threads, "Worker threads (default: all cores); the image does not depend on it")
       ->check(CLI::Range(1, 256));
-  cmd.add_option("--arith", o.arith, "Scalar type of the ray tracer: float or double (default double)")
-      ->check(CLI::IsMember({"float", "double"}));
+  cmd.add_option("--arith", o.arith, "Scalar type of the ray tracer: float or double")
+      ->check(CLI::IsMember({"float", "double"}))
+      ->capture_default_str();
+  cmd.add_flag("--full", o.full,
+               "Full ray trace: replace every lattice by its exact CSG object (the thesis's reference column)");
+  cmd.add_flag("--no-lattice-shadows", o.noLatticeShadows,
+               "Lattices cast no shadows, as particles would not (thesis plate 3; plate 4 is the default)");
+  lattice::app::addPipelineOptions(&cmd, o.pipeline);
+  lattice::app::addSerialOptions(&cmd, o.serial, /*portRequired=*/false);
+}
+
+bool isStreamDevice(const std::string& device) { return device == "tek4125" || device == "tek4027"; }
+
+void requireDirectoryFor(const std::string& path, const char* flag) {
+  const std::filesystem::path parent = std::filesystem::absolute(path).parent_path();
+  std::error_code ec;
+  if (!std::filesystem::is_directory(parent, ec))
+    throw Error(ErrorKind::Output, fmt::format("{} {}: the directory {} does not exist; create it or choose another "
+                                               "path",
+                                               flag, path, parent.string()));
+}
+
+// Refuse contradictory or missing outputs before a long render, not after it.
+void checkOutputs(const RenderCommandOptions& o, const CLI::App& cmd) {
+  const bool port = cmd.count("--port") > 0;
+  if (!isStreamDevice(o.device)) {
+    if (o.output.empty())
+      throw Error(ErrorKind::Usage, fmt::format("--device {} writes a PNG: give -o OUT.png", o.device));
+    if (!o.stream.empty() || port)
+      throw Error(ErrorKind::Usage,
+                  fmt::format("--stream and --port take a Tek command stream; use --device tek4125 or tek4027 "
+                              "(--device {} only writes -o)",
+                              o.device));
+    if (!o.settings.empty())
+      throw Error(ErrorKind::Usage, "--set overrides a Tek profile; use it with --device tek4125 or tek4027");
+  } else {
+    if (o.output.empty() && o.stream.empty() && !port)
+      throw Error(ErrorKind::Usage,
+                  fmt::format("--device {} needs somewhere to send the stream: --stream FILE, --stream -, --port "
+                              "PORT, and/or -o OUT.png for the emulated picture",
+                              o.device));
+    if (!o.stream.empty() && port)
+      throw Error(ErrorKind::Usage, "give either --stream or --port, not both (record a stream with --stream, then "
+                                    "`lattice send` it)");
+  }
+  if (!o.output.empty()) requireDirectoryFor(o.output, "-o");
+  if (!o.stream.empty() && o.stream != "-") requireDirectoryFor(o.stream, "--stream");
+}
+
+// The picture size: what the user asked for, else the scene's own, shrunk
+// (keeping its shape) to fit the device's drawable area.
+lattice::RenderSettings renderSettings(const RenderCommandOptions& o, const lattice::SceneDesc& scene,
+                                       int deviceWidth, int deviceHeight) {
+  lattice::RenderSettings s;
+  s.threads = o.threads;
+  s.build.fullRayTrace = o.full;
+  s.build.latticeShadows = !o.noLatticeShadows;
+  s.width = o.width > 0 ? o.width : scene.options.width;
+  s.height = o.height > 0 ? o.height : scene.options.height;
+  if (deviceWidth > 0 && (s.width > deviceWidth || s.height > deviceHeight)) {
+    if (o.width > 0 || o.height > 0)
+      throw Error(ErrorKind::Usage,
+                  fmt::format("{}x{} does not fit the device's {}x{} drawable area; choose a smaller --width/--height "
+                              "or change the profile with --set width=... --set height=...",
+                              s.width, s.height, deviceWidth, deviceHeight));
+    const double scale = std::min(double(deviceWidth) / s.width, double(deviceHeight) / s.height);
+    const int w = std::max(1, int(s.width * scale)), h = std::max(1, int(s.height * scale));
+    fmt::print(stderr, "lattice render: the scene's {}x{} is larger than the device's {}x{}: rendering {}x{}\n",
+               s.width, s.height, deviceWidth, deviceHeight, w, h);
+    s.width = w;
+    s.height = h;
+  }
+  return s;
 }
 
 template <typename T>
-void renderTo(const lattice::SceneDesc& scene, const RenderCommandOptions& o) {
-  const auto start = std::chrono::steady_clock::now();
-  lattice::RenderSettings settings;
-  settings.width = o.width;
-  settings.height = o.height;
-  settings.threads = o.threads;
-  lattice::Renderer<T> renderer(scene, settings);
+void renderTruecolour(lattice::Renderer<T>& renderer, const RenderCommandOptions& o) {
   lattice::RgbImage image;
   {
     lattice::Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
+    progress.setEnabled(progress.enabled() && !o.pipeline.quiet);
     image = lattice::renderImage(renderer, &progress);
     progress.finish();
   }
   lattice::writePng(o.output, image);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  fmt::print(stderr, "lattice render: {} -> {}: {}x{}, {:.2f} s, {} rays ({} arithmetic, {} threads)\n", o.scene,
-             o.output, image.width, image.height, seconds, renderer.raysTraced(), o.arith, renderer.threads());
 }
 
-void runRender(const RenderCommandOptions& o) {
-  // Refuse an unwritable destination before a long render, not after it.
-  const std::filesystem::path parent = std::filesystem::absolute(o.output).parent_path();
-  std::error_code ec;
-  if (!std::filesystem::is_directory(parent, ec))
-    throw lattice::Error(lattice::ErrorKind::Output,
-                         fmt::format("{}: the directory {} does not exist; create it or choose another -o path",
-                                     o.output, parent.string()));
+// Renders into the driver row by row; the bytes go to the chosen transport and,
+// when -o is given, through the emulator on their way.
+template <typename T>
+void renderStream(lattice::Renderer<T>& renderer, const RenderCommandOptions& o,
+                  const lattice::app::StreamDevice& device, const lattice::PipelineOptions& pipeline,
+                  bool toPort) {
+  std::unique_ptr<lattice::ByteSink> transport;
+  std::string destination;
+  if (toPort) {
+    lattice::SerialOptions serial = o.serial;
+    transport = lattice::openSerialSink(serial);
+    destination = serial.port;
+  } else if (o.stream == "-") {
+    transport = std::make_unique<lattice::StdoutSink>();
+    destination = "standard output";
+  } else if (!o.stream.empty()) {
+    transport = std::make_unique<lattice::AtomicFile>(o.stream);
+    destination = o.stream;
+  }
+  std::unique_ptr<lattice::StreamDecoder> emulator;
+  if (!o.output.empty()) emulator = device.makeDecoder();
+  lattice::TeeSink tee(transport.get(), [&emulator](std::span<const std::uint8_t> bytes) {
+    if (emulator) emulator->feed(bytes);
+  });
+  auto driver = device.makeDriver(tee);
+  lattice::runPipeline(renderer, driver->sink(), pipeline);
+  tee.close();  // renames the stream file into place, or drains the serial line
+  const lattice::app::StreamStats stats = driver->stats();
+  fmt::print(stderr, "lattice render: {} stream {} bytes -> {}; {:.1f} s on a {} at {} baud ({})\n", device.name,
+             stats.bytes, destination.empty() ? "the emulator only" : destination, stats.seconds, device.title,
+             device.line.baud, stats.detail);
+  if (emulator) {
+    emulator->finish();
+    lattice::writePng(o.output, emulator->image());
+    const lattice::DecodeReport& report = emulator->report();
+    if (report.unknownCommands + report.malformed > 0)
+      throw Error(ErrorKind::Internal,
+                  fmt::format("the emulator found {} unknown and {} malformed commands in our own stream:\n{}",
+                              report.unknownCommands, report.malformed, report.summary()));
+  }
+}
+
+template <typename T>
+void renderWith(const lattice::SceneDesc& scene, const RenderCommandOptions& o, const CLI::App& cmd) {
+  const auto start = std::chrono::steady_clock::now();
+  const lattice::PipelineOptions pipeline = lattice::app::toPipelineOptions(o.pipeline, cmd);
+  const bool toPort = cmd.count("--port") > 0;
+  std::optional<lattice::app::StreamDevice> device;
+  int deviceWidth = 0, deviceHeight = 0;
+  std::optional<lattice::ApolloProfile> apollo;
+  if (isStreamDevice(o.device)) {
+    device = lattice::app::streamDevice(o.device, o.settings);
+    deviceWidth = device->width;
+    deviceHeight = device->height;
+  } else if (o.device == "apollo") {
+    apollo = lattice::apolloProfileByName(o.apolloProfile);
+    deviceWidth = apollo->width;
+    deviceHeight = apollo->height;
+  }
+  lattice::Renderer<T> renderer(scene, renderSettings(o, scene, deviceWidth, deviceHeight));
+
+  if (device) {
+    RenderCommandOptions adjusted = o;
+    if (toPort && cmd.count("--baud") == 0) adjusted.serial.baud = device->line.baud;  // the profile's rate
+    renderStream(renderer, adjusted, *device, pipeline, toPort);
+  } else if (apollo) {
+    const lattice::PipelineReport report = lattice::renderToApolloPng(renderer, *apollo, pipeline, o.output);
+    fmt::print(stderr, "lattice render: {} palette entries on the simulated {}\n", report.paletteSize, apollo->model);
+  } else {
+    renderTruecolour(renderer, o);
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  fmt::print(stderr, "lattice render: {}: {}x{}, {:.2f} s, {} rays ({} arithmetic, {} threads){}\n", o.scene,
+             renderer.width(), renderer.height(), seconds, renderer.raysTraced(), o.arith, renderer.threads(),
+             o.output.empty() ? "" : fmt::format(", picture {}", o.output));
+}
+
+void runRender(const RenderCommandOptions& o, const CLI::App& cmd) {
+  checkOutputs(o, cmd);
+  lattice::lht::registerLatticeSceneTypes();  // scenes may hold [[lattices]]
   const lattice::SceneDesc scene = lattice::loadScene(o.scene);
   if (o.arith == "float")
-    renderTo<float>(scene, o);
+    renderWith<float>(scene, o, cmd);
   else
-    renderTo<double>(scene, o);
+    renderWith<double>(scene, o, cmd);
 }
 
 void addRender(CLI::App& root) {
-  auto* cmd = root.add_subcommand("render", "Ray trace a scene file into a PNG image");
+  auto* cmd = root.add_subcommand("render", "Ray trace a scene into a PNG, an Apollo screen or a Tek command stream");
   cmd->footer(
-      "Traces one ray per pixel through the scene's camera, intersects the CSG tree, and lights hits with\n"
-      "the thesis's eq. 2.3 (ambient, diffuse, Phong specular, shadow rays). Colours are linear and\n"
-      "clamped to [0, 1]. Example:\n"
-      "  lattice render scenes/torus-floor.toml -o torus.png --width 320 --height 240");
+      "Traces one ray per pixel through the scene's camera, intersects the CSG tree (quartics and lattices), and\n"
+      "lights hits with the thesis's eq. 2.3 (ambient, diffuse, Phong specular, shadow rays). For the Apollo and\n"
+      "Tek devices the 18-bit picture is quantized by median cut to the device's colours first.\n"
+      "Examples:\n"
+      "  lattice render scenes/torus-floor.toml -o torus.png\n"
+      "  lattice render scenes/fuzzy-sphere-1000.toml --device tek4125 --stream fuzzy.tek -o fuzzy-tek.png\n"
+      "  lattice render scenes/sphere-hole.toml --device tek4027 --port auto --baud 4800\n"
+      "  lattice render scenes/thistle.toml --device apollo --apollo-profile dn660-4 -o thistle.png");
   auto options = std::make_shared<RenderCommandOptions>();
   defineRenderOptions(*cmd, *options);
-  cmd->callback([options] { runRender(*options); });
+  cmd->callback([options, cmd] { runRender(*options, *cmd); });
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cctype>
 
 #include "util/error.hpp"
+#include "util/key_value.hpp"
 
 namespace lattice {
 
@@ -39,6 +40,62 @@ void Tek4027Profile::validate() const {
   require(workspaceLines >= 1 && graphicsFirstRow >= 1 && graphicsFirstRow <= graphicsLastRow &&
               graphicsLastRow <= workspaceLines,
           "graphics rows must lie within the workspace (1 <= first <= last <= workspace lines)");
+}
+
+namespace {
+constexpr std::string_view kContext = "tek4027 profile";
+constexpr std::string_view kKeys =
+    "width, height, baud, data-bits, parity, stop-bits, chars-per-second, command-char, separator, terminator, "
+    "background-pot, max-points";
+}  // namespace
+
+void applyOverride(Tek4027Profile& profile, std::string_view keyValue) {
+  Tek4027Profile p = profile;  // a rejected override leaves the profile as it was
+  const KeyValue kv = splitKeyValue(kContext, keyValue, kKeys);
+  const std::string_view key = kv.key, value = kv.value;
+  if (key == "width") p.width = parseIntSetting(kContext, kv);
+  else if (key == "height") p.height = parseIntSetting(kContext, kv);
+  else if (key == "baud") p.line.baud = parseIntSetting(kContext, kv);
+  else if (key == "data-bits") p.line.dataBits = parseIntSetting(kContext, kv);
+  else if (key == "stop-bits") p.line.stopBits = parseIntSetting(kContext, kv);
+  else if (key == "chars-per-second") p.terminalCharsPerSecond = parseNumberSetting(kContext, kv);
+  else if (key == "command-char") p.commandChar = static_cast<char>(parseIntSetting(kContext, kv));
+  else if (key == "background-pot") p.backgroundPot = parseIntSetting(kContext, kv);
+  else if (key == "max-points") p.maxPointsPerCommand = parseIntSetting(kContext, kv);
+  else if (key == "parity") {
+    if (value == "none") p.line.parity = false;
+    else if (value == "even" || value == "odd") p.line.parity = true;  // only its bit time matters here
+    else throw Error(ErrorKind::Usage, fmt::format("{}: parity={} must be none, even or odd", kContext, value));
+  } else if (key == "separator") {
+    if (value == "space") p.separator = ' ';
+    else if (value == "comma") p.separator = ',';
+    else throw Error(ErrorKind::Usage, fmt::format("{}: separator={} must be space or comma", kContext, value));
+  } else if (key == "terminator") {
+    if (value == "cr") p.terminator = '\r';
+    else if (value == "semicolon") p.terminator = ';';
+    else throw Error(ErrorKind::Usage, fmt::format("{}: terminator={} must be cr or semicolon", kContext, value));
+  } else {
+    unknownSetting(kContext, kv, kKeys);
+  }
+  if (p.line.dataBits != 7 && p.line.dataBits != 8)
+    throw Error(ErrorKind::Usage, fmt::format("{}: data-bits={} must be 7 or 8", kContext, p.line.dataBits));
+  if (p.line.stopBits != 1 && p.line.stopBits != 2)
+    throw Error(ErrorKind::Usage, fmt::format("{}: stop-bits={} must be 1 or 2", kContext, p.line.stopBits));
+  p.validate();
+  profile = p;
+}
+
+void applyOverrides(Tek4027Profile& profile, const std::vector<std::string>& keyValues) {
+  for (const auto& kv : keyValues) applyOverride(profile, kv);
+}
+
+std::string describe(const Tek4027Profile& p) {
+  return fmt::format(
+      "width={}\nheight={}\nbaud={}\ndata-bits={}\nparity={}\nstop-bits={}\nchars-per-second={}\n"
+      "command-char={}\nseparator={}\nterminator={}\nbackground-pot={}\nmax-points={}\n",
+      p.width, p.height, p.line.baud, p.line.dataBits, p.line.parity ? "even" : "none", p.line.stopBits,
+      p.terminalCharsPerSecond, static_cast<int>(p.commandChar), p.separator == ' ' ? "space" : "comma",
+      p.terminator == ';' ? "semicolon" : "cr", p.backgroundPot, p.maxPointsPerCommand);
 }
 
 }  // namespace lattice

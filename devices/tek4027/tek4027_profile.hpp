@@ -6,6 +6,8 @@
 // is marked "assumed" and can be overridden by a caller (`lattice` flags,
 // tests). docs/tek4027.md explains each choice.
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "io/line_timing.hpp"
 
@@ -49,5 +51,13 @@ struct Tek4027Profile {
   // Throws lattice::Error(Usage) naming the bad field and its legal range.
   void validate() const;
 };
+
+// Apply one "key=value" from `--set` (keys: width, height, baud, data-bits,
+// parity, stop-bits, chars-per-second, command-char (ASCII code), separator
+// (space|comma), terminator (cr|semicolon), background-pot, max-points).
+// Throws lattice::Error(Usage) and leaves the profile unchanged on a bad one.
+void applyOverride(Tek4027Profile& profile, std::string_view keyValue);
+void applyOverrides(Tek4027Profile& profile, const std::vector<std::string>& keyValues);
+std::string describe(const Tek4027Profile& profile);
 
 }  // namespace lattice

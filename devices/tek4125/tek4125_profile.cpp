@@ -2,9 +2,8 @@
 
 #include <fmt/format.h>
 
-#include <charconv>
-
 #include "util/error.hpp"
+#include "util/key_value.hpp"
 
 namespace lattice {
 
@@ -17,21 +16,6 @@ void requireRange(const char* key, int value, int lo, int hi) {
   if (value < lo || value > hi)
     throw Error(ErrorKind::Usage,
                 fmt::format("tek4125 profile: {}={} is out of range; use a value in {}..{}", key, value, lo, hi));
-}
-
-int parseInt(std::string_view key, std::string_view text) {
-  int v = 0;
-  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec != std::errc() || end != text.data() + text.size())
-    throw Error(ErrorKind::Usage,
-                fmt::format("tek4125 profile: '{}={}' needs a whole number, e.g. {}=8", key, text, key));
-  return v;
-}
-
-bool parseSwitch(std::string_view key, std::string_view text) {
-  if (text == "on" || text == "yes" || text == "true" || text == "1") return true;
-  if (text == "off" || text == "no" || text == "false" || text == "0") return false;
-  throw Error(ErrorKind::Usage, fmt::format("tek4125 profile: '{}={}' needs on or off", key, text));
 }
 
 }  // namespace
@@ -50,28 +34,25 @@ void Tek4125Profile::validate() const {
 }
 
 void applyOverride(Tek4125Profile& profile, std::string_view keyValue) {
+  constexpr std::string_view kContext = "tek4125 profile";
   Tek4125Profile p = profile;  // a rejected override leaves the profile as it was
-  const auto eq = keyValue.find('=');
-  if (eq == std::string_view::npos || eq == 0)
-    throw Error(ErrorKind::Usage,
-                fmt::format("tek4125 profile: '{}' is not key=value (e.g. planes=4); keys: {}", keyValue, kKeys));
-  const std::string_view key = keyValue.substr(0, eq);
-  const std::string_view value = keyValue.substr(eq + 1);
-  if (key == "width") p.width = parseInt(key, value);
-  else if (key == "height") p.height = parseInt(key, value);
-  else if (key == "planes") p.planes = parseInt(key, value);
-  else if (key == "palette-bits") p.paletteBits = parseInt(key, value);
-  else if (key == "reserved") p.reserved = parseInt(key, value);
-  else if (key == "baud") p.baud = parseInt(key, value);
-  else if (key == "data-bits") p.dataBits = parseInt(key, value);
-  else if (key == "stop-bits") p.stopBits = parseInt(key, value);
-  else if (key == "xon-xoff") p.xonXoff = parseSwitch(key, value);
+  const KeyValue kv = splitKeyValue(kContext, keyValue, kKeys);
+  const std::string_view key = kv.key;
+  if (key == "width") p.width = parseIntSetting(kContext, kv);
+  else if (key == "height") p.height = parseIntSetting(kContext, kv);
+  else if (key == "planes") p.planes = parseIntSetting(kContext, kv);
+  else if (key == "palette-bits") p.paletteBits = parseIntSetting(kContext, kv);
+  else if (key == "reserved") p.reserved = parseIntSetting(kContext, kv);
+  else if (key == "baud") p.baud = parseIntSetting(kContext, kv);
+  else if (key == "data-bits") p.dataBits = parseIntSetting(kContext, kv);
+  else if (key == "stop-bits") p.stopBits = parseIntSetting(kContext, kv);
+  else if (key == "xon-xoff") p.xonXoff = parseSwitchSetting(kContext, kv);
   else if (key == "parity") {
-    if (value == "none") p.parity = false;
-    else if (value == "even" || value == "odd") p.parity = true;  // only its bit time matters here
-    else throw Error(ErrorKind::Usage, fmt::format("tek4125 profile: parity={} must be none, even or odd", value));
+    if (kv.value == "none") p.parity = false;
+    else if (kv.value == "even" || kv.value == "odd") p.parity = true;  // only its bit time matters here
+    else throw Error(ErrorKind::Usage, fmt::format("tek4125 profile: parity={} must be none, even or odd", kv.value));
   } else {
-    throw Error(ErrorKind::Usage, fmt::format("tek4125 profile: unknown key '{}'; keys: {}", key, kKeys));
+    unknownSetting(kContext, kv, kKeys);
   }
   p.validate();
   profile = p;

@@ -1,0 +1,61 @@
+#include "app/pipeline_args.hpp"
+
+#include <fmt/format.h>
+
+#include <map>
+
+#include "util/error.hpp"
+
+namespace lattice::app {
+
+void addPipelineOptions(CLI::App* cmd, PipelineArgs& args) {
+  cmd->add_option("-k,--colors", args.colors,
+                  "Palette size K, 1..256 (fewer if the image has fewer colours or the device shows fewer)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 256));
+  cmd->add_option("--dither", args.dither, "none | fs (Floyd-Steinberg, serpentine) | bayer (ordered 8x8)")
+      ->check(CLI::IsMember({"none", "fs", "bayer"}))
+      ->capture_default_str();
+  cmd->add_option("--split", args.split, "median (Heckbert 1982) | variance (minimise squared error)")
+      ->check(CLI::IsMember({"median", "variance"}))
+      ->capture_default_str();
+  cmd->add_option("--refine", args.refine, "k-means refinement iterations after the cut, 0..100")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 100));
+  cmd->add_option("--mode", args.mode,
+                  "passes (render twice: least memory) | frame (keep the 18-bit frame: fastest) | sample "
+                  "(histogram of a subsampled pre-pass)")
+      ->check(CLI::IsMember({"passes", "frame", "sample"}))
+      ->capture_default_str();
+  cmd->add_option("--sample", args.sample, "sample mode: histogram from every Nth row and column (default 4)");
+  cmd->add_flag("-q,--quiet", args.quiet, "no progress bars");
+}
+
+PipelineOptions toPipelineOptions(const PipelineArgs& args, const CLI::App& cmd) {
+  static const std::map<std::string, Dither> dithers{
+      {"none", Dither::None}, {"fs", Dither::FloydSteinberg}, {"bayer", Dither::Bayer}};
+  static const std::map<std::string, SplitRule> splits{{"median", SplitRule::Median},
+                                                       {"variance", SplitRule::Variance}};
+  static const std::map<std::string, PipelineMode> modes{
+      {"passes", PipelineMode::TwoPass}, {"frame", PipelineMode::Frame}, {"sample", PipelineMode::Sample}};
+  PipelineOptions options;
+  options.maxColors = args.colors;
+  options.quantize.dither = dithers.at(args.dither);  // values checked by CLI::IsMember
+  options.quantize.split = splits.at(args.split);
+  options.quantize.refineIterations = args.refine;
+  const bool sampleGiven = cmd.count("--sample") > 0;
+  const bool modeGiven = cmd.count("--mode") > 0;
+  options.mode = modes.at(args.mode);
+  if (sampleGiven && !modeGiven) options.mode = PipelineMode::Sample;
+  if (sampleGiven && options.mode != PipelineMode::Sample)
+    throw Error(ErrorKind::Usage, fmt::format("--sample only applies to --mode sample (got --mode {})", args.mode));
+  if (options.mode == PipelineMode::Sample) {
+    options.sampleStep = sampleGiven ? args.sample : 4;
+    if (options.sampleStep < 1)
+      throw Error(ErrorKind::Usage, fmt::format("--sample {} is out of range: give a step of 1 or more", args.sample));
+  }
+  options.progress = !args.quiet;
+  return options;
+}
+
+}  // namespace lattice::app

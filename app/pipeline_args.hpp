@@ -1,0 +1,27 @@
+#pragma once
+// The quantizer flags shared by `lattice quantize` and `lattice render`
+// (--colors, --dither, --split, --refine, --mode, --sample, --quiet), turned
+// into PipelineOptions in one place so both commands mean the same thing.
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+#include "pipeline/run_pipeline.hpp"
+
+namespace lattice::app {
+
+struct PipelineArgs {
+  int colors = 256;  // upper bound; a device may allow fewer
+  std::string dither = "none";
+  std::string split = "median";
+  int refine = 0;
+  std::string mode = "passes";
+  int sample = 0;
+  bool quiet = false;
+};
+
+void addPipelineOptions(CLI::App* cmd, PipelineArgs& args);
+// Throws lattice::Error(Usage) for combinations CLI11 cannot check alone.
+PipelineOptions toPipelineOptions(const PipelineArgs& args, const CLI::App& cmd);
+
+}  // namespace lattice::app
