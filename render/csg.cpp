@@ -25,6 +25,30 @@ class CsgNode : public Primitive<T> {
   void limitBounds(const Bounds<T>& limit) { bounds_ = intersectBoxes(bounds_, limit); }
 
  protected:
+  // Intersection and difference fold their children into the first child's
+  // spans with `merge`. Once the running result is empty nothing can bring it
+  // back, and each later child is asked only about the part of the ray still
+  // in play. A child the ray misses is passed to `merge` as an empty list
+  // unless `skipMissed` (for difference, subtracting nothing changes nothing).
+  template <typename Merge>
+  void foldChildren(const Ray<T>& ray, T tmin, T tmax, SpanList<T>& out, Merge merge, bool skipMissed) const {
+    T t0, t1;
+    if (bounds_.empty() || !bounds_.clip(ray, tmin, tmax, t0, t1)) return;
+    SpanList<T> acc, child, next;
+    children_[0]->spans(ray, tmin, tmax, acc);
+    for (std::size_t n = 1; n < children_.size() && !acc.empty(); ++n) {
+      T lo = std::max(tmin, acc[0].enter.t), hi = std::min(tmax, acc.back().leave.t);
+      child.clear();
+      if (children_[n]->bounds().clip(ray, lo, hi, t0, t1)) children_[n]->spans(ray, lo, hi, child);
+      if (skipMissed && child.empty()) continue;
+      next.clear();
+      merge(acc, child, next);
+      acc = next;
+    }
+    keepOverlapping(acc, tmin, tmax);
+    for (const Span<T>& s : acc) out.push_back(s);
+  }
+
   std::vector<PrimitivePtr<T>> children_;
   Bounds<T> bounds_;
 };
@@ -40,20 +64,7 @@ class IntersectionNode final : public CsgNode<T> {
   }
 
   void spans(const Ray<T>& ray, T tmin, T tmax, SpanList<T>& out) const override {
-    T t0, t1;
-    if (this->bounds_.empty() || !this->bounds_.clip(ray, tmin, tmax, t0, t1)) return;
-    SpanList<T> acc, child, next;
-    this->children_[0]->spans(ray, tmin, tmax, acc);
-    for (std::size_t n = 1; n < this->children_.size() && !acc.empty(); ++n) {
-      T lo = std::max(tmin, acc[0].enter.t), hi = std::min(tmax, acc.back().leave.t);
-      child.clear();
-      if (this->children_[n]->bounds().clip(ray, lo, hi, t0, t1)) this->children_[n]->spans(ray, lo, hi, child);
-      next.clear();
-      intersectSpans(acc, child, next);
-      acc = next;
-    }
-    keepOverlapping(acc, tmin, tmax);
-    for (const Span<T>& s : acc) out.push_back(s);
+    this->foldChildren(ray, tmin, tmax, out, intersectSpans<T>, /*skipMissed=*/false);
   }
 };
 
@@ -66,22 +77,7 @@ class DifferenceNode final : public CsgNode<T> {
   }
 
   void spans(const Ray<T>& ray, T tmin, T tmax, SpanList<T>& out) const override {
-    T t0, t1;
-    if (this->bounds_.empty() || !this->bounds_.clip(ray, tmin, tmax, t0, t1)) return;
-    SpanList<T> acc, child, next;
-    this->children_[0]->spans(ray, tmin, tmax, acc);
-    for (std::size_t n = 1; n < this->children_.size() && !acc.empty(); ++n) {
-      T lo = std::max(tmin, acc[0].enter.t), hi = std::min(tmax, acc.back().leave.t);
-      if (!this->children_[n]->bounds().clip(ray, lo, hi, t0, t1)) continue;
-      child.clear();
-      this->children_[n]->spans(ray, lo, hi, child);
-      if (child.empty()) continue;
-      next.clear();
-      subtractSpans(acc, child, next);
-      acc = next;
-    }
-    keepOverlapping(acc, tmin, tmax);
-    for (const Span<T>& s : acc) out.push_back(s);
+    this->foldChildren(ray, tmin, tmax, out, subtractSpans<T>, /*skipMissed=*/true);
   }
 };
 

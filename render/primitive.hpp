@@ -39,6 +39,23 @@ struct Span {
 template <typename T>
 using SpanList = SmallVector<Span<T>, 8>;
 
+// The first surface crossing of a span list in (tmin, tmax): an enter, or the
+// leave of a span that contains tmin.
+template <typename T>
+bool firstCrossing(const SpanList<T>& list, T tmin, T tmax, Hit<T>& hit) {
+  for (const Span<T>& s : list) {
+    if (s.enter.t > tmin && s.enter.t < tmax) {
+      hit = s.enter;
+      return true;
+    }
+    if (s.leave.t > tmin && s.leave.t < tmax) {
+      hit = s.leave;
+      return true;
+    }
+  }
+  return false;
+}
+
 template <typename T>
 class Primitive {
  public:
@@ -56,17 +73,7 @@ class Primitive {
   virtual bool firstHit(const Ray<T>& ray, T tmin, T tmax, Hit<T>& hit) const {
     SpanList<T> list;
     spans(ray, tmin, tmax, list);
-    for (const Span<T>& s : list) {
-      if (s.enter.t > tmin && s.enter.t < tmax) {
-        hit = s.enter;
-        return true;
-      }
-      if (s.leave.t > tmin && s.leave.t < tmax) {
-        hit = s.leave;
-        return true;
-      }
-    }
-    return false;
+    return firstCrossing(list, tmin, tmax, hit);
   }
 
   // Shadow rays: is there any crossing in (tmin, tmax)? Subclasses make this

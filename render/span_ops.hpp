@@ -80,20 +80,4 @@ void keepOverlapping(SpanList<T>& list, T tmin, T tmax) {
   while (list.size() > kept) list.pop_back();
 }
 
-// The first surface crossing of a span list in (tmin, tmax), as Primitive::firstHit defines it.
-template <typename T>
-bool firstCrossing(const SpanList<T>& list, T tmin, T tmax, Hit<T>& hit) {
-  for (const Span<T>& s : list) {
-    if (s.enter.t > tmin && s.enter.t < tmax) {
-      hit = s.enter;
-      return true;
-    }
-    if (s.leave.t > tmin && s.leave.t < tmax) {
-      hit = s.leave;
-      return true;
-    }
-  }
-  return false;
-}
-
 }  // namespace lattice
