@@ -1,0 +1,100 @@
+#!/usr/bin/env bash
+# Peak resident memory of the lowest-memory mode (docs/trade.md, "Memory"):
+# the fuzzy sphere with 1000 hairs at 512x512, single thread, through the
+# Tek 4125 driver into a stream file, quantizer mode "passes" (no frame
+# buffer), no emulator. The target is the Sun 3/60's 8 MiB.
+#   bench/memory.sh [--build DIR] [--runs N] [--scene FILE]
+# Prints, for each case, the largest "Maximum resident set size" that
+# /usr/bin/time -v reports over N runs, and then where that memory is: the
+# resident pages of each mapping, sampled from /proc/PID/smaps while the
+# render runs (code = the executable and shared libraries; data = heap,
+# anonymous mappings and stacks).
+# Cases:
+#   floor        `lattice --help`: the process with its libraries and nothing else
+#   rasterize    the hair's lattice table built in the process (no cache)
+#   cached       the table read from a .lht file made beforehand (the thesis's
+#                precomputed table; the rasterizer's temporaries never exist)
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+build="$root/build"
+runs=3
+scene="$root/scenes/fuzzy-sphere-1000.toml"
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --build) build=$2; shift 2 ;;
+    --runs) runs=$2; shift 2 ;;
+    --scene) scene=$2; shift 2 ;;
+    -h|--help) sed -n 2,17p "$0"; exit 0 ;;
+    *) echo "memory.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
+  esac
+done
+lattice="$build/app/lattice"
+[[ -x $lattice ]] || { echo "memory.sh: $lattice is missing; build it: cmake --build $build --target lattice" >&2; exit 2; }
+[[ -x /usr/bin/time ]] || { echo "memory.sh: /usr/bin/time is missing (Debian package 'time')" >&2; exit 2; }
+[[ -f $scene ]] || { echo "memory.sh: $scene does not exist" >&2; exit 2; }
+[[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "memory.sh: --runs takes a positive integer" >&2; exit 2; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# The same scene with its lattice table cached in $work.
+sed -E 's/^oversample *= *([0-9.]+)/oversample = \1\ncache = "hair.lht"/' "$scene" >"$work/cached.toml"
+grep -q '^cache = "hair.lht"' "$work/cached.toml" || { echo "memory.sh: $scene has no 'oversample =' line" >&2; exit 3; }
+
+lowest=(--device tek4125 --width 512 --height 512 --threads 1 --mode passes --dither none --quiet)
+
+peak() {  # command... -> the largest max RSS (KiB) of $runs runs
+  local best=0 kib
+  for ((i = 0; i < runs; ++i)); do
+    /usr/bin/time -v "$@" >/dev/null 2>"$work/time" || { echo "memory.sh: $* failed:" >&2; cat "$work/time" >&2; exit 4; }
+    kib=$(awk -F': ' '/Maximum resident set size/ { print $2 }' "$work/time")
+    ((kib > best)) && best=$kib
+  done
+  echo "$best"
+}
+
+# Where the peak is: resident KiB per mapping at the sampled maximum.
+breakdown() {
+  python3 - "$@" <<'EOF'
+import re, subprocess, sys, time
+proc = subprocess.Popen(sys.argv[1:], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+best_total, best = 0, ""
+while proc.poll() is None:
+    try:
+        with open(f"/proc/{proc.pid}/smaps") as f:
+            smaps = f.read()
+    except OSError:
+        break
+    total = sum(int(k) for k in re.findall(r"^Rss:\s+(\d+)", smaps, re.M))
+    if total > best_total:
+        best_total, best = total, smaps
+    time.sleep(0.01)
+if proc.wait() != 0:
+    sys.exit("memory.sh: the sampled run failed")
+per, name = {}, None
+for line in best.splitlines():
+    if re.match(r"^[0-9a-f]+-[0-9a-f]+ ", line):
+        fields = line.split()
+        name = fields[5] if len(fields) > 5 else "[anonymous]"
+    elif line.startswith("Rss:"):
+        per[name] = per.get(name, 0) + int(line.split()[1])
+code = sum(v for k, v in per.items() if k.startswith("/"))
+print(f"    sampled peak {best_total} KiB = code {code} KiB + data {best_total - code} KiB")
+for k, v in sorted(per.items(), key=lambda kv: -kv[1])[:10]:
+    print(f"    {v:>6} KiB  {k}")
+EOF
+}
+
+report() {  # label kib
+  awk -v l="$1" -v k="$2" 'BEGIN { printf "%-10s %6d KiB = %5.2f MiB  (%+d KiB against 8 MiB)\n", l, k, k / 1024, k - 8192 }'
+}
+
+echo "memory.sh: $(basename "$scene") at 512x512 -> Tek 4125 stream file, mode passes, 1 thread; max of $runs runs"
+report floor "$(peak "$lattice" --help)"
+report rasterize "$(peak "$lattice" render "$scene" "${lowest[@]}" --stream "$work/a.tek")"
+breakdown "$lattice" render "$scene" "${lowest[@]}" --stream "$work/a.tek"
+"$lattice" render "$work/cached.toml" "${lowest[@]}" --stream "$work/b.tek" 2>/dev/null  # writes the cache
+report cached "$(peak "$lattice" render "$work/cached.toml" "${lowest[@]}" --stream "$work/b.tek")"
+breakdown "$lattice" render "$work/cached.toml" "${lowest[@]}" --stream "$work/b.tek"
+cmp -s "$work/a.tek" "$work/b.tek" || { echo "memory.sh: the cached table gave a different stream" >&2; exit 5; }
+echo "table: $("$lattice" lht-info "$work/hair.lht" | awk '/^table bytes:/ { print $3 }') bytes in the hash table"

@@ -1,0 +1,164 @@
+#!/usr/bin/env bash
+# The speed-for-accuracy trade (docs/trade.md), one command:
+#   bench/trade.sh [--build DIR] [--runs N (3)] [--size WxH (512x512)]
+#                  [--scenes "fuzzy-sphere-1000 thistle"] [--out DIR (BUILD/trade)] [--no-docs]
+# For each scene it renders every knob setting with `lattice render`, times it
+# (median CPU seconds of N runs, as a ratio to the double-precision full ray
+# trace of the same run), takes the peak resident memory (/usr/bin/time), the
+# lattice table's bytes (`lattice lht-info` on the cache) and the error
+# against the double full ray trace (bench/trade_bench.cpp: PSNR, max error,
+# SSIM). Results: OUT/<scene>.tsv; then bench/plot_trade.py rewrites the
+# tables and plots in docs/trade.md and docs/images/trade-*.svg (--no-docs: not).
+#
+# Knobs: arithmetic (float, double, and fixed once `lattice render --arith
+# fixed` works), lattice oversampling f_lat 1..4 or the full ray trace,
+# palette size and dithering, and the quantizer's memory mode (these two
+# through the Tek 4125 driver and its emulator with the screen set to the
+# picture size, ray tracing in full so the error is the quantizer's). The LHT
+# entry precision is fixed by the thesis's 14-byte entry (8-bit s and
+# normals), so it is not a knob here.
+#
+# Timing is CPU time (user + system) with --threads 1: the machine may be
+# shared, and CPU time is what other processes disturb least. The lattice is
+# rasterized once per setting into a cache (its CPU time is the "raster s"
+# column, the thesis's precomputation); the timed runs read it.
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+build="$root/build"
+runs=3
+size="512x512"
+scenes="fuzzy-sphere-1000 thistle"
+docs=1
+out=""
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --build) build=$2; shift 2 ;;
+    --runs) runs=$2; shift 2 ;;
+    --size) size=$2; shift 2 ;;
+    --scenes) scenes=$2; shift 2 ;;
+    --out) out=$2; shift 2 ;;
+    --no-docs) docs=0; shift ;;
+    -h|--help) sed -n 2,24p "$0"; exit 0 ;;
+    *) echo "trade.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
+  esac
+done
+lattice="$build/app/lattice"
+metric="$build/bench/trade_bench"
+for exe in "$lattice" "$metric"; do
+  [[ -x $exe ]] || { echo "trade.sh: $exe is missing; build it: cmake --build $build --target lattice trade_bench" >&2; exit 2; }
+done
+[[ -x /usr/bin/time ]] || { echo "trade.sh: /usr/bin/time is missing (Debian package 'time')" >&2; exit 2; }
+[[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "trade.sh: --runs takes a positive integer" >&2; exit 2; }
+[[ $size =~ ^([1-9][0-9]*)x([1-9][0-9]*)$ ]] || { echo "trade.sh: --size takes WxH, e.g. 256x256" >&2; exit 2; }
+sizeArgs=(--width "${BASH_REMATCH[1]}" --height "${BASH_REMATCH[2]}")
+# The Tek 4125's screen shrunk to the picture, so its emulated picture lines up with the reference.
+tekScreen=(--set "width=${BASH_REMATCH[1]}" --set "height=${BASH_REMATCH[2]}")
+out=${out:-$build/trade}
+mkdir -p "$out"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+arithmetics="double float"
+# Fixed point counts once `lattice render --arith fixed` renders (a 1x1 picture decides).
+if "$lattice" render "$root/scenes/$(set -- $scenes; echo "$1").toml" --arith fixed --full --width 1 --height 1 \
+  --quiet -o "$work/probe.png" >/dev/null 2>&1; then
+  arithmetics="double float fixed"
+fi
+
+# A copy of the scene with oversample = f and the table cached next to it.
+variant() {  # scene f -> path
+  local scene=$1 f=$2 dst="$work/$1-f$2.toml"
+  sed -E "s/^oversample *= *[0-9.]+/oversample = $f\ncache = \"$1-f$2.lht\"/" "$root/scenes/$scene.toml" >"$dst"
+  grep -q "^oversample = $f" "$dst" || { echo "trade.sh: scenes/$scene.toml has no 'oversample =' line" >&2; exit 3; }
+  echo "$dst"
+}
+
+# One timed run: prints "cpu_seconds peak_kib"; the render's own output goes to $work/log.
+timed() {
+  /usr/bin/time -f "%U %S %M" -o "$work/time" "$lattice" render "$@" --threads 1 --quiet "${sizeArgs[@]}" \
+    >"$work/log" 2>&1 || { echo "trade.sh: lattice render $* failed:" >&2; cat "$work/log" >&2; exit 4; }
+  awk '{ printf "%.3f %d\n", $1 + $2, $3 }' "$work/time"
+}
+
+# Median CPU seconds and the largest peak RSS of $runs runs.
+measure() {
+  local times=() peak=0 t m
+  for ((i = 0; i < runs; ++i)); do
+    read -r t m < <(timed "$@")
+    times+=("$t")
+    ((m > peak)) && peak=$m
+  done
+  printf '%s\n' "${times[@]}" | sort -g | awk -v p="$peak" '{ a[NR] = $1 } END {
+    m = (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2; printf "%.3f %d\n", m, p }'
+}
+
+tableBytes() {  # lht file -> bytes
+  "$lattice" lht-info "$1" | awk '/^table bytes:/ { print $3 }'
+}
+
+for scene in $scenes; do
+  [[ -f $root/scenes/$scene.toml ]] || { echo "trade.sh: scenes/$scene.toml does not exist" >&2; exit 2; }
+  tsv="$out/$scene.tsv"
+  printf 'group\tsetting\tcpu_s\tratio\tpeak_kib\ttable_bytes\traster_s\tpsnr_db\tmax_err\tssim\n' >"$tsv.tmp"
+  base=$(variant "$scene" 1)
+  ref="$work/ref.png"
+  echo "trade.sh: $scene: reference (double, full ray trace)" >&2
+  read -r refTime refPeak < <(measure "$base" --full --arith double -o "$ref")
+  # The palette and memory-mode rows compare the emulator's picture to the truecolour reference.
+  row() {  # group setting cpu peak table raster png
+    local err ratio
+    err=$("$metric" "$ref" "$7")
+    ratio=$(awk -v a="$3" -v b="$refTime" 'BEGIN { printf "%.3f", (b > 0) ? a / b : 0 }')
+    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$1" "$2" "$3" "$ratio" "$4" "$5" "$6" "$(tr ' ' '\t' <<<"$err")" >>"$tsv.tmp"
+  }
+  row reference "double full" "$refTime" "$refPeak" 0 0 "$ref"
+
+  for arith in $arithmetics; do
+    if [[ $arith != double ]]; then
+      echo "trade.sh: $scene: $arith full" >&2
+      read -r t m < <(measure "$base" --full --arith "$arith" -o "$work/img.png")
+      row arithmetic "$arith full" "$t" "$m" 0 0 "$work/img.png"
+    fi
+    for f in 1 2 3 4; do
+      echo "trade.sh: $scene: $arith f_lat=$f" >&2
+      v=$(variant "$scene" "$f")
+      first=""
+      if [[ ! -f $work/$scene-f$f.lht ]]; then  # the first run rasterizes and writes the cache
+        read -r first _ < <(timed "$v" --arith "$arith" -o "$work/img.png")
+      fi
+      read -r t m < <(measure "$v" --arith "$arith" -o "$work/img.png")
+      # Rasterizing = the first run's time less a cached run's.
+      [[ -n $first ]] && printf -v "raster_f$f" '%s' "$(awk -v a="$first" -v b="$t" 'BEGIN { printf "%.3f", a - b }')"
+      rasterVar="raster_f$f"
+      row lattice "$arith f_lat=$f" "$t" "$m" "$(tableBytes "$work/$scene-f$f.lht")" "${!rasterVar}" "$work/img.png"
+    done
+  done
+
+  # Palette and dithering: the Tek 4125 driver's stream, decoded by its emulator.
+  # These rows ray trace in full (double), so their error is the quantizer's alone.
+  for colors in 256 16 4; do
+    for dither in none fs bayer; do
+      echo "trade.sh: $scene: tek4125 $colors colours, dither $dither" >&2
+      read -r t m < <(measure "$base" --full --device tek4125 --stream "$work/s.tek" -o "$work/img.png" "${tekScreen[@]}" \
+        --colors "$colors" --dither "$dither" --mode passes)
+      row palette "$colors colours, $dither" "$t" "$m" 0 0 "$work/img.png"
+    done
+  done
+
+  # Quantizer memory mode (256 colours, no dither, full ray trace). The emulator
+  # holds the screen, so the peak RSS of these rows is not the driver's alone
+  # (bench/memory.sh measures the mode without it).
+  for mode in passes frame sample; do
+    echo "trade.sh: $scene: tek4125 mode $mode" >&2
+    read -r t m < <(measure "$base" --full --device tek4125 --stream "$work/s.tek" -o "$work/img.png" "${tekScreen[@]}" --mode "$mode")
+    row "quantizer mode" "$mode" "$t" "$m" 0 0 "$work/img.png"
+  done
+  mv "$tsv.tmp" "$tsv"
+  echo "trade.sh: wrote $tsv" >&2
+done
+
+if ((docs)); then
+  python3 "$root/bench/plot_trade.py" --results "$out" --docs "$root/docs" --runs "$runs" \
+    --size "$size" $scenes
+fi
