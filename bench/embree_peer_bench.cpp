@@ -17,6 +17,7 @@
 #include <cstring>
 #include <random>
 #include <string>
+#include <ctime>
 #include <vector>
 
 #include "render/csg.hpp"
@@ -48,16 +49,30 @@ Ray<double> primaryRay(int x, int y, int size) {
   return {origin, Vec3d(px, py, 0) - Vec3d(0, 0, -1.5)};
 }
 
+double threadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
+}
+
+struct Medians {
+  double wall = 0;
+  double cpu = 0;  // this thread's CPU time: steadier than wall time when other jobs share the machine
+};
+
 template <typename F>
-double medianSeconds(int runs, F&& f) {
-  std::vector<double> times;
+Medians medianSeconds(int runs, F&& f) {
+  std::vector<double> wall, cpu;
   for (int r = 0; r < runs; ++r) {
+    const double c0 = threadCpuSeconds();
     auto t0 = std::chrono::steady_clock::now();
     f();
-    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    cpu.push_back(threadCpuSeconds() - c0);
   }
-  std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
+  std::sort(wall.begin(), wall.end());
+  std::sort(cpu.begin(), cpu.end());
+  return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
 }
 
 }  // namespace
@@ -87,8 +102,9 @@ int main(int argc, char** argv) {
     return 1;
   }
   fmt::print("# {}x{} primary rays, single thread, median of {} runs\n", size, size, runs);
-  fmt::print("{:>7} {:>12} {:>12} {:>8} {:>10} {:>10}\n", "spheres", "lattice_ms", "embree_ms", "ratio",
-             "agree_%", "max_dt");
+  fmt::print("# ratio = lattice / embree; cpu: the same runs' thread CPU time (steadier on a loaded machine)\n");
+  fmt::print("{:>7} {:>11} {:>11} {:>7} {:>11} {:>11} {:>7} {:>9} {:>10}\n", "spheres", "lattice_ms", "embree_ms",
+             "ratio", "lat_cpu_ms", "emb_cpu_ms", "ratio", "agree_%", "max_dt");
   for (int n : counts) {
     SphereSet set = randomSpheres(n, 1988u + static_cast<unsigned>(n));
 
@@ -117,7 +133,7 @@ int main(int argc, char** argv) {
     rtcCommitScene(scene);
 
     std::vector<double> ours(static_cast<size_t>(size * size)), theirs(static_cast<size_t>(size * size));
-    double lat = medianSeconds(runs, [&] {
+    const Medians lat = medianSeconds(runs, [&] {
       for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x) {
           Hit<double> hit;
@@ -125,7 +141,7 @@ int main(int argc, char** argv) {
           ours[static_cast<size_t>(y * size + x)] = uni->firstHit(r, 0.0, 1e30, hit) ? hit.t : -1.0;
         }
     });
-    double emb = medianSeconds(runs, [&] {
+    const Medians emb = medianSeconds(runs, [&] {
       RTCIntersectContext context;
       rtcInitIntersectContext(&context);
       for (int y = 0; y < size; ++y)
@@ -161,7 +177,8 @@ int main(int argc, char** argv) {
       }
       ++agree;
     }
-    fmt::print("{:>7} {:>12.2f} {:>12.2f} {:>8.2f} {:>10.3f} {:>10.2e}\n", n, lat * 1e3, emb * 1e3, lat / emb,
+    fmt::print("{:>7} {:>11.2f} {:>11.2f} {:>7.2f} {:>11.2f} {:>11.2f} {:>7.2f} {:>9.3f} {:>10.2e}\n", n,
+               lat.wall * 1e3, emb.wall * 1e3, lat.wall / emb.wall, lat.cpu * 1e3, emb.cpu * 1e3, lat.cpu / emb.cpu,
                100.0 * static_cast<double>(agree) / static_cast<double>(ours.size()), maxDt);
     rtcReleaseScene(scene);
   }
