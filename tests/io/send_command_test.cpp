@@ -14,47 +14,18 @@
 
 #include "io/atomic_file.hpp"
 #include "io/pty.hpp"
+#include "tests/support/run_lattice.hpp"
 #include "pty_peer.hpp"
 
 using namespace lattice;
 using lattice::testing::PtyPeer;
 
-namespace {
-
-// LATTICE_EXE overrides the binary (e.g. one linked from just the io commands
-// while another area does not build).
-std::filesystem::path latticeBinary() {
-  if (const char* exe = std::getenv("LATTICE_EXE"); exe != nullptr && *exe != '\0') return exe;
-  return std::filesystem::path(LATTICE_BINARY_DIR) / "app" / "lattice";
-}
-
-struct Run {
-  int exitCode = -1;
-  std::string stderrText;
-};
-
-Run runLattice(const std::string& arguments) {
-  auto errFile = std::filesystem::temp_directory_path() / fmt::format("lattice-send-test-{}.err", ::getpid());
-  int status = std::system(fmt::format("'{}' {} 2>'{}' </dev/null", latticeBinary().string(), arguments,
-                                       errFile.string())
-                               .c_str());
-  Run run;
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(errFile);
-  std::stringstream text;
-  text << in.rdbuf();
-  run.stderrText = text.str();
-  std::filesystem::remove(errFile);
-  return run;
-}
-
-}  // namespace
 
 TEST_CASE("lattice send streams a file to a pty, and resumes after a stall", "[send]") {
   // test_io depends on the `lattice` target (tests/CMakeLists.txt), so a
   // missing binary means a broken build: fail rather than skip quietly.
-  INFO("lattice is not built (" << latticeBinary() << "): build the `lattice` target or set LATTICE_EXE");
-  REQUIRE(std::filesystem::exists(latticeBinary()));
+  INFO("lattice is not built (" << lattice::testing::latticeBinary() << "): build the `lattice` target or set LATTICE_EXE");
+  REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
   auto stream = lattice::testing::pseudoRandomBytes(80 * 1024, 2024);
   auto file = std::filesystem::temp_directory_path() / fmt::format("lattice-send-test-{}.tek", ::getpid());
   writeFileAtomically(file, stream);
@@ -63,7 +34,7 @@ TEST_CASE("lattice send streams a file to a pty, and resumes after a stall", "[s
   PtyPeer peer(pty);
   peer.holdAt(20 * 1024);
   std::jthread terminal([&] { peer.stopSenderAt(20 * 1024); });
-  auto stalled = runLattice(fmt::format("send '{}' --port {} --baud 38400 --flow xonxoff --stall-timeout 0.5",
+  auto stalled = lattice::testing::runLattice(fmt::format("send '{}' --port {} --baud 38400 --flow xonxoff --stall-timeout 0.5",
                                         file.string(), pty.slavePath()));
   terminal.join();
   CHECK(stalled.exitCode == 6);
@@ -76,19 +47,19 @@ TEST_CASE("lattice send streams a file to a pty, and resumes after a stall", "[s
         std::string::npos);
 
   peer.send(lattice::testing::kXon);
-  auto resumed = runLattice(fmt::format("send '{}' --port {} --baud 38400 --flow xonxoff --resume {}",
+  auto resumed = lattice::testing::runLattice(fmt::format("send '{}' --port {} --baud 38400 --flow xonxoff --resume {}",
                                         file.string(), pty.slavePath(), resume));
   CHECK(resumed.exitCode == 0);
   REQUIRE(peer.waitFor(stream.size()));
   peer.settle(0.05);
   CHECK(peer.data() == stream);
 
-  auto pastEnd = runLattice(fmt::format("send '{}' --port {} --resume 999999999", file.string(), pty.slavePath()));
+  auto pastEnd = lattice::testing::runLattice(fmt::format("send '{}' --port {} --resume 999999999", file.string(), pty.slavePath()));
   CHECK(pastEnd.exitCode == 2);
-  auto noPort = runLattice(fmt::format("send '{}' --port /dev/lattice-no-such-tty", file.string()));
+  auto noPort = lattice::testing::runLattice(fmt::format("send '{}' --port /dev/lattice-no-such-tty", file.string()));
   CHECK(noPort.exitCode == 5);
   CHECK(noPort.stderrText.find("no such serial port") != std::string::npos);
-  auto noFile = runLattice(fmt::format("send /nonexistent/lattice.tek --port {}", pty.slavePath()));
+  auto noFile = lattice::testing::runLattice(fmt::format("send /nonexistent/lattice.tek --port {}", pty.slavePath()));
   CHECK(noFile.exitCode == 3);
   CHECK(noFile.stderrText.find("/nonexistent/lattice.tek") != std::string::npos);
   std::filesystem::remove(file);

@@ -29,6 +29,7 @@
 #include "io/atomic_file.hpp"
 #include "io/png.hpp"
 #include "io/pty.hpp"
+#include "tests/support/run_lattice.hpp"
 #include "io/serial_options.hpp"
 #include "io/serial_sink.hpp"
 #include "pipeline/run_pipeline.hpp"
@@ -184,47 +185,19 @@ TEST_CASE("serial render: a scene through a pty equals the file path", "[serial]
   for (const auto& p : {streamFile, filePng, serialPng}) std::filesystem::remove(p);
 }
 
-namespace {
-
-// LATTICE_EXE overrides the binary, as in send_command_test.cpp.
-std::filesystem::path latticeBinary() {
-  if (const char* exe = std::getenv("LATTICE_EXE"); exe != nullptr && *exe != '\0') return exe;
-  return std::filesystem::path(LATTICE_BINARY_DIR) / "app" / "lattice";
-}
-
-struct Run {
-  int exitCode = -1;
-  std::string stderrText;
-};
-
-Run runLattice(const std::string& arguments) {
-  const auto errFile = tempPath("cli.err");
-  const int status = std::system(
-      fmt::format("'{}' {} 2>'{}' </dev/null", latticeBinary().string(), arguments, errFile.string()).c_str());
-  Run run;
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(errFile);
-  std::stringstream text;
-  text << in.rdbuf();
-  run.stderrText = text.str();
-  std::filesystem::remove(errFile);
-  return run;
-}
-
-}  // namespace
 
 TEST_CASE("serial render: lattice render --port into a pty equals --stream", "[serial]") {
   // Built with test_io (add_dependencies in tests/CMakeLists.txt): a missing
   // binary is a broken build, not a reason to skip.
-  INFO("binary " << latticeBinary().string() << " (build the `lattice` target, or set LATTICE_EXE)");
-  REQUIRE(std::filesystem::exists(latticeBinary()));
+  INFO("binary " << lattice::testing::latticeBinary().string() << " (build the `lattice` target, or set LATTICE_EXE)");
+  REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
   const app::StreamDevice device = app::streamDevice("tek4125");
   const std::string scene = testing::sourcePath("scenes/torus-floor.toml").string();
   const std::string common = fmt::format("render '{}' --device tek4125 --width 80 --height 60", scene);
 
   const auto streamFile = tempPath("cli.tek"), streamPng = tempPath("cli-stream.png"),
              portPng = tempPath("cli-port.png");
-  const Run toFile = runLattice(fmt::format("{} --stream '{}' -o '{}'", common, streamFile.string(), streamPng.string()));
+  const lattice::testing::CommandRun toFile = lattice::testing::runLattice(fmt::format("{} --stream '{}' -o '{}'", common, streamFile.string(), streamPng.string()));
   INFO("--stream run: " << toFile.stderrText);
   REQUIRE(toFile.exitCode == 0);
   const std::vector<std::uint8_t> fromFile = readWholeFile(streamFile);
@@ -232,7 +205,7 @@ TEST_CASE("serial render: lattice render --port into a pty equals --stream", "[s
 
   PtyPair pty;
   PtyTerminal terminal(pty, device);
-  const Run toPort = runLattice(
+  const lattice::testing::CommandRun toPort = lattice::testing::runLattice(
       fmt::format("{} --port {} --baud 38400 -o '{}'", common, pty.slavePath(), portPng.string()));
   INFO("--port run: " << toPort.stderrText);
   REQUIRE(toPort.exitCode == 0);
