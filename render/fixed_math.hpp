@@ -52,15 +52,16 @@ constexpr Fixed<F> exp2(Fixed<F> y) {
   using Raw = typename Fixed<F>::Raw;
   const Raw integer = y.raw() >> F;  // floor
   const Raw fraction = y.raw() - (integer << F);
-  if (integer >= 62 - F) return std::numeric_limits<Fixed<F>>::max();
+  if (integer > 62 - F) return std::numeric_limits<Fixed<F>>::max();
   if (integer < -F - 1) return Fixed<F>();
   UInt128 m = static_cast<UInt128>(1) << 62;  // 1.0 in Q62
   for (int bit = F - 1, i = 1; bit >= 0 && i <= 40; --bit, ++i)
     if ((fraction >> bit) & 1) m = (m * fixed_detail::kRootsOfTwo[static_cast<std::size_t>(i)]) >> 62;
   // m in [1, 2) as Q62: the result's raw value is m * 2^(integer + F - 62), rounded.
-  const int shift = 62 - F - static_cast<int>(integer);
-  const UInt128 rounded = (m + (static_cast<UInt128>(1) << (shift - 1))) >> shift;
-  return Fixed<F>::fromRaw(static_cast<Raw>(rounded));
+  const int shift = 62 - F - static_cast<int>(integer);  // >= 0
+  const UInt128 rounded = shift == 0 ? m : (m + (static_cast<UInt128>(1) << (shift - 1))) >> shift;
+  const UInt128 limit = static_cast<UInt128>(Fixed<F>::kMaxRaw);
+  return Fixed<F>::fromRaw(static_cast<Raw>(rounded > limit ? limit : rounded));
 }
 
 // x^y for x >= 0 (negative x gives 0: the renderer only raises clamped cosines).
