@@ -31,10 +31,14 @@ constexpr Raw kOneQ = Raw(1) << kQ;
 constexpr int kTopBit = 55;  // the largest |D_i| is in [2^55, 2^56)
 
 int topBit(Raw v) {  // floor(log2 |v|), v != 0
-  std::uint64_t u = static_cast<std::uint64_t>(v < 0 ? -v : v);
-  int b = 63;
-  while (((u >> b) & 1u) == 0) --b;
-  return b;
+  const std::uint64_t u = static_cast<std::uint64_t>(v < 0 ? -v : v);
+  return 63 - __builtin_clzll(u);
+}
+
+int bitLength(UInt128 v) {  // bits needed for v (0 for 0)
+  const std::uint64_t high = static_cast<std::uint64_t>(v >> 64), low = static_cast<std::uint64_t>(v);
+  if (high != 0) return 128 - __builtin_clzll(high);
+  return low != 0 ? 64 - __builtin_clzll(low) : 0;
 }
 
 Int128 roundShiftRight(Int128 v, int s) {  // v / 2^s rounded to nearest, s >= 1
@@ -228,9 +232,7 @@ Fixed32 evaluate(std::span<const Fixed32> c, Fixed32 x) {
   for (std::size_t k = c.size() - 1; k-- > 0;) {
     // |s| <= 2^100 and |x| < 2^63: the product fits unless s is already huge
     // and |x| >= 2^27, in which case the result is huge as well.
-    const Int128 magnitude = s < 0 ? -s : s;
-    int sBits = 0;
-    for (Int128 t = magnitude; t != 0 && sBits < 128; t >>= 1) ++sBits;
+    const int sBits = bitLength(static_cast<UInt128>(s < 0 ? -s : s));
     if (sBits + xBits > 126) s = ((s < 0) != (xr < 0)) ? -kHuge : kHuge;
     else s = roundShiftRight(s * xr, 32);
     s += c[k].raw();
