@@ -78,8 +78,10 @@ void defineRenderOptions(CLI::App& cmd, RenderCommandOptions& o) {
       ->check(CLI::Range(1, 16384));
   cmd.add_option("--threads", o.threads, "Worker threads (default: all cores); the image does not depend on it")
       ->check(CLI::Range(1, 256));
-  cmd.add_option("--arith", o.arith, "Scalar type of the ray tracer: float or double")
-      ->check(CLI::IsMember({"float", "double"}))
+  cmd.add_option("--arith", o.arith,
+                 "Arithmetic of the whole per-pixel path: float, double, or fixed (Q31.32 integers, no FPU; "
+                 "docs/fixed-point.md)")
+      ->check(CLI::IsMember({"float", "double", "fixed"}))
       ->capture_default_str();
   cmd.add_flag("--full", o.full,
                "Full ray trace: replace every lattice by its exact CSG object (the thesis's reference column)");
@@ -248,6 +250,8 @@ void runRender(const RenderCommandOptions& o, const CLI::App& cmd) {
   const lattice::SceneDesc scene = lattice::loadScene(o.scene);
   if (o.arith == "float")
     renderWith<float>(scene, o, cmd);
+  else if (o.arith == "fixed")
+    renderWith<lattice::Fixed32>(scene, o, cmd);
   else
     renderWith<double>(scene, o, cmd);
 }

@@ -46,20 +46,43 @@ class LatticeLeaf final : public Primitive<T> {
     const LatticePoint in = nearestPoint(local.at(t0));
     const LatticePoint outPoint = nearestPoint(local.at(t1));
     if (in == outPoint) return;
-    const auto enter = lht_->table.find(in, outPoint);
-    if (!enter) return;
-    const auto leave = lht_->table.find(outPoint, in);
     Span<T> span;
-    span.enter.t = t0 + (t1 - t0) * T(enter->s);
-    span.enter.normal = toWorld(enter->normal);
+    bool haveLeave = false;
+    T enterS, leaveS(0);
+    if constexpr (kIsIeee<T>) {
+      const auto enter = lht_->table.find(in, outPoint);
+      if (!enter) return;
+      const auto leave = lht_->table.find(outPoint, in);
+      enterS = T(enter->s);
+      span.enter.normal = toWorld(enter->normal);
+      if (leave) {
+        haveLeave = true;
+        leaveS = T(leave->s);
+        span.leave.normal = toWorld(leave->normal);
+      }
+    } else {
+      // Fixed point decodes the entry's bytes directly: s = byte / 255, and
+      // the normal's direction is its three signed bytes (normalized below).
+      const LhtEntry* enter = lht_->table.findEntry(in, outPoint);
+      if (!enter) return;
+      const LhtEntry* leave = lht_->table.findEntry(outPoint, in);
+      enterS = T(int(enter->s)) / T(255);
+      span.enter.normal = rawToWorld(rawNormal(*enter));
+      if (leave) {
+        haveLeave = true;
+        leaveS = T(int(leave->s)) / T(255);
+        span.leave.normal = rawToWorld(rawNormal(*leave));
+      }
+    }
+    span.enter.t = t0 + (t1 - t0) * enterS;
     span.enter.material = material_;
     // (p_o, p_i) hits whenever (p_i, p_o) does (same segment); guard anyway.
-    span.leave.t = leave ? t1 - (t1 - t0) * T(leave->s) : span.enter.t;
-    span.leave.normal = leave ? toWorld(leave->normal) : -span.enter.normal;
+    span.leave.t = haveLeave ? t1 - (t1 - t0) * leaveS : span.enter.t;
+    if (!haveLeave) span.leave.normal = -span.enter.normal;
     span.leave.material = material_;
     if (span.leave.t < span.enter.t) span.leave.t = span.enter.t;  // a chord thinner than the quantization
     // One cell along the ray, in t: the reach of the rounding error.
-    const T cellT = T(1) / glm::length(local.direction);
+    const T cellT = T(1) / lattice::length(local.direction);
     if (span.leave.t <= tmin + cellT && span.enter.t < tmin + cellT) return;  // the surface the ray starts on
     if (span.leave.t <= tmin || span.enter.t >= tmax) return;
     out.push_back(span);
@@ -69,12 +92,17 @@ class LatticeLeaf final : public Primitive<T> {
   LatticePoint nearestPoint(const Vec3<T>& p) const {
     const auto& c = lht_->box.cells();
     const auto coord = [&](int a) {
-      const T v = std::round(p[a]);
+      const T v = roundNearest(p[a]);
       return static_cast<std::uint8_t>(std::clamp(static_cast<int>(v), 0, c[a]));
     };
     return {coord(0), coord(1), coord(2)};
   }
-  Vec3<T> toWorld(const Vec3d& n) const { return glm::normalize(normalToWorld_ * Vec3<T>(n)); }
+  Vec3<T> toWorld(const Vec3d& n) const { return lattice::normalize(normalToWorld_ * Vec3<T>(n)); }
+  Vec3<T> rawToWorld(const Vec3<T>& n) const { return lattice::normalize(normalToWorld_ * n); }
+  static Vec3<T> rawNormal(const LhtEntry& e) {
+    if (e.normal[0] == 0 && e.normal[1] == 0 && e.normal[2] == 0) return Vec3<T>(T(0), T(0), T(1));  // as decodeEntry
+    return Vec3<T>(T(int(e.normal[0])), T(int(e.normal[1])), T(int(e.normal[2])));
+  }
 
   std::shared_ptr<const LhtFile> lht_;
   MaterialId material_;
@@ -96,5 +124,7 @@ PrimitivePtr<T> makeLatticeLeaf(std::shared_ptr<const LhtFile> table, const Mat4
 
 template PrimitivePtr<float> makeLatticeLeaf<float>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId, bool);
 template PrimitivePtr<double> makeLatticeLeaf<double>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId, bool);
+template PrimitivePtr<Fixed32> makeLatticeLeaf<Fixed32>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId,
+                                                        bool);
 
 }  // namespace lattice::lht

@@ -31,5 +31,7 @@ extern template PrimitivePtr<float> makeLatticeLeaf<float>(std::shared_ptr<const
                                                            bool);
 extern template PrimitivePtr<double> makeLatticeLeaf<double>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId,
                                                            bool);
+extern template PrimitivePtr<Fixed32> makeLatticeLeaf<Fixed32>(std::shared_ptr<const LhtFile>, const Mat4d&,
+                                                             MaterialId, bool);
 
 }  // namespace lattice::lht

@@ -37,6 +37,9 @@ class LatticeLeafDesc final : public LeafDesc {
   PrimitivePtr<double> build(const Mat4d& toWorld, MaterialId m, const BuildOptions& o, double) const override {
     return buildFor<double>(toWorld, m, o);
   }
+  PrimitivePtr<Fixed32> build(const Mat4d& toWorld, MaterialId m, const BuildOptions& o, Fixed32) const override {
+    return buildFor<Fixed32>(toWorld, m, o);
+  }
   Bounds<double> objectBounds() const override { return definition_->objectBounds(); }
   std::string describe() const override { return fmt::format("lattice '{}'", definition_->name); }
 

@@ -35,6 +35,9 @@ class PolylineLeafDesc final : public LeafDesc {
   PrimitivePtr<double> build(const Mat4d& toWorld, MaterialId m, const BuildOptions&, double) const override {
     return makePolyline<double>(points_, radius_, toWorld, m);
   }
+  PrimitivePtr<Fixed32> build(const Mat4d& toWorld, MaterialId m, const BuildOptions&, Fixed32) const override {
+    return makePolyline<Fixed32>(points_, radius_, toWorld, m);
+  }
   Bounds<double> objectBounds() const override { return polylineBounds(points_, radius_); }
   std::string describe() const override { return fmt::format("polyline of {} points", points_.size()); }
 
@@ -62,6 +65,7 @@ PrimitivePtr<T> makePolyline(const std::vector<Vec3d>& points, double radius, co
 
 template PrimitivePtr<float> makePolyline<float>(const std::vector<Vec3d>&, double, const Mat4d&, MaterialId);
 template PrimitivePtr<double> makePolyline<double>(const std::vector<Vec3d>&, double, const Mat4d&, MaterialId);
+template PrimitivePtr<Fixed32> makePolyline<Fixed32>(const std::vector<Vec3d>&, double, const Mat4d&, MaterialId);
 
 Bounds<double> polylineBounds(const std::vector<Vec3d>& points, double radius) {
   Bounds<double> box;

@@ -17,6 +17,7 @@ PrimitivePtr<T> makePolyline(const std::vector<Vec3d>& points, double radius, co
 
 extern template PrimitivePtr<float> makePolyline<float>(const std::vector<Vec3d>&, double, const Mat4d&, MaterialId);
 extern template PrimitivePtr<double> makePolyline<double>(const std::vector<Vec3d>&, double, const Mat4d&, MaterialId);
+extern template PrimitivePtr<Fixed32> makePolyline<Fixed32>(const std::vector<Vec3d>&, double, const Mat4d&, MaterialId);
 
 // The exact box: every point grown by the radius.
 Bounds<double> polylineBounds(const std::vector<Vec3d>& points, double radius);

@@ -132,16 +132,22 @@ LatticeHashTable::LatticeHashTable(std::vector<LhtEntry> slots, std::uint64_t bu
 }
 
 std::optional<LhtHit> LatticeHashTable::find(const LatticePoint& in, const LatticePoint& out) const {
-  if (buckets_ == 0 || in == out) return std::nullopt;
+  const LhtEntry* e = findEntry(in, out);
+  if (!e) return std::nullopt;
+  return decodeEntry(*e);
+}
+
+const LhtEntry* LatticeHashTable::findEntry(const LatticePoint& in, const LatticePoint& out) const {
+  if (buckets_ == 0 || in == out) return nullptr;
   std::uint8_t key[6];
   makeKey(in, out, key);
   std::uint32_t index = static_cast<std::uint32_t>(bucketOf(key, buckets_));
   while (index != kNoNext) {
     const LhtEntry& e = slots_[index];
-    if (std::memcmp(e.key, key, sizeof key) == 0) return decodeEntry(e);
+    if (std::memcmp(e.key, key, sizeof key) == 0) return &e;
     index = nextOf(e);
   }
-  return std::nullopt;
+  return nullptr;
 }
 
 ChainStats LatticeHashTable::chainStats() const {

@@ -60,6 +60,9 @@ class LatticeHashTable {
   LatticeHashTable(std::vector<LhtEntry> slots, std::uint64_t bucketCount, std::uint64_t entryCount);
 
   std::optional<LhtHit> find(const LatticePoint& in, const LatticePoint& out) const;
+  // The stored entry itself (null if absent): fixed-point rendering decodes
+  // its bytes in integers instead of through LhtHit's doubles.
+  const LhtEntry* findEntry(const LatticePoint& in, const LatticePoint& out) const;
 
   std::uint64_t entryCount() const { return entries_; }
   std::uint64_t bucketCount() const { return buckets_; }

@@ -24,12 +24,12 @@ struct Bounds {
     return true;
   }
   void extend(const Vec3<T>& p) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
+    lo = componentMin(lo, p);
+    hi = componentMax(hi, p);
   }
   void extend(const Bounds& b) {
-    lo = glm::min(lo, b.lo);
-    hi = glm::max(hi, b.hi);
+    lo = componentMin(lo, b.lo);
+    hi = componentMax(hi, b.hi);
   }
   Vec3<T> center() const { return (lo + hi) * T(0.5); }
 

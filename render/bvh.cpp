@@ -73,7 +73,7 @@ std::uint32_t Bvh<T>::build(std::vector<Bounds<T>>& centroids, const std::vector
       std::uint32_t count = 0;
     };
     Bin bins[kBins];
-    const double lo = cbox.lo[axis], scale = kBins / (double(cbox.hi[axis]) - lo);
+    const double lo = double(cbox.lo[axis]), scale = kBins / (double(cbox.hi[axis]) - lo);
     auto binOf = [&](std::uint32_t item) {
       int b = static_cast<int>((double(centroids[item].lo[axis]) - lo) * scale);
       return std::clamp(b, 0, kBins - 1);
@@ -131,5 +131,6 @@ std::uint32_t Bvh<T>::build(std::vector<Bounds<T>>& centroids, const std::vector
 
 template class Bvh<float>;
 template class Bvh<double>;
+template class Bvh<Fixed32>;
 
 }  // namespace lattice

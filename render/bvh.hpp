@@ -138,5 +138,6 @@ class Bvh {
 
 extern template class Bvh<float>;
 extern template class Bvh<double>;
+extern template class Bvh<Fixed32>;
 
 }  // namespace lattice

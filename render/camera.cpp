@@ -55,6 +55,9 @@ Camera<T>::Camera(const CameraDesc& desc, int width, int height) {
     corner_ = Vec3d(x0, yTop, D);
     stepX_ = Vec3d(sx, 0.0, 0.0);
     stepY_ = Vec3d(0.0, -sy, 0.0);
+    cornerT_ = Vec3<T>(corner_);
+    stepXT_ = Vec3<T>(stepX_);
+    stepYT_ = Vec3<T>(stepY_);
     return;
   }
   // Look-at: an orthonormal frame; the image plane sits at distance 1.
@@ -68,15 +71,23 @@ Camera<T>::Camera(const CameraDesc& desc, int width, int height) {
   stepY_ = -up * (2.0 * halfH / height);
   // Centre of pixel (0, 0): top-left corner plus half a step each way.
   corner_ = forward - right * halfW + up * halfH + 0.5 * stepX_ + 0.5 * stepY_;
+  cornerT_ = Vec3<T>(corner_);
+  stepXT_ = Vec3<T>(stepX_);
+  stepYT_ = Vec3<T>(stepY_);
 }
 
 template <typename T>
 Ray<T> Camera<T>::primaryRay(int x, int y) const {
-  const Vec3d d = corner_ + static_cast<double>(x) * stepX_ + static_cast<double>(y) * stepY_;
-  return {origin_, Vec3<T>(d)};
+  if constexpr (!kIsIeee<T>) {
+    return {origin_, cornerT_ + stepXT_ * T(x) + stepYT_ * T(y)};
+  } else {
+    const Vec3d d = corner_ + static_cast<double>(x) * stepX_ + static_cast<double>(y) * stepY_;
+    return {origin_, Vec3<T>(d)};
+  }
 }
 
 template class Camera<float>;
 template class Camera<double>;
+template class Camera<Fixed32>;
 
 }  // namespace lattice

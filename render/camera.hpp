@@ -60,9 +60,15 @@ class Camera {
   Vec3d corner_{};
   Vec3d stepX_{};
   Vec3d stepY_{};
+  // Fixed point computes the direction in T itself (the per-pixel path must
+  // not use double), from these copies converted once.
+  Vec3<T> cornerT_{};
+  Vec3<T> stepXT_{};
+  Vec3<T> stepYT_{};
 };
 
 extern template class Camera<float>;
 extern template class Camera<double>;
+extern template class Camera<Fixed32>;
 
 }  // namespace lattice

@@ -14,7 +14,7 @@ namespace {
 
 template <typename T>
 Bounds<T> intersectBoxes(const Bounds<T>& a, const Bounds<T>& b) {
-  return {glm::max(a.lo, b.lo), glm::min(a.hi, b.hi)};
+  return {componentMax(a.lo, b.lo), componentMin(a.hi, b.hi)};
 }
 
 template <typename T>
@@ -212,5 +212,7 @@ template PrimitivePtr<float> makeCsgNode<float>(CsgOp, std::vector<PrimitivePtr<
 template PrimitivePtr<double> makeCsgNode<double>(CsgOp, std::vector<PrimitivePtr<double>>);
 template PrimitivePtr<float> makeCsgNode<float>(CsgOp, std::vector<PrimitivePtr<float>>, const Bounds<float>&);
 template PrimitivePtr<double> makeCsgNode<double>(CsgOp, std::vector<PrimitivePtr<double>>, const Bounds<double>&);
+template PrimitivePtr<Fixed32> makeCsgNode<Fixed32>(CsgOp, std::vector<PrimitivePtr<Fixed32>>);
+template PrimitivePtr<Fixed32> makeCsgNode<Fixed32>(CsgOp, std::vector<PrimitivePtr<Fixed32>>, const Bounds<Fixed32>&);
 
 }  // namespace lattice

@@ -38,5 +38,8 @@ extern template PrimitivePtr<double> makeCsgNode<double>(CsgOp, std::vector<Prim
 extern template PrimitivePtr<float> makeCsgNode<float>(CsgOp, std::vector<PrimitivePtr<float>>, const Bounds<float>&);
 extern template PrimitivePtr<double> makeCsgNode<double>(CsgOp, std::vector<PrimitivePtr<double>>,
                                                          const Bounds<double>&);
+extern template PrimitivePtr<Fixed32> makeCsgNode<Fixed32>(CsgOp, std::vector<PrimitivePtr<Fixed32>>);
+extern template PrimitivePtr<Fixed32> makeCsgNode<Fixed32>(CsgOp, std::vector<PrimitivePtr<Fixed32>>,
+                                                           const Bounds<Fixed32>&);
 
 }  // namespace lattice

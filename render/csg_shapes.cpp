@@ -61,5 +61,6 @@ PrimitivePtr<T> makeCapsule(double radius, double length, const Mat4d& objectToW
 
 template PrimitivePtr<float> makeCapsule<float>(double, double, const Mat4d&, MaterialId);
 template PrimitivePtr<double> makeCapsule<double>(double, double, const Mat4d&, MaterialId);
+template PrimitivePtr<Fixed32> makeCapsule<Fixed32>(double, double, const Mat4d&, MaterialId);
 
 }  // namespace lattice

@@ -15,5 +15,6 @@ PrimitivePtr<T> makeCapsule(double radius, double length, const Mat4d& objectToW
 
 extern template PrimitivePtr<float> makeCapsule<float>(double, double, const Mat4d&, MaterialId);
 extern template PrimitivePtr<double> makeCapsule<double>(double, double, const Mat4d&, MaterialId);
+extern template PrimitivePtr<Fixed32> makeCapsule<Fixed32>(double, double, const Mat4d&, MaterialId);
 
 }  // namespace lattice

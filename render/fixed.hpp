@@ -92,7 +92,10 @@ class Fixed {
     return static_cast<Raw>(scaled >= 0 ? scaled + 0.5 : scaled - 0.5);
   }
 
-  Raw raw_ = 0;
+  // No default member initializer: GLM keeps vector components in unions,
+  // which need a trivial default constructor. Value-initialization (Fixed())
+  // still gives 0.
+  Raw raw_;
 };
 
 using Fixed32 = Fixed<32>;
@@ -102,14 +105,10 @@ constexpr Fixed<F> abs(Fixed<F> x) {
   return x < Fixed<F>() ? -x : x;
 }
 
-// Square root by integer Newton iteration on the 128-bit scaled value
-// (sqrt(raw * 2^F) is the raw result). Negative input gives 0, like a
-// clamped discriminant.
-template <int F>
-constexpr Fixed<F> sqrt(Fixed<F> x) {
-  if (x.raw() <= 0) return Fixed<F>();
-  UInt128 n = static_cast<UInt128>(x.raw()) << F;
-  // Initial guess: a power of two at or above the root, then Newton descends monotonically.
+// floor(sqrt(n)) of a 128-bit integer by Newton iteration from a power of
+// two at or above the root (Newton then descends monotonically).
+constexpr UInt128 isqrt(UInt128 n) {
+  if (n == 0) return 0;
   int bits = 0;
   for (UInt128 t = n; t != 0; t >>= 1) ++bits;
   UInt128 r = static_cast<UInt128>(1) << ((bits + 1) / 2);
@@ -118,9 +117,42 @@ constexpr Fixed<F> sqrt(Fixed<F> x) {
     if (next >= r) break;
     r = next;
   }
-  // r = floor(sqrt(n)); round to nearest.
+  return r;
+}
+
+// Square root: sqrt(raw * 2^F) is the raw result, rounded to nearest.
+// Negative input gives 0, like a clamped discriminant.
+template <int F>
+constexpr Fixed<F> sqrt(Fixed<F> x) {
+  if (x.raw() <= 0) return Fixed<F>();
+  UInt128 n = static_cast<UInt128>(x.raw()) << F;
+  UInt128 r = isqrt(n);
   if ((r + 1) * (r + 1) - n <= n - r * r) ++r;
   return Fixed<F>::fromRaw(static_cast<typename Fixed<F>::Raw>(r));
+}
+
+// The renderer's scalar helpers treat a saturated value as IEEE treats an
+// infinity: it is "not finite".
+template <int F>
+constexpr bool isfinite(Fixed<F> x) {
+  return !x.saturated();
+}
+
+// Round to nearest integer (halves away from zero), like std::round.
+template <int F>
+constexpr Fixed<F> round(Fixed<F> x) {
+  using Raw = typename Fixed<F>::Raw;
+  const Raw half = Raw(1) << (F - 1);
+  const Raw mask = ~((Raw(1) << F) - 1);
+  const Raw r = x.raw();
+  return Fixed<F>::fromRaw(r >= 0 ? ((r + half) & mask) : -((-r + half) & mask));
+}
+
+// A compile-time constant: Fixed(double) folded by the compiler, so a
+// literal such as 0.5 never costs a floating-point conversion at run time.
+template <int F>
+consteval Fixed<F> fixedConstant(double v) {
+  return Fixed<F>(v);
 }
 
 }  // namespace lattice

@@ -28,6 +28,9 @@ class QuarticLeafDesc final : public LeafDesc {
   PrimitivePtr<double> build(const Mat4d& toWorld, MaterialId m, const BuildOptions&, double) const override {
     return makeQuarticLeaf<double>(shape_.f, shape_.bounds, toWorld, m);
   }
+  PrimitivePtr<Fixed32> build(const Mat4d& toWorld, MaterialId m, const BuildOptions&, Fixed32) const override {
+    return makeQuarticLeaf<Fixed32>(shape_.f, shape_.bounds, toWorld, m);
+  }
   Bounds<double> objectBounds() const override { return shape_.bounds; }
   std::string describe() const override { return name_; }
 
@@ -45,6 +48,9 @@ class CapsuleLeafDesc final : public LeafDesc {
   }
   PrimitivePtr<double> build(const Mat4d& toWorld, MaterialId m, const BuildOptions&, double) const override {
     return makeCapsule<double>(radius_, length_, toWorld, m);
+  }
+  PrimitivePtr<Fixed32> build(const Mat4d& toWorld, MaterialId m, const BuildOptions&, Fixed32) const override {
+    return makeCapsule<Fixed32>(radius_, length_, toWorld, m);
   }
   Bounds<double> objectBounds() const override {
     return {Vec3d(-radius_, -radius_, -radius_), Vec3d(radius_, radius_, length_ + radius_)};

@@ -230,12 +230,20 @@ class QuarticLeaf final : public Primitive<T> {
     T c0, c1;
     if (!bounds_.clip(worldRay, tmin, tmax, c0, c1)) return;
     Ray<T> ray = worldRay.transformed(worldToObject_);
-    T len = glm::length(ray.direction);
-    if (!(len > T(0)) || !std::isfinite(len)) return;
+    T len = lattice::length(ray.direction);
+    if (!(len > T(0)) || !finite(len)) return;
     Vec3<T> u = ray.direction / len;
     // t0: where the ray passes closest to the pivot; s = (t - t0) * len.
-    T t0 = glm::dot(pivot_ - ray.origin, u) / len;
+    T t0 = lattice::dot(pivot_ - ray.origin, u) / len;
     Vec3<T> base = ray.origin + ray.direction * t0;
+
+    // Fixed point: the substituted coefficients and every intermediate of
+    // substitute() are bounded by sum |a_ijk| Mx^i My^j Mz^k, M = |base| + 1
+    // per axis (|u| <= 1 per component). Where that bound leaves the Q31.32 range
+    // the results would be saturated garbage, so the ray misses this leaf
+    // instead (docs/fixed-point.md, "Where fixed point cannot follow").
+    if constexpr (!kIsIeee<T>)
+      if (!withinFixedRange(base)) return;
 
     T coeff[5];
     substitute(base, u, coeff);
@@ -286,12 +294,33 @@ class QuarticLeaf final : public Primitive<T> {
     for (int ax = 0; ax < 3; ++ax) {
       T lo = b.lo[ax] < -big ? -inf : b.lo[ax] > big ? std::numeric_limits<T>::max() : static_cast<T>(b.lo[ax]);
       T hi = b.hi[ax] > big ? inf : b.hi[ax] < -big ? std::numeric_limits<T>::lowest() : static_cast<T>(b.hi[ax]);
-      if (static_cast<double>(lo) > b.lo[ax]) lo = std::nextafter(lo, -inf);
-      if (static_cast<double>(hi) < b.hi[ax]) hi = std::nextafter(hi, inf);
+      if (static_cast<double>(lo) > b.lo[ax]) lo = nextToward(lo, -inf);
+      if (static_cast<double>(hi) < b.hi[ax]) hi = nextToward(hi, inf);
       out.lo[ax] = lo;
       out.hi[ax] = hi;
     }
     return out;
+  }
+
+  bool withinFixedRange(const Vec3<T>& base) const {
+    T px[5], py[5], pz[5];
+    powers(absolute(base.x) + T(1), px);
+    powers(absolute(base.y) + T(1), py);
+    powers(absolute(base.z) + T(1), pz);
+    // Half the range: sums of in-range terms must not saturate either.
+    const T limit = T(1 << 30);
+    T bound(0);
+    for (const Term<T>& t : terms_) {
+      bound += absolute(t.c) * px[t.i] * py[t.j] * pz[t.k];
+      if (bound >= limit) return false;
+    }
+    return true;
+  }
+
+  // The neighbour of x towards `to` (one ulp, or one raw step in fixed point).
+  static T nextToward(T x, T to) {
+    if constexpr (kIsIeee<T>) return std::nextafter(x, to);
+    else return x < to ? x + std::numeric_limits<T>::epsilon() : x - std::numeric_limits<T>::epsilon();
   }
 
   // f(base + u s) as c[0] + c[1] s + ... + c[4] s^4: exact symbolic expansion.
@@ -319,20 +348,20 @@ class QuarticLeaf final : public Primitive<T> {
   Hit<T> hitAt(const Vec3<T>& base, const Vec3<T>& u, T t0, T len, T s, T facing) const {
     Hit<T> h;
     h.material = material_;
-    if (!std::isfinite(s)) {
+    if (!finite(s)) {
       h.t = s;
       return h;
     }
     h.t = t0 + s / len;
     Vec3<T> g = gradientTerms(terms_, base + u * s);
     Vec3<T> n = normalMatrix_ * g;
-    T nl = glm::length(n);
-    if (nl > T(0) && std::isfinite(nl)) {
+    T nl = lattice::length(n);
+    if (nl > T(0) && finite(nl)) {
       h.normal = n / nl;
     } else {
       // A vanishing gradient (a cone's apex) has no normal: face the ray.
       Vec3<T> along = linear_ * u;
-      h.normal = along * (facing / glm::length(along));
+      h.normal = along * (facing / lattice::length(along));
     }
     return h;
   }
@@ -358,30 +387,81 @@ class QuarticLeaf final : public Primitive<T> {
 
 }  // namespace
 
+namespace {
+
+// Fixed point has an absolute resolution (2^-32), so a polynomial whose
+// coefficients are tiny or huge loses them: a torus of radius 1e4 has an x^4
+// coefficient of 1e-8, 43 units of 2^-32. This re-scales the object space by
+// a power of two S near the object's size (x = S x') and the polynomial by a
+// power of two (same zero set and signs) so its largest coefficient is about
+// 1; the leaf's transform takes S back, so t and the world geometry are
+// unchanged. Done once, in double, at build time.
+struct NormalizedQuartic {
+  QuarticPolynomial f;
+  Bounds<double> bounds;
+  Mat4d objectToWorld;
+};
+
+NormalizedQuartic normalizeForFixedPoint(const QuarticPolynomial& f, const Bounds<double>& objectBounds,
+                                         const Mat4d& objectToWorld) {
+  double size = 0.0;
+  bool finiteBox = !objectBounds.empty();
+  for (int ax = 0; ax < 3; ++ax) {
+    if (!std::isfinite(objectBounds.lo[ax]) || !std::isfinite(objectBounds.hi[ax])) finiteBox = false;
+    else size = std::max({size, std::abs(objectBounds.lo[ax]), std::abs(objectBounds.hi[ax])});
+  }
+  const double s = finiteBox && size > 0.0 && std::isfinite(size) ? std::exp2(std::round(std::log2(size))) : 1.0;
+  NormalizedQuartic out{{}, objectBounds, objectToWorld};
+  double largest = 0.0;
+  for (int n = 0; n < QuarticPolynomial::kTerms; ++n) {
+    const auto e = QuarticPolynomial::exponents(n);
+    const double v = f.a[static_cast<std::size_t>(n)] * std::pow(s, e[0] + e[1] + e[2]);
+    out.f.a[static_cast<std::size_t>(n)] = v;
+    if (std::isfinite(v)) largest = std::max(largest, std::abs(v));
+  }
+  if (largest > 0.0) out.f *= std::exp2(-std::round(std::log2(largest)));
+  if (finiteBox) out.bounds = {objectBounds.lo / s, objectBounds.hi / s};
+  Mat4d scale(1.0);
+  scale[0][0] = scale[1][1] = scale[2][2] = s;
+  out.objectToWorld = objectToWorld * scale;
+  return out;
+}
+
+}  // namespace
+
 template <typename T>
-PrimitivePtr<T> makeQuarticLeaf(const QuarticPolynomial& f, const Bounds<double>& objectBounds,
-                                const Mat4d& objectToWorld, MaterialId material) {
+PrimitivePtr<T> makeQuarticLeaf(const QuarticPolynomial& original, const Bounds<double>& originalBounds,
+                                const Mat4d& originalToWorld, MaterialId material) {
+  NormalizedQuartic leaf{original, originalBounds, originalToWorld};
+  if constexpr (!kIsIeee<T>) leaf = normalizeForFixedPoint(original, originalBounds, originalToWorld);
+  const QuarticPolynomial& f = leaf.f;
+  const Mat4d& objectToWorld = leaf.objectToWorld;
   // Values are converted to T once here; one that T cannot hold would be an
   // undefined conversion, so it is refused with the fix.
+  const char* hint = kIsIeee<T> ? "" : " (--arith fixed holds magnitudes below 2^31 = 2.1e9; use --arith double)";
   const double big = static_cast<double>(std::numeric_limits<T>::max());
   for (double c : f.a)
     if (!std::isfinite(c) || std::abs(c) > big)
       throw Error(ErrorKind::Input,
-                  "quartic has a coefficient that is not finite or too large for the renderer's number type: "
-                  "check the shape's size and scale");
+                  fmt::format("quartic has a coefficient that is not finite or too large for the renderer's number "
+                              "type: check the shape's size and scale{}",
+                              hint));
   Mat4d inverse = glm::inverse(objectToWorld);
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r)
       if (std::abs(objectToWorld[c][r]) > big || !(std::abs(inverse[c][r]) <= big))
         throw Error(ErrorKind::Input,
-                    "quartic transform is singular, not finite, or too large for the renderer's number type: "
-                    "check the scene's scales and translations");
-  return std::make_unique<QuarticLeaf<T>>(f, objectBounds, objectToWorld, material);
+                    fmt::format("quartic transform is singular, not finite, or too large for the renderer's number "
+                                "type: check the scene's scales and translations{}",
+                                hint));
+  return std::make_unique<QuarticLeaf<T>>(f, leaf.bounds, objectToWorld, material);
 }
 
 template PrimitivePtr<float> makeQuarticLeaf<float>(const QuarticPolynomial&, const Bounds<double>&, const Mat4d&,
                                                     MaterialId);
 template PrimitivePtr<double> makeQuarticLeaf<double>(const QuarticPolynomial&, const Bounds<double>&, const Mat4d&,
                                                       MaterialId);
+template PrimitivePtr<Fixed32> makeQuarticLeaf<Fixed32>(const QuarticPolynomial&, const Bounds<double>&, const Mat4d&,
+                                                        MaterialId);
 
 }  // namespace lattice

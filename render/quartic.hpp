@@ -5,7 +5,7 @@
 //
 // Scene set-up builds polynomials in double; a leaf converts them once to the
 // ray tracer's scalar T, so nothing on the per-ray path uses double when
-// T = float.
+// T = float or Fixed32.
 #include <array>
 
 #include "render/primitive.hpp"
@@ -67,5 +67,7 @@ extern template PrimitivePtr<float> makeQuarticLeaf<float>(const QuarticPolynomi
                                                            const Mat4d&, MaterialId);
 extern template PrimitivePtr<double> makeQuarticLeaf<double>(const QuarticPolynomial&, const Bounds<double>&,
                                                              const Mat4d&, MaterialId);
+extern template PrimitivePtr<Fixed32> makeQuarticLeaf<Fixed32>(const QuarticPolynomial&, const Bounds<double>&,
+                                                               const Mat4d&, MaterialId);
 
 }  // namespace lattice

@@ -132,8 +132,7 @@ void Renderer<T>::renderBand(int y0) {
     Color18* dst = band_.data() + static_cast<std::size_t>(y - y0) * static_cast<std::size_t>(width_);
     for (int x = 0; x < width_; ++x) {
       const Vec3<T>& c = linear[static_cast<std::size_t>(x)];
-      dst[x] = packColor18(quantize6(static_cast<double>(c.r)), quantize6(static_cast<double>(c.g)),
-                           quantize6(static_cast<double>(c.b)));
+      dst[x] = packColor18(quantizeLevel(c.r, 63), quantizeLevel(c.g, 63), quantizeLevel(c.b, 63));
     }
   });
   bandStart_ = y0;
@@ -160,7 +159,7 @@ RgbImage renderImage(Renderer<T>& renderer, Progress* progress) {
     for (int x = 0; x < renderer.width(); ++x) {
       std::uint8_t* p = image.pixel(x, y);
       for (int c = 0; c < 3; ++c)
-        p[c] = static_cast<std::uint8_t>(quantize8(static_cast<double>(linear[static_cast<std::size_t>(x)][c])));
+        p[c] = static_cast<std::uint8_t>(quantizeLevel(linear[static_cast<std::size_t>(x)][c], 255));
     }
     if (progress) progress->advance();
   });
@@ -169,7 +168,9 @@ RgbImage renderImage(Renderer<T>& renderer, Progress* progress) {
 
 template class Renderer<float>;
 template class Renderer<double>;
+template class Renderer<Fixed32>;
 template RgbImage renderImage<float>(Renderer<float>&, Progress*);
 template RgbImage renderImage<double>(Renderer<double>&, Progress*);
+template RgbImage renderImage<Fixed32>(Renderer<Fixed32>&, Progress*);
 
 }  // namespace lattice

@@ -44,6 +44,18 @@ inline unsigned quantize8(double v) {
   const double c = v < 0 ? 0 : (v > 1 ? 1 : v);
   return static_cast<unsigned>(c * 255.0 + 0.5);
 }
+// The same for the renderer's scalar: fixed point rounds in integers (no
+// double per pixel), the IEEE types go through the double versions above.
+template <typename T>
+unsigned quantizeLevel(T v, unsigned levels) {
+  if constexpr (kIsIeee<T>) {
+    return levels == 63 ? quantize6(static_cast<double>(v)) : quantize8(static_cast<double>(v));
+  } else {
+    const T c = v < T(0) ? T(0) : (v > T(1) ? T(1) : v);
+    const auto one = typename T::Raw(1) << T::kFractionBits;
+    return static_cast<unsigned>((c.raw() * static_cast<typename T::Raw>(levels) + one / 2) >> T::kFractionBits);
+  }
+}
 
 template <typename T>
 class Renderer final : public RowSource18 {
@@ -95,6 +107,7 @@ class Renderer final : public RowSource18 {
 
 extern template class Renderer<float>;
 extern template class Renderer<double>;
+extern template class Renderer<Fixed32>;
 
 // Renders every row into an 8-bit image (each channel round(v * 255) of the
 // full-precision value, not of the 18-bit one) on the renderer's threads,
@@ -104,5 +117,6 @@ RgbImage renderImage(Renderer<T>& renderer, Progress* progress = nullptr);
 
 extern template RgbImage renderImage<float>(Renderer<float>&, Progress*);
 extern template RgbImage renderImage<double>(Renderer<double>&, Progress*);
+extern template RgbImage renderImage<Fixed32>(Renderer<Fixed32>&, Progress*);
 
 }  // namespace lattice

@@ -33,6 +33,7 @@
 
 #include <fmt/format.h>
 
+#include "render/roots_fixed.hpp"
 #include "util/error.hpp"
 
 namespace lattice::roots_detail {
@@ -759,7 +760,10 @@ int solvePolynomial(std::span<const T> coeffs, T roots[4]) {
                             coeffs.size() - 1));
   }
   if (coeffs.size() < 2) return 0;  // nothing, or a constant: no roots
-  return solveAny(coeffs.data(), static_cast<int>(coeffs.size()), roots, true);
+  if constexpr (std::is_floating_point_v<T>)
+    return solveAny(coeffs.data(), static_cast<int>(coeffs.size()), roots, true);
+  else  // fixed point: its own method (render/roots_fixed.cpp)
+    return fixed_roots::solve(coeffs.data(), static_cast<int>(coeffs.size()), roots);
 }
 
 template <typename T>
@@ -785,9 +789,13 @@ int solveQuartic(const T c[5], T roots[4]) {
 
 template <typename T>
 T evaluatePolynomial(std::span<const T> coeffs, T x) {
-  T s = 0;
-  for (auto it = coeffs.rbegin(); it != coeffs.rend(); ++it) s = s * x + *it;
-  return s;
+  if constexpr (!std::is_floating_point_v<T>) {
+    return fixed_roots::evaluate(coeffs, x);
+  } else {
+    T s = 0;
+    for (auto it = coeffs.rbegin(); it != coeffs.rend(); ++it) s = s * x + *it;
+    return s;
+  }
 }
 
 template int solveQuadratic<float>(const float[3], float[2]);
@@ -800,5 +808,10 @@ template int solvePolynomial<float>(std::span<const float>, float[4]);
 template int solvePolynomial<double>(std::span<const double>, double[4]);
 template float evaluatePolynomial<float>(std::span<const float>, float);
 template double evaluatePolynomial<double>(std::span<const double>, double);
+template int solveQuadratic<Fixed32>(const Fixed32[3], Fixed32[2]);
+template int solveCubic<Fixed32>(const Fixed32[4], Fixed32[3]);
+template int solveQuartic<Fixed32>(const Fixed32[5], Fixed32[4]);
+template int solvePolynomial<Fixed32>(std::span<const Fixed32>, Fixed32[4]);
+template Fixed32 evaluatePolynomial<Fixed32>(std::span<const Fixed32>, Fixed32);
 
 }  // namespace lattice

@@ -5,7 +5,8 @@
 // De Michele (ACM TOMS 1010), Newton polishing, and a bracketing fallback
 // when coefficients span too many orders of magnitude.
 //
-// Contract (every function, T = float or double; fixed point comes later):
+// Contract (every function, T = float, double or Fixed32; fixed point has its
+// own method, render/roots_fixed.hpp):
 // - coefficients are given lowest power first: c[0] + c[1] x + ... + c[n] x^n;
 //   leading (highest) coefficients that are zero lower the degree.
 // - returns the number of real roots written to `roots`, ascending. A root of
@@ -15,6 +16,8 @@
 // - a polynomial that is identically zero, or a non-zero constant, has no
 //   roots (returns 0). NaN or infinite coefficients give 0 roots.
 #include <span>
+
+#include "render/fixed.hpp"
 
 namespace lattice {
 

@@ -68,5 +68,7 @@ PrimitivePtr<T> buildPrimitive(const NodeDesc& node, const Mat4d& parentToWorld,
 
 template PrimitivePtr<float> buildPrimitive<float>(const NodeDesc&, const Mat4d&, const BuildOptions&, MaterialId);
 template PrimitivePtr<double> buildPrimitive<double>(const NodeDesc&, const Mat4d&, const BuildOptions&, MaterialId);
+template PrimitivePtr<Fixed32> buildPrimitive<Fixed32>(const NodeDesc&, const Mat4d&, const BuildOptions&,
+                                                       MaterialId);
 
 }  // namespace lattice

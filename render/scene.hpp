@@ -43,6 +43,8 @@ class LeafDesc {
                                     float tag) const = 0;
   virtual PrimitivePtr<double> build(const Mat4d& objectToWorld, MaterialId material, const BuildOptions& options,
                                      double tag) const = 0;
+  virtual PrimitivePtr<Fixed32> build(const Mat4d& objectToWorld, MaterialId material, const BuildOptions& options,
+                                      Fixed32 tag) const = 0;
   // The solid's box in its own (object) coordinates; may be infinite.
   virtual Bounds<double> objectBounds() const = 0;
   // A short human-readable name for messages ("sphere", "lattice 'hair'").
@@ -106,5 +108,7 @@ extern template PrimitivePtr<float> buildPrimitive<float>(const NodeDesc&, const
                                                           MaterialId);
 extern template PrimitivePtr<double> buildPrimitive<double>(const NodeDesc&, const Mat4d&, const BuildOptions&,
                                                             MaterialId);
+extern template PrimitivePtr<Fixed32> buildPrimitive<Fixed32>(const NodeDesc&, const Mat4d&, const BuildOptions&,
+                                                              MaterialId);
 
 }  // namespace lattice

@@ -42,10 +42,17 @@ struct LightingModel {
 // coordinates' magnitude, more for float whose roots are rougher, so that a
 // surface does not shadow itself through rounding ("shadow acne") in scenes
 // of any scale.
+//
+// Fixed point: roots are found to about 2^-32 absolute in t, but the
+// polynomial's coefficients are rounded to 2^-32 as well, which moves a
+// surface by up to ~1e-5 of the object's size where it is seen at a grazing
+// angle; the offset must exceed that.
 template <typename T>
 T surfaceOffset(const Vec3<T>& point) {
-  const T scale = std::max({T(1), std::abs(point.x), std::abs(point.y), std::abs(point.z)});
-  if constexpr (sizeof(T) <= 4)
+  const T scale = std::max({T(1), absolute(point.x), absolute(point.y), absolute(point.z)});
+  if constexpr (!kIsIeee<T>)
+    return fixedConstant<T::kFractionBits>(1e-4) * scale;
+  else if constexpr (sizeof(T) <= 4)
     return T(5e-4) * scale;
   else
     return T(1e-6) * scale;
@@ -69,30 +76,30 @@ template <typename T, typename IsVisible>
 Vec3<T> shade(const LightingModel<T>& model, const Vec3<T>& point, const Vec3<T>& normal, const Vec3<T>& toObserver,
               MaterialId materialId, IsVisible&& isVisible) {
   const Material<T>& m = model.materials[materialId < model.materials.size() ? materialId : 0];
-  const Vec3<T> s = glm::normalize(toObserver);
+  const Vec3<T> s = lattice::normalize(toObserver);
   Vec3<T> n = normal;
-  if (glm::dot(n, s) < T(0)) n = -n;
+  if (lattice::dot(n, s) < T(0)) n = -n;
 
   Vec3<T> intensity = m.ambient * model.ambient;
   for (std::size_t i = 0; i < model.lights.size(); ++i) {
     const PointLight<T>& light = model.lights[i];
     const Vec3<T> toLight = light.position - point;
-    const T distance = glm::length(toLight);
+    const T distance = lattice::length(toLight);
     if (!(distance > T(0))) continue;
     const Vec3<T> l = toLight / distance;
-    const T nl = glm::dot(n, l);
+    const T nl = lattice::dot(n, l);
     if (nl <= T(0)) continue;  // the light is behind the surface
     if (!isVisible(i, n)) continue;
     const Vec3<T> r = T(2) * nl * n - l;
-    const T rs = glm::dot(r, s);
+    const T rs = lattice::dot(r, s);
     Vec3<T> specular(T(0));
     if (rs > T(0))
-      for (int c = 0; c < 3; ++c) specular[c] = m.specular[c] * std::pow(rs, m.shininess[c]);
+      for (int c = 0; c < 3; ++c) specular[c] = m.specular[c] * power(rs, m.shininess[c]);
     const T denominator = distance + model.attenuationK;
     if (!(denominator > T(0))) continue;  // K < -D: the fudge factor makes no sense here
     intensity += light.intensity / denominator * (m.diffuse * nl + specular);
   }
-  return glm::clamp(intensity, Vec3<T>(T(0)), Vec3<T>(T(1)));
+  return clamp01(intensity);
 }
 
 }  // namespace lattice

@@ -1,0 +1,102 @@
+#pragma once
+// Comparing a Fixed32 render with the double render of the same scene: the
+// measure docs/fixed-point.md quotes (PSNR over all channels, and the share
+// of channels more than 4 levels of 255 apart).
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "io/png.hpp"
+
+namespace lattice::testing {
+
+struct FixedVsDouble {
+  double psnr = 0.0;           // dB; +inf when identical
+  double farFraction = 0.0;    // channels with |difference| > 4
+  int maxDelta = 0;
+};
+
+inline FixedVsDouble compareRenders(const RgbImage& fixedImage, const RgbImage& doubleImage) {
+  FixedVsDouble out;
+  double squared = 0.0;
+  long far = 0;
+  for (std::size_t i = 0; i < fixedImage.rgb.size(); ++i) {
+    const int d = std::abs(int(fixedImage.rgb[i]) - int(doubleImage.rgb[i]));
+    squared += double(d) * d;
+    if (d > 4) ++far;
+    if (d > out.maxDelta) out.maxDelta = d;
+  }
+  const double n = double(fixedImage.rgb.size());
+  out.psnr = squared == 0.0 ? INFINITY : 10.0 * std::log10(255.0 * 255.0 / (squared / n));
+  out.farFraction = double(far) / n;
+  return out;
+}
+
+// Every function of a static library instantiated for Fixed32 (or in the
+// fixed-point root solver), and those among them that hold an SSE/x87
+// floating-point instruction or call a libm function, from objdump's
+// disassembly. Empty sets if objdump is missing (callers require that the
+// per-pixel functions were seen, so that cannot pass silently).
+struct FixedPointScan {
+  std::set<std::string> fixedFunctions;
+  std::set<std::string> withFloatingPoint;
+};
+
+inline bool isFloatingPointInstruction(const std::string& line) {
+  static const char* heads[] = {"\tcvt", "\tadd", "\tsub", "\tmul", "\tdiv", "\tsqrt", "\tmin",
+                                "\tmax", "\tucomi", "\tcomi", "\tround"};
+  for (const char* h : heads) {
+    const auto at = line.find(h);
+    if (at == std::string::npos) continue;
+    const auto end = line.find_first_of(" \t\n", at + 1);
+    const std::string mnemonic = line.substr(at + 1, end == std::string::npos ? std::string::npos : end - at - 1);
+    for (const char* suffix : {"sd", "ss", "pd", "ps"})
+      if (mnemonic.size() > 2 && mnemonic.compare(mnemonic.size() - 2, 2, suffix) == 0) return true;
+  }
+  for (const char* x87 : {"\tfld", "\tfst", "\tfmul", "\tfadd", "\tfdiv", "\tfsub"})
+    if (line.find(x87) != std::string::npos) return true;
+  if (line.find("call") != std::string::npos)
+    for (const char* libm : {"<pow", "<sqrt", "<exp", "<log", "<round", "<floor", "<ceil", "<ldexp", "<fma",
+                             "<nextafter", "<ilogb"})
+      if (line.find(libm) != std::string::npos) return true;
+  return false;
+}
+
+inline FixedPointScan scanFixedPointCode(const std::string& library) {
+  FixedPointScan scan;
+  const std::string command = "objdump -d -C --no-show-raw-insn '" + library + "' 2>/dev/null";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return scan;
+  std::string current;
+  bool inFixed = false;
+  char buffer[8192];
+  while (std::fgets(buffer, sizeof buffer, pipe)) {
+    const std::string line(buffer);
+    if (line.size() > 3 && line.compare(line.size() - 3, 3, ">:\n") == 0) {
+      current = line.substr(line.find('<') + 1);
+      inFixed = current.find("Fixed<32>") != std::string::npos || current.find("fixed_roots::") != std::string::npos;
+      if (inFixed) scan.fixedFunctions.insert(current);
+      continue;
+    }
+    if (inFixed && isFloatingPointInstruction(line)) scan.withFloatingPoint.insert(current);
+  }
+  ::pclose(pipe);
+  return scan;
+}
+
+// Scene set-up, which converts the double scene description once, may use
+// floating point: constructors and builders.
+inline bool isSetUpFunction(const std::string& name) {
+  static const std::vector<std::string> setUp = {"::Camera(", "::Renderer(", "::build(", "::Bvh(",
+                                                 "makeQuarticLeaf<", "makeCapsule<", "paddedBox<",
+                                                 "buildPrimitive<", "::QuarticLeaf(", "makeCsgNode<",
+                                                 "::LatticeLeaf(", "makePolyline<", "makeLatticeLeaf<"};
+  for (const std::string& s : setUp)
+    if (name.find(s) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace lattice::testing
