@@ -17,6 +17,7 @@
 #include "pipeline/run_pipeline.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_loader.hpp"
+#include "tests/support/example_scene.hpp"
 #include "tests/support/golden.hpp"
 
 using namespace lattice;
@@ -45,23 +46,10 @@ std::string stemOf(const SceneCase& c) {
   return fmt::format("apollo_sim/scenes/{}_{}x{}_{}{}", name, c.width, c.height, c.profile, ditherName(c.dither));
 }
 
-Renderer<double> makeRenderer(const SceneDesc& scene, int width, int height) {
-  RenderSettings settings;
-  settings.width = width;
-  settings.height = height;
-  settings.threads = 2;
-  return Renderer<double>(scene, settings);
-}
-
-SceneDesc loadExample(const char* name) {
-  lht::registerLatticeSceneTypes();  // before loadScene: hook.toml holds a lattice leaf
-  return loadScene(testing::sourcePath(std::string("scenes/") + name));
-}
-
 void runSceneCase(const SceneCase& c) {
   INFO("scene " << c.scene << " " << c.width << "x" << c.height << " on " << c.profile);
-  const SceneDesc scene = loadExample(c.scene);
-  Renderer<double> renderer = makeRenderer(scene, c.width, c.height);
+  const SceneDesc scene = testing::loadExampleScene(c.scene);
+  Renderer<double> renderer = testing::makeTestRenderer(scene, c.width, c.height);
   const ApolloProfile profile = apolloProfileByName(c.profile);
 
   PipelineOptions options;
@@ -126,7 +114,7 @@ TEST_CASE("scene goldens: 16 colours on a 4-plane DN660, dithered") {
 TEST_CASE("scene goldens: passes and frame mode draw the same screen") {
   // A real rendered scene, dithered so every pixel's error feeds the next:
   // any difference in the rows the two modes map would show.
-  const SceneDesc scene = loadExample("torus-floor.toml");
+  const SceneDesc scene = testing::loadExampleScene("torus-floor.toml");
   for (const char* name : {"dn660", "dn660-4"}) {
     INFO("profile " << name);
     const ApolloProfile profile = apolloProfileByName(name);
@@ -137,8 +125,8 @@ TEST_CASE("scene goldens: passes and frame mode draw the same screen") {
     PipelineOptions frame = passes;
     frame.mode = PipelineMode::Frame;
 
-    Renderer<double> r1 = makeRenderer(scene, 96, 72);
-    Renderer<double> r2 = makeRenderer(scene, 96, 72);
+    Renderer<double> r1 = testing::makeTestRenderer(scene, 96, 72);
+    Renderer<double> r2 = testing::makeTestRenderer(scene, 96, 72);
     const ApolloScreen a = renderToApollo(r1, profile, passes);
     const ApolloScreen b = renderToApollo(r2, profile, frame);
     // Passes renders every row twice (histogram, then mapping); frame once.

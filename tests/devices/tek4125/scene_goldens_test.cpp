@@ -22,6 +22,7 @@
 #include "pipeline/run_pipeline.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_loader.hpp"
+#include "tests/support/example_scene.hpp"
 #include "tests/support/golden.hpp"
 
 using namespace lattice;
@@ -57,13 +58,8 @@ void feedChunked(StreamDecoder& decoder, const std::vector<std::uint8_t>& bytes)
 
 void runSceneCase(const SceneCase& c) {
   INFO("scene " << c.scene << " " << c.width << "x" << c.height << " planes " << c.planes);
-  lht::registerLatticeSceneTypes();  // before loadScene: hook.toml holds a lattice leaf
-  const SceneDesc scene = loadScene(testing::sourcePath(std::string("scenes/") + c.scene));
-  RenderSettings settings;
-  settings.width = c.width;
-  settings.height = c.height;
-  settings.threads = 2;
-  Renderer<double> renderer(scene, settings);
+  const SceneDesc scene = testing::loadExampleScene(c.scene);
+  Renderer<double> renderer = testing::makeTestRenderer(scene, c.width, c.height);
 
   const std::vector<std::string> overrides{fmt::format("planes={}", c.planes)};
   const app::StreamDevice device = app::streamDevice("tek4125", overrides);
