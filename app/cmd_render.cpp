@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "app/command_registry.hpp"
+#include "app/memory_plan.hpp"
 #include "app/pipeline_args.hpp"
 #include "app/serial_options.hpp"
 #include "app/stream_devices.hpp"
@@ -32,6 +33,7 @@
 #include "render/scene_loader.hpp"
 #include "util/error.hpp"
 #include "util/progress.hpp"
+#include "util/resident_memory.hpp"
 
 namespace {
 
@@ -51,6 +53,7 @@ struct RenderCommandOptions {
   bool noLatticeShadows = false;
   std::string apolloProfile = "dn660";
   std::vector<std::string> settings;  // device profile key=value overrides
+  std::string memoryBudget;            // --memory-budget, as typed
   lattice::app::PipelineArgs pipeline;
   lattice::SerialOptions serial;
 };
@@ -87,6 +90,9 @@ void defineRenderOptions(CLI::App& cmd, RenderCommandOptions& o) {
                "Full ray trace: replace every lattice by its exact CSG object (the thesis's reference column)");
   cmd.add_flag("--no-lattice-shadows", o.noLatticeShadows,
                "Lattices cast no shadows, as particles would not (thesis plate 3; plate 4 is the default)");
+  cmd.add_option("--memory-budget", o.memoryBudget,
+                 "Keep peak resident memory within SIZE (e.g. 8MiB, 8192K, 8388608): chooses the quantizer's mode "
+                 "to fit, or exits 8 saying why it cannot (docs/memory.md)");
   lattice::app::addPipelineOptions(&cmd, o.pipeline);
   lattice::app::addSerialOptions(&cmd, o.serial, /*portRequired=*/false);
 }
@@ -125,6 +131,7 @@ void checkOutputs(const RenderCommandOptions& o, const CLI::App& cmd) {
       throw Error(ErrorKind::Usage, "give either --stream or --port, not both (record a stream with --stream, then "
                                     "`lattice send` it)");
   }
+  if (!o.memoryBudget.empty()) lattice::parseByteCount(o.memoryBudget, "--memory-budget");  // a typo fails now
   if (!o.output.empty()) requireDirectoryFor(o.output, "-o");
   if (!o.stream.empty() && o.stream != "-") requireDirectoryFor(o.stream, "--stream");
 }
@@ -209,10 +216,56 @@ void renderStream(lattice::Renderer<T>& renderer, const RenderCommandOptions& o,
   }
 }
 
+// What --memory-budget plans with: the resident memory now that the scene
+// is built, the picture, and the images the output device will hold.
+template <typename T>
+lattice::app::MemoryPlanRequest budgetRequest(std::uint64_t budget, const lattice::Renderer<T>& renderer,
+                                              const RenderCommandOptions& o, const CLI::App& cmd, bool streamDevice,
+                                              bool apollo, int deviceWidth, int deviceHeight,
+                                              const lattice::PipelineOptions& pipeline) {
+  const auto resident = lattice::residentMemory();
+  if (!resident)
+    throw Error(ErrorKind::Budget, "--memory-budget needs /proc/self/status to measure resident memory, and this "
+                                   "system has none; render without the budget");
+  lattice::app::MemoryPlanRequest request;
+  request.budget = budget;
+  request.resident = resident->current;
+  request.peakSoFar = resident->peak;
+  request.width = renderer.width();
+  request.height = renderer.height();
+  request.pipeline = pipeline;
+  request.modeChosenByUser = cmd.count("--mode") > 0 || cmd.count("--sample") > 0;
+  request.quantized = streamDevice || apollo;
+  const auto pixels = [](int w, int h) { return static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h); };
+  if (!request.quantized)
+    request.deviceItems.push_back({"truecolour picture", 3 * pixels(request.width, request.height)});
+  if (apollo)  // a byte a pixel of bitmap, then the screen as RGB for the PNG
+    request.deviceItems.push_back({"Apollo bitmap and picture", 4 * pixels(deviceWidth, deviceHeight)});
+  if (streamDevice && o.device == "tek4027")  // the driver keeps the frame to pick its stream order
+    request.deviceItems.push_back({"Tek 4027 frame", pixels(request.width, request.height)});
+  if (streamDevice && !o.output.empty())
+    request.deviceItems.push_back({"emulator screen", 3 * pixels(deviceWidth, deviceHeight)});
+  return request;
+}
+
+// The plan is an estimate: say so, loudly, when the measured peak broke it.
+void checkPeakAgainst(std::uint64_t budget) {
+  const auto resident = lattice::residentMemory();
+  if (!resident) return;
+  fmt::print(stderr, "lattice render: peak resident memory {} of the {} budget\n", lattice::formatBytes(resident->peak),
+             lattice::formatBytes(budget));
+  if (resident->peak > budget)
+    throw Error(ErrorKind::Budget,
+                fmt::format("the render finished and its outputs are written, but its resident memory peaked at {}, "
+                            "over the --memory-budget of {}: the plan's estimate was short (please report it with "
+                            "the scene)",
+                            lattice::formatBytes(resident->peak), lattice::formatBytes(budget)));
+}
+
 template <typename T>
 void renderWith(const lattice::SceneDesc& scene, const RenderCommandOptions& o, const CLI::App& cmd) {
   const auto start = std::chrono::steady_clock::now();
-  const lattice::PipelineOptions pipeline = lattice::app::toPipelineOptions(o.pipeline, cmd);
+  lattice::PipelineOptions pipeline = lattice::app::toPipelineOptions(o.pipeline, cmd);
   const bool toPort = cmd.count("--port") > 0;
   std::optional<lattice::app::StreamDevice> device;
   int deviceWidth = 0, deviceHeight = 0;
@@ -227,6 +280,15 @@ void renderWith(const lattice::SceneDesc& scene, const RenderCommandOptions& o, 
     deviceHeight = apollo->height;
   }
   lattice::Renderer<T> renderer(scene, renderSettings(o, scene, deviceWidth, deviceHeight));
+  std::optional<std::uint64_t> budget;
+  if (!o.memoryBudget.empty()) {
+    budget = lattice::parseByteCount(o.memoryBudget, "--memory-budget");
+    const lattice::app::MemoryPlan plan =
+        lattice::app::planMemory(budgetRequest(*budget, renderer, o, cmd, device.has_value(), apollo.has_value(),
+                                               deviceWidth, deviceHeight, pipeline));
+    pipeline.mode = plan.mode;
+    fmt::print(stderr, "lattice render: memory plan: {}\n", plan.summary());
+  }
 
   if (device) {
     RenderCommandOptions adjusted = o;
@@ -242,6 +304,7 @@ void renderWith(const lattice::SceneDesc& scene, const RenderCommandOptions& o, 
   fmt::print(stderr, "lattice render: {}: {}x{}, {:.2f} s, {} rays ({} arithmetic, {} threads){}\n", o.scene,
              renderer.width(), renderer.height(), seconds, renderer.raysTraced(), o.arith, renderer.threads(),
              o.output.empty() ? "" : fmt::format(", picture {}", o.output));
+  if (budget) checkPeakAgainst(*budget);
 }
 
 void runRender(const RenderCommandOptions& o, const CLI::App& cmd) {

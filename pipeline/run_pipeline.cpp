@@ -45,13 +45,21 @@ const char* pipelineModeName(PipelineMode mode) {
   return "?";
 }
 
+PipelineReport pipelineBuffers(int width, int height, const PipelineOptions& options) {
+  const auto w = static_cast<std::size_t>(std::max(width, 0));
+  PipelineReport report;
+  report.histogramBytes = Histogram::kBytes;
+  report.rowBytes = w * (sizeof(Color18) + sizeof(PaletteIndex));
+  if (options.mode == PipelineMode::Frame) report.frameBytes = w * static_cast<std::size_t>(std::max(height, 0)) * sizeof(Color18);
+  if (options.quantize.dither == Dither::FloydSteinberg) report.errorRowBytes = RowMapper::errorRowBytes(width);
+  return report;
+}
+
 PipelineReport runPipeline(RowSource18& source, IndexedSink& sink, const PipelineOptions& options) {
   checkOptions(source, sink, options);
   const int width = source.width(), height = source.height();
   const auto w = static_cast<std::size_t>(width);
-  PipelineReport report;
-  report.histogramBytes = Histogram::kBytes;
-  report.rowBytes = w * (sizeof(Color18) + sizeof(PaletteIndex));
+  PipelineReport report = pipelineBuffers(width, height, options);
 
   std::vector<Color18> row(w);
   std::vector<Color18> frame;  // Frame mode only
@@ -62,10 +70,7 @@ PipelineReport runPipeline(RowSource18& source, IndexedSink& sink, const Pipelin
                                static_cast<std::uint64_t>(rowStep);
     Progress progress("histogram", histogramRows, "rows");
     if (!options.progress) progress.setEnabled(false);
-    if (options.mode == PipelineMode::Frame) {
-      frame.resize(w * static_cast<std::size_t>(height));
-      report.frameBytes = frame.size() * sizeof(Color18);
-    }
+    if (options.mode == PipelineMode::Frame) frame.resize(w * static_cast<std::size_t>(height));
     for (long y = 0; y < height; y += rowStep) {  // long: y + a huge --sample must not overflow
       std::span<Color18> out = options.mode == PipelineMode::Frame
                                    ? std::span<Color18>(frame).subspan(static_cast<std::size_t>(y) * w, w)
@@ -90,7 +95,6 @@ PipelineReport runPipeline(RowSource18& source, IndexedSink& sink, const Pipelin
 
   InverseColorMap map(info.palette, histogram.releaseStorage());
   RowMapper mapper(map, width, options.quantize.dither);
-  if (options.quantize.dither == Dither::FloydSteinberg) report.errorRowBytes = RowMapper::errorRowBytes(width);
   std::vector<PaletteIndex> indices(w);
 
   sink.begin(info);

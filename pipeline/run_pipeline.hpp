@@ -49,6 +49,10 @@ struct PipelineReport {
 // lattice::Error(Input) for an empty source, Error(Usage) for bad options.
 PipelineReport runPipeline(RowSource18& source, IndexedSink& sink, const PipelineOptions& options);
 
+// The buffers runPipeline will hold for a width x height picture (the byte
+// fields of its report, before it runs): what --memory-budget plans with.
+PipelineReport pipelineBuffers(int width, int height, const PipelineOptions& options);
+
 const char* pipelineModeName(PipelineMode mode);
 
 }  // namespace lattice

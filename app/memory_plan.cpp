@@ -1,0 +1,99 @@
+#include "app/memory_plan.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "util/error.hpp"
+#include "util/resident_memory.hpp"
+
+namespace lattice::app {
+
+namespace {
+
+// Advice that only helps a dynamically linked build (cmake/LatticeDependencies.cmake).
+#ifdef LATTICE_STATIC_BUILD
+constexpr const char* kBuildAdvice = "";
+#else
+constexpr const char* kBuildAdvice =
+    ", or use the static build (-DLATTICE_STATIC=ON), whose code is about 2 MiB smaller resident";
+#endif
+
+std::uint64_t total(const std::vector<MemoryItem>& items) {
+  std::uint64_t sum = 0;
+  for (const MemoryItem& item : items) sum += item.bytes;
+  return sum;
+}
+
+std::string listItems(const std::vector<MemoryItem>& items) {
+  std::string out;
+  for (const MemoryItem& item : items) {
+    if (item.bytes == 0) continue;
+    out += fmt::format("{}{} {}", out.empty() ? "" : " + ", formatBytes(item.bytes), item.what);
+  }
+  return out;
+}
+
+MemoryPlan costOf(const MemoryPlanRequest& request, PipelineMode mode) {
+  MemoryPlan plan;
+  plan.mode = mode;
+  plan.items.push_back({"resident after building the scene", request.resident});
+  if (request.quantized) {
+    PipelineOptions options = request.pipeline;
+    options.mode = mode;
+    const PipelineReport buffers = pipelineBuffers(request.width, request.height, options);
+    plan.items.push_back({"histogram", buffers.histogramBytes});
+    plan.items.push_back({"rows", buffers.rowBytes + buffers.errorRowBytes});
+    plan.items.push_back({"frame buffer", buffers.frameBytes});
+  }
+  for (const MemoryItem& item : request.deviceItems) plan.items.push_back(item);
+  plan.items.push_back({"code and buffers not yet touched", kUntouchedAllowance});
+  // The scene's build may already have peaked higher (a rasterizer's
+  // temporaries): the high-water mark cannot come down.
+  plan.predictedPeak = std::max(total(plan.items), request.peakSoFar);
+  return plan;
+}
+
+}  // namespace
+
+std::string MemoryPlan::summary() const {
+  return fmt::format("{} mode, predicted peak {} ({})", pipelineModeName(mode), formatBytes(predictedPeak),
+                     listItems(items));
+}
+
+MemoryPlan planMemory(const MemoryPlanRequest& request) {
+  const std::string budget = formatBytes(request.budget);
+  if (request.peakSoFar > request.budget)
+    throw Error(ErrorKind::Budget,
+                fmt::format("--memory-budget {}: building the scene alone peaked at {} resident ({} now); no "
+                            "output mode can undo that. Raise the budget, rasterize lattices beforehand and name "
+                            "the .lht in the scene's `cache =` key{} (docs/memory.md)",
+                            budget, formatBytes(request.peakSoFar), formatBytes(request.resident), kBuildAdvice));
+  std::vector<PipelineMode> candidates;
+  if (!request.quantized || request.modeChosenByUser)
+    candidates = {request.pipeline.mode};
+  else
+    candidates = {PipelineMode::Frame, PipelineMode::TwoPass};  // fastest first
+  std::vector<MemoryPlan> tried;
+  for (PipelineMode mode : candidates) {
+    MemoryPlan plan = costOf(request, mode);
+    if (plan.predictedPeak <= request.budget) return plan;
+    tried.push_back(std::move(plan));
+  }
+  const MemoryPlan& smallest = *std::min_element(
+      tried.begin(), tried.end(), [](const MemoryPlan& a, const MemoryPlan& b) { return a.predictedPeak < b.predictedPeak; });
+  std::string advice;
+  if (request.modeChosenByUser && request.pipeline.mode != PipelineMode::TwoPass) {
+    MemoryPlanRequest twoPass = request;
+    twoPass.pipeline.mode = PipelineMode::TwoPass;
+    const MemoryPlan other = costOf(twoPass, PipelineMode::TwoPass);
+    if (other.predictedPeak <= request.budget) advice = " --mode passes would fit; drop --mode or choose it.";
+  }
+  if (advice.empty())
+    advice = fmt::format(" It needs at least {}: raise the budget or render a smaller picture{} (docs/memory.md).",
+                         formatBytes(smallest.predictedPeak), kBuildAdvice);
+  throw Error(ErrorKind::Budget, fmt::format("--memory-budget {} cannot be met: {}.{}", budget, smallest.summary(),
+                                             advice));
+}
+
+}  // namespace lattice::app

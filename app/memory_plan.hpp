@@ -1,0 +1,54 @@
+#pragma once
+// --memory-budget (docs/memory.md): choosing how a render holds its data so
+// that the process's peak resident memory stays within a budget, or saying
+// why no choice can.
+//
+// The plan is made once the scene is built, from what the process measures
+// resident then (code faulted in so far, the scene, its lattice tables and
+// BVH) plus what the rest of the render will add: the quantizer's buffers for
+// each pipeline mode (pipelineBuffers), the device's own images, and an
+// allowance for code and transport buffers not yet touched.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "pipeline/run_pipeline.hpp"
+
+namespace lattice::app {
+
+// Code of the quantizer, driver and PNG writer that is not resident yet when
+// the plan is made, the 64 KiB stream-file buffer and allocator slack.
+// Measured 100-270 KiB over the example scenes in the dynamic and static
+// builds (docs/memory.md); 384 KiB leaves a margin.
+inline constexpr std::uint64_t kUntouchedAllowance = 384 * 1024;
+
+struct MemoryItem {
+  std::string what;
+  std::uint64_t bytes = 0;
+};
+
+struct MemoryPlanRequest {
+  std::uint64_t budget = 0;
+  std::uint64_t resident = 0;          // measured when planning
+  std::uint64_t peakSoFar = 0;         // the high-water mark when planning
+  int width = 0, height = 0;
+  bool quantized = true;               // false: --device png, no pipeline
+  PipelineOptions pipeline;            // dither, the user's mode
+  bool modeChosenByUser = false;       // --mode given: check it, do not change it
+  std::vector<MemoryItem> deviceItems; // images the output device will hold
+};
+
+struct MemoryPlan {
+  PipelineMode mode = PipelineMode::TwoPass;
+  std::uint64_t predictedPeak = 0;
+  std::vector<MemoryItem> items;  // what predictedPeak adds up
+  std::string summary() const;    // one line for the log
+};
+
+// The fastest arrangement that fits: the frame mode (one render) before the
+// two-pass mode (two renders, no frame buffer); the sample mode only when the
+// user asked for it (it changes the palette). lattice::Error(Budget) when
+// nothing fits, naming what takes the memory and what to change.
+MemoryPlan planMemory(const MemoryPlanRequest& request);
+
+}  // namespace lattice::app

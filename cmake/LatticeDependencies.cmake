@@ -1,0 +1,40 @@
+# How the third-party libraries are linked, decided in one place: every target
+# links lattice_fmt, lattice_toml and lattice_png rather than the packages'
+# own targets, so LATTICE_STATIC switches them all at once.
+#
+# LATTICE_STATIC builds a fully static `lattice`, the "firmware" form of the
+# renderer (docs/memory.md): a dynamically linked C++ program maps libstdc++,
+# libc and libm whole and the dynamic loader touches their relocation pages,
+# about 5 MiB resident before main() runs, while a static executable carries
+# only the code it calls. Debian ships no static libfmt or libtoml++, so both
+# are used in their header-only forms (each library supports that officially);
+# libpng and zlib come from their -dev packages' .a files; libusb is left out
+# (its libudev has no static library), so `send --wait` is unavailable there.
+option(LATTICE_STATIC "Link lattice statically (low-memory 'firmware' build; no libusb)" OFF)
+
+find_package(fmt REQUIRED)
+find_package(tomlplusplus REQUIRED)
+
+add_library(lattice_fmt INTERFACE)
+add_library(lattice_toml INTERFACE)
+add_library(lattice_png INTERFACE)
+
+if(LATTICE_STATIC)
+  set(LATTICE_WITH_LIBUSB OFF CACHE BOOL "" FORCE)
+  target_link_libraries(lattice_fmt INTERFACE fmt::fmt-header-only)
+  # The package's own target forces the shared library (TOML_HEADER_ONLY=0);
+  # the headers alone, with the implementation inlined, need only the path.
+  get_target_property(_toml_includes tomlplusplus::tomlplusplus INTERFACE_INCLUDE_DIRECTORIES)
+  target_include_directories(lattice_toml SYSTEM INTERFACE ${_toml_includes})
+  target_compile_definitions(lattice_toml INTERFACE TOML_HEADER_ONLY=1)
+  find_library(LATTICE_PNG_STATIC NAMES libpng16.a libpng.a REQUIRED)
+  find_library(LATTICE_Z_STATIC NAMES libz.a REQUIRED)
+  find_path(LATTICE_PNG_INCLUDE png.h REQUIRED)
+  target_include_directories(lattice_png SYSTEM INTERFACE ${LATTICE_PNG_INCLUDE})
+  target_link_libraries(lattice_png INTERFACE ${LATTICE_PNG_STATIC} ${LATTICE_Z_STATIC} m)
+else()
+  find_package(PNG REQUIRED)
+  target_link_libraries(lattice_fmt INTERFACE fmt::fmt)
+  target_link_libraries(lattice_toml INTERFACE tomlplusplus::tomlplusplus)
+  target_link_libraries(lattice_png INTERFACE PNG::PNG)
+endif()

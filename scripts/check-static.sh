@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# The static "firmware" build (-DLATTICE_STATIC=ON, docs/memory.md) must work
+# and draw exactly what the ordinary build draws. Builds `lattice` statically
+# in build-static/, checks it has no shared-library dependencies, and compares
+# its Tek 4125 stream and --memory-budget run against build/app/lattice.
+#   scripts/check-static.sh        (after scripts/build.sh)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+dynamic=build/app/lattice
+[[ -x $dynamic ]] || { echo "check-static.sh: $dynamic is missing; run scripts/build.sh first" >&2; exit 2; }
+cmake -S . -B build-static -DCMAKE_BUILD_TYPE=Release -DLATTICE_WERROR=ON -DLATTICE_STATIC=ON \
+  -DLATTICE_BUILD_TESTS=OFF -DLATTICE_BUILD_BENCH=OFF >/dev/null
+cmake --build build-static -j "$(nproc)" --target lattice
+static=build-static/app/lattice
+if ldd "$static" >/dev/null 2>&1; then
+  echo "check-static.sh: $static is dynamically linked:" >&2
+  ldd "$static" >&2
+  exit 1
+fi
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+args=(render "$root/scenes/hook.toml" --device tek4125 --width 256 --height 256 --quiet)
+"$dynamic" "${args[@]}" --stream "$work/dynamic.tek" 2>/dev/null
+"$static" "${args[@]}" --stream "$work/static.tek" --memory-budget 8MiB 2>"$work/log" ||
+  { cat "$work/log" >&2; echo "check-static.sh: the static build failed within 8 MiB" >&2; exit 1; }
+cmp "$work/dynamic.tek" "$work/static.tek" ||
+  { echo "check-static.sh: the static and dynamic builds wrote different streams" >&2; exit 1; }
+echo "check-static.sh: static lattice OK ($(grep -o 'peak resident memory .*' "$work/log"); stream identical)"

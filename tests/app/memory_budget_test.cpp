@@ -1,0 +1,86 @@
+// `lattice render --memory-budget` end to end: the real binary plans, renders
+// and then checks its own measured peak (VmHWM) against the budget, exiting 8
+// if it broke it, so a zero exit here is a measured fit, not a prediction.
+#include <catch2/catch.hpp>
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <string>
+#include <unistd.h>
+
+#include "tests/support/run_lattice.hpp"
+
+namespace {
+
+using lattice::testing::runLattice;
+
+std::filesystem::path scratch() {
+  auto dir = std::filesystem::temp_directory_path() / fmt::format("lattice-budget-test-{}", ::getpid());
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+std::string readAll(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// "predicted peak 7.31 MiB" -> bytes
+double predictedPeak(const std::string& log) {
+  std::smatch m;
+  REQUIRE(std::regex_search(log, m, std::regex(R"(predicted peak ([0-9.]+) MiB)")));
+  return std::stod(m[1]) * 1024.0 * 1024.0;
+}
+
+const std::string kRender = fmt::format(
+    "render '{}/scenes/hook.toml' --device tek4125 --width 256 --height 256 --threads 1 --quiet", LATTICE_SOURCE_DIR);
+
+}  // namespace
+
+TEST_CASE("app:memory_budget_picks_a_mode_and_the_peak_fits") {
+  const auto dir = scratch();
+  const auto roomy = runLattice(fmt::format("{} --stream '{}' --memory-budget 1G", kRender, (dir / "a.tek").string()));
+  INFO(roomy.stderrText);
+  REQUIRE(roomy.exitCode == 0);
+  CHECK_THAT(roomy.stderrText, Catch::Contains("memory plan: frame mode"));
+  // Half the 256 KiB frame buffer less than the frame plan: only the two
+  // passes fit, and the binary's own check of its peak must pass.
+  const auto budget = static_cast<long long>(predictedPeak(roomy.stderrText)) - 128 * 1024;
+  const auto tight = runLattice(fmt::format("{} --stream '{}' --memory-budget {}", kRender,
+                                            (dir / "b.tek").string(), budget));
+  INFO(tight.stderrText);
+  REQUIRE(tight.exitCode == 0);
+  CHECK_THAT(tight.stderrText, Catch::Contains("memory plan: passes mode"));
+  CHECK(readAll(dir / "a.tek") == readAll(dir / "b.tek"));  // the modes draw the same picture
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("app:memory_budget_too_small_exits_8_and_writes_nothing") {
+  const auto dir = scratch();
+  const auto run = runLattice(fmt::format("{} --stream '{}' --memory-budget 1M", kRender, (dir / "c.tek").string()));
+  CHECK(run.exitCode == 8);
+  CHECK_THAT(run.stderrText, Catch::Contains("--memory-budget 1.00 MiB") && Catch::Contains("peaked at"));
+  CHECK_FALSE(std::filesystem::exists(dir / "c.tek"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("app:memory_budget_rejects_a_bad_size_before_rendering") {
+  const auto run = runLattice(fmt::format("{} --stream /dev/null --memory-budget 8XB", kRender));
+  CHECK(run.exitCode == 2);
+  CHECK_THAT(run.stderrText, Catch::Contains("--memory-budget 8XB") && Catch::Contains("8MiB"));
+}
+
+TEST_CASE("app:memory_budget_counts_the_truecolour_picture") {
+  const auto dir = scratch();
+  const auto run = runLattice(fmt::format("render '{}/scenes/hook.toml' --width 128 --height 128 --threads 1 -o '{}' "
+                                          "--memory-budget 1G",
+                                          LATTICE_SOURCE_DIR, (dir / "t.png").string()));
+  INFO(run.stderrText);
+  CHECK(run.exitCode == 0);
+  CHECK_THAT(run.stderrText, Catch::Contains("48.0 KiB truecolour picture") && !Catch::Contains("histogram"));
+  CHECK(std::filesystem::exists(dir / "t.png"));
+  std::filesystem::remove_all(dir);
+}

@@ -1,0 +1,105 @@
+// The --memory-budget planner: which pipeline mode it picks for a budget, and
+// what it says when nothing fits (app/memory_plan.hpp).
+#include <catch2/catch.hpp>
+
+#include "app/memory_plan.hpp"
+#include "util/error.hpp"
+
+using lattice::PipelineMode;
+using lattice::app::kUntouchedAllowance;
+using lattice::app::MemoryPlanRequest;
+using lattice::app::planMemory;
+
+namespace {
+
+constexpr std::uint64_t MiB = 1024 * 1024;
+
+MemoryPlanRequest request512(std::uint64_t budget) {
+  MemoryPlanRequest r;
+  r.budget = budget;
+  r.resident = 5 * MiB;
+  r.peakSoFar = 5 * MiB;
+  r.width = 512;
+  r.height = 512;
+  return r;
+}
+
+// What each mode adds at 512x512 without dithering: the 1 MiB histogram, a
+// Color18 row and an index row (5 B a pixel), and a 4 B/pixel frame.
+constexpr std::uint64_t kPasses = 5 * MiB + MiB + 512 * 5 + kUntouchedAllowance;
+constexpr std::uint64_t kFrame = kPasses + 512 * 512 * 4;
+
+std::string budgetError(const MemoryPlanRequest& r) {
+  try {
+    planMemory(r);
+  } catch (const lattice::Error& e) {
+    CHECK(e.kind() == lattice::ErrorKind::Budget);
+    return e.what();
+  }
+  FAIL("the plan fitted");
+  return {};
+}
+
+}  // namespace
+
+TEST_CASE("app:memory_plan_prefers_the_frame_when_it_fits") {
+  const auto plan = planMemory(request512(kFrame));
+  CHECK(plan.mode == PipelineMode::Frame);
+  CHECK(plan.predictedPeak == kFrame);
+  CHECK_THAT(plan.summary(), Catch::Contains("frame mode") && Catch::Contains("1.00 MiB frame buffer"));
+}
+
+TEST_CASE("app:memory_plan_falls_back_to_two_passes") {
+  const auto plan = planMemory(request512(kFrame - 1));
+  CHECK(plan.mode == PipelineMode::TwoPass);
+  CHECK(plan.predictedPeak == kPasses);
+  CHECK(planMemory(request512(kPasses)).mode == PipelineMode::TwoPass);
+}
+
+TEST_CASE("app:memory_plan_refuses_when_nothing_fits") {
+  const std::string message = budgetError(request512(kPasses - 1));
+  CHECK_THAT(message, Catch::Contains("cannot be met") && Catch::Contains("passes mode") &&
+                          Catch::Contains("needs at least"));
+}
+
+TEST_CASE("app:memory_plan_counts_what_the_device_holds") {
+  auto r = request512(kFrame);
+  r.deviceItems.push_back({"emulator screen", 640 * 480 * 3});
+  const auto plan = planMemory(r);
+  CHECK(plan.mode == PipelineMode::TwoPass);  // the screen pushes the frame out
+  CHECK(plan.predictedPeak == kPasses + 640 * 480 * 3);
+  CHECK_THAT(plan.summary(), Catch::Contains("emulator screen"));
+}
+
+TEST_CASE("app:memory_plan_keeps_the_users_mode") {
+  auto r = request512(kFrame - 1);
+  r.modeChosenByUser = true;
+  r.pipeline.mode = PipelineMode::Frame;
+  CHECK_THAT(budgetError(r), Catch::Contains("--mode passes would fit"));
+  r.pipeline.mode = PipelineMode::Sample;
+  CHECK(planMemory(r).mode == PipelineMode::Sample);
+}
+
+TEST_CASE("app:memory_plan_counts_floyd_steinberg_rows") {
+  auto r = request512(kPasses);
+  r.pipeline.quantize.dither = lattice::Dither::FloydSteinberg;
+  CHECK_THAT(budgetError(r), Catch::Contains("passes mode"));  // the error rows no longer fit
+  r.budget = kPasses + (512 + 2) * 3 * sizeof(int);
+  CHECK(planMemory(r).mode == PipelineMode::TwoPass);
+}
+
+TEST_CASE("app:memory_plan_cannot_undo_a_peak_already_reached") {
+  auto r = request512(64 * MiB);
+  r.peakSoFar = 65 * MiB;  // e.g. a lattice rasterized in the process
+  CHECK_THAT(budgetError(r), Catch::Contains("building the scene alone peaked at 65.00 MiB") &&
+                                 Catch::Contains("cache ="));
+}
+
+TEST_CASE("app:memory_plan_for_truecolour_has_no_quantizer") {
+  auto r = request512(5 * MiB + 3 * 512 * 512 + kUntouchedAllowance);
+  r.quantized = false;
+  r.deviceItems.push_back({"truecolour picture", 3 * 512 * 512});
+  const auto plan = planMemory(r);
+  CHECK(plan.predictedPeak == r.budget);
+  CHECK_THAT(plan.summary(), !Catch::Contains("histogram"));
+}
