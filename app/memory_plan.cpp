@@ -54,11 +54,25 @@ MemoryPlan costOf(const MemoryPlanRequest& request, PipelineMode mode) {
   return plan;
 }
 
+std::vector<PipelineMode> candidateModes(const MemoryPlanRequest& request) {
+  if (!request.quantized || request.modeChosenByUser) return {request.pipeline.mode};
+  return {PipelineMode::Frame, PipelineMode::TwoPass};  // fastest first
+}
+
 }  // namespace
 
 std::string MemoryPlan::summary() const {
   return fmt::format("{} mode, predicted peak {} ({})", pipelineModeName(mode), formatBytes(predictedPeak),
                      listItems(items));
+}
+
+std::uint64_t leastOutputBytes(const MemoryPlanRequest& request) {
+  MemoryPlanRequest outputOnly = request;
+  outputOnly.resident = 0;
+  outputOnly.peakSoFar = 0;
+  std::uint64_t least = UINT64_MAX;
+  for (PipelineMode mode : candidateModes(request)) least = std::min(least, costOf(outputOnly, mode).predictedPeak);
+  return least;
 }
 
 MemoryPlan planMemory(const MemoryPlanRequest& request) {
@@ -69,13 +83,8 @@ MemoryPlan planMemory(const MemoryPlanRequest& request) {
                             "output mode can undo that. Raise the budget, rasterize lattices beforehand and name "
                             "the .lht in the scene's `cache =` key{} (docs/memory.md)",
                             budget, formatBytes(request.peakSoFar), formatBytes(request.resident), kBuildAdvice));
-  std::vector<PipelineMode> candidates;
-  if (!request.quantized || request.modeChosenByUser)
-    candidates = {request.pipeline.mode};
-  else
-    candidates = {PipelineMode::Frame, PipelineMode::TwoPass};  // fastest first
   std::vector<MemoryPlan> tried;
-  for (PipelineMode mode : candidates) {
+  for (PipelineMode mode : candidateModes(request)) {
     MemoryPlan plan = costOf(request, mode);
     if (plan.predictedPeak <= request.budget) return plan;
     tried.push_back(std::move(plan));

@@ -51,4 +51,9 @@ struct MemoryPlan {
 // nothing fits, naming what takes the memory and what to change.
 MemoryPlan planMemory(const MemoryPlanRequest& request);
 
+// What the output side will add at the least (the least-memory mode the
+// request allows, the device's images, the allowance), whatever is resident:
+// the room a lattice table must leave when it is packed before the plan.
+std::uint64_t leastOutputBytes(const MemoryPlanRequest& request);
+
 }  // namespace lattice::app
