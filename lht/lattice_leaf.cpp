@@ -4,11 +4,15 @@
 
 #include <cmath>
 
+#include "render/transform_condition.hpp"
 #include "util/error.hpp"
 
 namespace lattice::lht {
 
 namespace {
+
+// The smallest world size of a lattice cell --arith fixed follows.
+constexpr double kSmallestFixedPointCell = 1e-6;
 
 template <typename T>
 class LatticeLeaf final : public Primitive<T> {
@@ -16,9 +20,24 @@ class LatticeLeaf final : public Primitive<T> {
   LatticeLeaf(std::shared_ptr<const LhtFile> lht, const Mat4d& objectToWorld, MaterialId material, bool castsShadows)
       : lht_(std::move(lht)), material_(material), castsShadows_(castsShadows) {
     const Mat4d latticeToWorld = objectToWorld * lht_->box.latticeToObject();
-    const double det = glm::determinant(Mat3<double>(latticeToWorld));
-    if (!(std::abs(det) > 1e-300) || !std::isfinite(det))
-      throw Error(ErrorKind::Input, "a lattice's transform is singular; check its scale");
+    const std::string problem = conditionProblemFor<T>(latticeToWorld);
+    if (!problem.empty()) throw Error(ErrorKind::Input, "lattice: " + problem);
+    if constexpr (!kIsIeee<T>) {
+      // A ray's box entry and exit are t = (face - origin) / direction in
+      // lattice units, and a direction of 1 / (world size of a cell) leaves
+      // 1 / direction few Q31.32 bits; normals, multiplied by entries of
+      // 1 / cell, saturate. Measured on a sphere lattice: cells of 2.5e-7
+      // world units still meet the lattice's own 1.5-cell bound, cells of
+      // 2.5e-8 do not (and their normals are 0.65 off unit length), 2.5e-9
+      // give garbage. So cells below 1e-6 are refused (docs/stability.md).
+      const double cell = singularValueRange(latticeToWorld).smallest;
+      if (!(cell >= kSmallestFixedPointCell))
+        throw Error(ErrorKind::Input,
+                    fmt::format("lattice: a cell of this lattice is {:.3g} world units across, below the 1e-6 that "
+                                "--arith fixed resolves (its resolution is 2^-32 = 2.3e-10); use --arith double, "
+                                "or scale the whole scene up",
+                                cell));
+    }
     const Mat4d worldToLattice = glm::inverse(latticeToWorld);
     worldToLattice_ = Mat4<T>(worldToLattice);
     // Normals go back with the inverse transpose of lattice -> world.

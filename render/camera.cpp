@@ -39,6 +39,10 @@ void validateCamera(const CameraDesc& camera, const std::string& where) {
     fail("look_at camera: fov (vertical, degrees) must be between 0 and 180, exclusive");
 }
 
+double viewingDistance(const CameraDesc& camera) {
+  return camera.kind == CameraDesc::Kind::Thesis ? camera.distance : glm::length(camera.target - camera.eye);
+}
+
 template <typename T>
 Camera<T>::Camera(const CameraDesc& desc, int width, int height) {
   if (width < 1 || height < 1)

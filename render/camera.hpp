@@ -42,6 +42,11 @@ struct CameraDesc {
 // throws lattice::Error(Input) naming `where` (e.g. "scene.toml: [camera]").
 void validateCamera(const CameraDesc& camera, const std::string& where);
 
+// How far the camera is from what it looks at: |target - eye| for look_at,
+// the display distance D for the thesis camera. A length scale of the scene
+// (the renderer sizes shadow-ray offsets with it).
+double viewingDistance(const CameraDesc& camera);
+
 template <typename T>
 class Camera {
  public:

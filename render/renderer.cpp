@@ -75,7 +75,8 @@ Renderer<T>::Renderer(const SceneDesc& scene, const RenderSettings& settings)
       camera_(scene.camera, width_, height_),
       root_(buildPrimitive<T>(scene.root, Mat4d(1.0), settings.build, 0)),
       background_(Vec3<T>(glm::clamp(scene.options.background, Vec3d(0.0), Vec3d(1.0)))),
-      shadows_(scene.options.shadows) {
+      shadows_(scene.options.shadows),
+      offsetScale_(static_cast<T>(std::min(1.0, viewingDistance(scene.camera)))) {
   lighting_.ambient = Vec3<T>(scene.options.ambient);
   lighting_.attenuationK = static_cast<T>(scene.options.attenuationK);
   for (const auto& light : scene.lights) lighting_.lights.push_back(light.template cast<T>());
@@ -95,7 +96,7 @@ Vec3<T> Renderer<T>::trace(const Ray<T>& ray, std::uint64_t& rays) const {
   return shade(lighting_, point, hit.normal, toObserver, hit.material, [&](std::size_t i, const Vec3<T>& facing) {
     if (!shadows_) return true;
     ++rays;
-    return !inShadow(*root_, point, facing, lighting_.lights[i].position);
+    return !inShadow(*root_, point, facing, lighting_.lights[i].position, offsetScale_);
   });
 }
 

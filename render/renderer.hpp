@@ -96,6 +96,9 @@ class Renderer final : public RowSource18 {
   LightingModel<T> lighting_;
   Vec3<T> background_{};
   bool shadows_ = true;
+  // The smallest length shadow-ray offsets are measured against
+  // (surfaceOffset): min(1, the camera's viewing distance).
+  T offsetScale_{1};
   mutable std::atomic<std::uint64_t> rays_{0};
 
   // The band cache of row().

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "render/csg.hpp"
+#include "render/transform_condition.hpp"
 #include "util/error.hpp"
 
 namespace lattice {
@@ -48,7 +49,21 @@ PrimitivePtr<T> buildPrimitive(const NodeDesc& node, const Mat4d& parentToWorld,
   const std::string where = node.origin.empty() ? std::string("scene") : node.origin;
   if (node.kind == NodeDesc::Kind::Leaf) {
     if (!node.leaf) throw Error(ErrorKind::Internal, fmt::format("{}: leaf node without a leaf description", where));
-    PrimitivePtr<T> p = node.leaf->build(toWorld, material, options, T{});
+    // Scene files are held to the limit of every arithmetic when loaded; an
+    // arithmetic that follows less (float) refuses here, naming the object.
+    const std::string problem = conditionProblemFor<T>(toWorld);
+    if (!problem.empty()) throw Error(ErrorKind::Input, fmt::format("{}: {}", where, problem));
+    PrimitivePtr<T> p;
+    try {
+      p = node.leaf->build(toWorld, material, options, T{});
+    } catch (const Error& e) {
+      // Leaves report what is wrong but not where; name the object, unless
+      // the message already names a place in the scene file.
+      const std::string message = e.what();
+      const std::string file = where.substr(0, where.find(':'));
+      if (message.rfind(file + ":", 0) == 0) throw;
+      throw Error(e.kind(), fmt::format("{}: {}", where, message));
+    }
     if (!p) throw Error(ErrorKind::Internal, fmt::format("{}: {} built no primitive", where, node.leaf->describe()));
     return p;
   }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "render/node_types.hpp"
+#include "render/transform_condition.hpp"
 #include "util/error.hpp"
 
 namespace lattice {
@@ -49,6 +50,38 @@ std::string joinKeys(std::initializer_list<std::string_view> keys, bool withComm
   if (withCommon)
     for (auto k : kCommonNodeKeys) all.emplace_back(k);
   return all.empty() ? std::string("(none)") : fmt::format("{}", fmt::join(all, ", "));
+}
+
+// Degenerate transforms collapse the solid (a zero scale) or make the
+// inverse (world -> object, used by every ray) lose the digits rays need
+// (render/transform_condition.hpp). A uniformly tiny or huge but well-shaped
+// transform is fine within 1e-9..1e9 per axis.
+std::string transformProblem(const Mat4d& m) {
+  const std::string conditioning = conditionProblem(m, kMaxTransformCondition);
+  if (!conditioning.empty()) return conditioning;
+  for (int c = 0; c < 3; ++c) {
+    const double length = glm::length(Vec3d(m[c]));
+    if (!(length >= 1e-9 && length <= 1e9))
+      return fmt::format("the transform scales the {} axis by {:.3g}, outside 1e-9..1e9; change the shape's own "
+                         "size instead (e.g. its radius) so that scale factors stay in that range",
+                         "xyz"[c], length);
+  }
+  return {};
+}
+
+// Transforms are checked one node at a time as they are read; their products
+// down the tree (a squashed union holding a squashed child) are checked here,
+// at every leaf, naming the leaf.
+void checkComposedTransforms(const NodeDesc& node, const Mat4d& parentToWorld) {
+  const Mat4d toWorld = parentToWorld * node.transform;
+  if (node.kind == NodeDesc::Kind::Leaf) {
+    const std::string problem = transformProblem(toWorld);
+    if (!problem.empty())
+      throw Error(ErrorKind::Input, fmt::format("{}: with the transforms of the objects around it, {}", node.origin,
+                                                problem));
+    return;
+  }
+  for (const NodeDesc& child : node.children) checkComposedTransforms(child, toWorld);
 }
 
 Mat4d rotation(const Vec3d& axis, double degrees) {
@@ -271,20 +304,8 @@ Mat4d ParseContext::transform(const toml::table& table) const {
     m = t * r * s;
   }
   if (where) {
-    // Degenerate transforms collapse the solid (a zero scale) or make the
-    // inverse (world -> object, used by every ray) meaningless. Measure the
-    // determinant relative to the column lengths so a uniformly tiny or huge
-    // but well-shaped scale is fine, and bound the scale itself.
-    const Vec3d c0(m[0]), c1(m[1]), c2(m[2]);
-    const double l0 = glm::length(c0), l1 = glm::length(c1), l2 = glm::length(c2);
-    const double det = glm::dot(c0, glm::cross(c1, c2));
-    const double lengths = l0 * l1 * l2;
-    const bool bad = !(lengths > 0) || !std::isfinite(det) || std::abs(det) < 1e-9 * lengths ||
-                     std::min({l0, l1, l2}) < 1e-9 || std::max({l0, l1, l2}) > 1e9;
-    if (bad)
-      fail(*where, fmt::format("the transform is singular or nearly singular (determinant {:.3g}); every scale "
-                               "factor must be non-zero and a matrix's columns independent",
-                               det));
+    const std::string problem = transformProblem(m);
+    if (!problem.empty()) fail(*where, problem);
   }
   return m;
 }
@@ -464,6 +485,7 @@ SceneDesc parseTable(const toml::table& root, const std::filesystem::path& file)
   for (const toml::node& o : *list) top.push_back(ctx.parseNode(o));
   scene.root = top.size() == 1 ? std::move(top.front())
                                : NodeDesc::makeOperation(NodeDesc::Kind::Union, std::move(top), file.string());
+  checkComposedTransforms(scene.root, Mat4d(1.0));
   return scene;
 }
 

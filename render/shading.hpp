@@ -47,9 +47,16 @@ struct LightingModel {
 // polynomial's coefficients are rounded to 2^-32 as well, which moves a
 // surface by up to ~1e-5 of the object's size where it is seen at a grazing
 // angle; the offset must exceed that.
+//
+// sceneScale is the smallest length the offset is measured against (1 for
+// scenes of unit size and larger). The renderer passes min(1, the camera's
+// viewing distance), so a scene a thousandth of a unit across gets offsets a
+// thousandth as large: with a fixed floor of 1, a sphere of radius 1e-3 had
+// its shadow rays start half a radius off the surface in float (measured
+// 20 dB against the unit scene, 28 dB in fixed point, 38 dB in double at 1e-4).
 template <typename T>
-T surfaceOffset(const Vec3<T>& point) {
-  const T scale = std::max({T(1), absolute(point.x), absolute(point.y), absolute(point.z)});
+T surfaceOffset(const Vec3<T>& point, T sceneScale = T(1)) {
+  const T scale = std::max({sceneScale, absolute(point.x), absolute(point.y), absolute(point.z)});
   if constexpr (!kIsIeee<T>)
     return fixedConstant<T::kFractionBits>(1e-4) * scale;
   else if constexpr (sizeof(T) <= 4)
@@ -60,10 +67,11 @@ T surfaceOffset(const Vec3<T>& point) {
 
 // Is the light at lightPosition hidden from `point` (normal facing the side
 // the light is on) by any surface of `scene`? The shadow ray starts at the
-// point lifted along the normal and stops at the light.
+// point lifted along the normal (surfaceOffset) and stops at the light.
 template <typename T>
-bool inShadow(const Primitive<T>& scene, const Vec3<T>& point, const Vec3<T>& normal, const Vec3<T>& lightPosition) {
-  const Vec3<T> origin = point + normal * surfaceOffset(point);
+bool inShadow(const Primitive<T>& scene, const Vec3<T>& point, const Vec3<T>& normal, const Vec3<T>& lightPosition,
+              T sceneScale = T(1)) {
+  const Vec3<T> origin = point + normal * surfaceOffset(point, sceneScale);
   const Ray<T> ray{origin, lightPosition - origin};  // t = 1 at the light
   return scene.anyHit(ray, T(0), T(1));
 }

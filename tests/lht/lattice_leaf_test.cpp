@@ -11,24 +11,13 @@
 #include "render/csg.hpp"
 #include "render/csg_shapes.hpp"
 #include "render/shapes.hpp"
+#include "tests/lht/raster_support.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;
+using lattice::testing::rasterizeObject;
 
 namespace {
-
-std::shared_ptr<const LhtFile> rasterizeObject(const LatticeObject& object, double lambda, double oversample) {
-  auto lht = std::make_shared<LhtFile>();
-  lht->box = LatticeBox(object.bounds, lambda, oversample);
-  RasterOptions options;
-  options.progress = false;
-  const RasterResult raster = rasterize(lht->box, *object.primitive, options);
-  lht->objectHash = object.hash();
-  lht->pairs = raster.stats.pairs;
-  lht->hits = raster.stats.hits;
-  lht->table = LatticeHashTable(raster.hits);
-  return lht;
-}
 
 struct Agreement {
   int rays = 0, bothHit = 0, disagree = 0;
