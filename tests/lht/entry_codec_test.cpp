@@ -53,7 +53,7 @@ std::vector<Vec3d> foldDirections() {
 
 }  // namespace
 
-TEST_CASE("LHT precision: names, codes and entry sizes") {
+TEST_CASE("LHT precision: names and codes and entry sizes") {
   CHECK(entryBytes(LhtPrecision::Thesis) == 14);
   CHECK(entryBytes(LhtPrecision::Wide) == 16);
   CHECK(entryBytes(LhtPrecision::Compact) == 13);
@@ -79,7 +79,7 @@ TEST_CASE("LHT precision: names, codes and entry sizes") {
   }
 }
 
-TEST_CASE("LHT precision: s round trips within half a step, exactly at 0, 1/2 and 1") {
+TEST_CASE("LHT precision: s round trips within half a step and is exact at 0 and 1") {
   for (const LhtPrecisionInfo& form : kLhtPrecisions) {
     INFO(form.name);
     const Vec3d up(0, 0, 1);
@@ -99,7 +99,7 @@ TEST_CASE("LHT precision: s round trips within half a step, exactly at 0, 1/2 an
   }
 }
 
-TEST_CASE("LHT precision: normals along the axes are exact, the diagonals within the bound") {
+TEST_CASE("LHT precision: normals along the axes are exact and the diagonals within the bound") {
   for (const LhtPrecisionInfo& form : kLhtPrecisions) {
     INFO(form.name);
     for (int a = 0; a < 3; ++a)

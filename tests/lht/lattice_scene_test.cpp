@@ -267,7 +267,7 @@ TEST_CASE("lattice scene: the cache file is written, reused, and refused when th
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("lattice scene: `precision` picks the entry form; the thesis's keeps the old object hash") {
+TEST_CASE("lattice scene: the precision key picks the entry form and the thesis's keeps the old object hash") {
   const auto definition = [](const std::string& keys) {
     const auto defs = parseLatticeDefinitions(fuzzyScene(5, keys), "p.toml");
     REQUIRE(defs.size() == 1);
@@ -287,7 +287,7 @@ TEST_CASE("lattice scene: `precision` picks the entry form; the thesis's keeps t
   }
 }
 
-TEST_CASE("lattice scene: a cache of another precision is refused, not silently used") {
+TEST_CASE("lattice scene: a cache of another precision is refused and not silently used") {
   registerLatticeSceneTypes();
   const auto dir = std::filesystem::temp_directory_path() / ("lattice-lht-precision-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);

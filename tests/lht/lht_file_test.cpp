@@ -59,7 +59,7 @@ TEST_CASE("lht file: FNV-1a 64 matches the published test vectors") {
   CHECK(fnv1a64("foobar") == 0x85944171f73967e8ull);
 }
 
-TEST_CASE("lht file: write, read back, identical table and header, for every precision") {
+TEST_CASE("lht file: every precision writes and reads back the identical table and header") {
   for (const LhtPrecisionInfo& form : kLhtPrecisions) {
     INFO(form.name);
     const LhtFile lht = makeSphereLht(form.precision);
@@ -89,7 +89,7 @@ TEST_CASE("lht file: write, read back, identical table and header, for every pre
   }
 }
 
-TEST_CASE("lht file: version-1 files are still read, as thesis entries") {
+TEST_CASE("lht file: version-1 files are still read as thesis entries") {
   const LhtFile lht = makeSphereLht();
   // A version-1 file is the version-2 thesis file with 1 in the version and 0 at byte 18.
   std::vector<std::uint8_t> v1 = serializeLht(lht);

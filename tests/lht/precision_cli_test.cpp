@@ -109,7 +109,7 @@ TEST_CASE("precision CLI: rasterize --scene takes the scene's precision unless -
   CHECK(readLhtFile(dir / "b.lht").table.precision() == LhtPrecision::Wide);
 }
 
-TEST_CASE("precision CLI: render --lht-precision overrides the scene, and its cache is not reused at another") {
+TEST_CASE("precision CLI: render --lht-precision overrides the scene and a cache of another precision is refused") {
   REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
   const TempDir dir;
   std::ofstream(dir / "s.toml") << ballScene();
@@ -132,7 +132,7 @@ TEST_CASE("precision CLI: render --lht-precision overrides the scene, and its ca
   CHECK_FALSE(std::filesystem::exists(dir / "x.png"));
 }
 
-TEST_CASE("precision CLI: a bad `precision` in a scene names file, line, column and the valid values") {
+TEST_CASE("precision CLI: a bad precision in a scene names the file and line and column and the valid values") {
   REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
   const TempDir dir;
   std::ofstream(dir / "s.toml") << ballScene("precision = \"double\"");

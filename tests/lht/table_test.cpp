@@ -48,7 +48,7 @@ TEST_CASE("LHT: the thesis entry is 14 bytes laid out as sec. 2.3 says") {
   CHECK(back.normal.y == Approx(-2.0 / 3).margin(1.0 / 127));
 }
 
-TEST_CASE("LHT: every entry is found and every absent key misses, for every precision") {
+TEST_CASE("LHT: every entry is found and every absent key misses at every precision") {
   for (const LhtPrecisionInfo& form : kLhtPrecisions)
   for (double load : {0.5, 1.0, 2.0, 4.0}) {
     INFO(form.name << ", load factor " << load);
@@ -76,7 +76,7 @@ TEST_CASE("LHT: every entry is found and every absent key misses, for every prec
   }
 }
 
-TEST_CASE("LHT: a table of a real lattice, its size and chains, for every precision") {
+TEST_CASE("LHT: a table of a real lattice at every precision: its size and chains") {
   const LatticeObject sphere = sphereObject(0.5);
   const LatticeBox box(sphere.bounds, 1.0, 2.0);
   RasterOptions options;
