@@ -13,7 +13,9 @@ void runLhtInfo(const std::string& path) {
   const auto& c = lht.box.cells();
   const auto& t = lht.table;
   fmt::print("file:          {}\n", path);
-  fmt::print("format:        version {}\n", kLhtVersion);
+  const LhtPrecisionInfo& precision = lhtPrecisionInfo(t.precision());
+  fmt::print("format:        version {}\n", lht.version);
+  fmt::print("precision:     {} ({}-byte entries: {})\n", precision.name, precision.entryBytes, precision.summary);
   fmt::print("lattice:       {} x {} x {} cells, lambda {:g}, f_lat {:g} (cell {:g})\n", c[0], c[1], c[2],
              lht.box.lambda(), lht.box.oversample(), lht.box.cellSize());
   fmt::print("origin:        ({:g}, {:g}, {:g}) in object coordinates\n", lht.box.origin().x, lht.box.origin().y,
@@ -25,7 +27,7 @@ void runLhtInfo(const std::string& path) {
   fmt::print("buckets:       {} primary + {} overflow slots\n", t.bucketCount(), t.overflowCount());
   fmt::print("load factor:   {:.3f} entries per bucket\n", t.loadFactor());
   fmt::print("table bytes:   {} ({:.2f} bytes/entry, {} bytes per slot)\n", t.bytes(), t.bytesPerEntry(),
-             sizeof(LhtEntry));
+             t.entryStride());
   const ChainStats chains = t.chainStats();
   fmt::print("chains:        {} buckets used, longest {}\n", chains.usedBuckets, chains.longestChain);
   for (std::size_t k = 0; k < chains.chainLengthHistogram.size(); ++k)
@@ -35,8 +37,8 @@ void runLhtInfo(const std::string& path) {
 void addLhtInfo(CLI::App& root) {
   auto* cmd = root.add_subcommand("lht-info",
                                   "Print the header and statistics of a .lht lattice hash table file: lattice size,\n"
-                                  "spacing, object hash, N_lp / N_iz, entries, load factor, bytes per entry and\n"
-                                  "overflow chain lengths. The file's checksum is verified.");
+                                  "spacing, object hash, N_lp / N_iz, entry precision, entries, load factor, bytes\n"
+                                  "per entry and overflow chain lengths. The file's checksum is verified.");
   auto path = std::make_shared<std::string>();
   cmd->add_option("file", *path, "The .lht file")->required();
   cmd->callback([=] { runLhtInfo(*path); });

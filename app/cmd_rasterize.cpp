@@ -21,18 +21,21 @@ struct RasterizeArgs {
   double radius = 0.5, length = 10.0, oversample = 1.0;
   bool stats = false;
   bool oversampleGiven = false;
+  std::string precision;  // empty: the scene's, or the thesis's for --shape
   unsigned threads = 0;
 };
 
 void printStats(const LhtFile& lht, const RasterStats& stats) {
-  fmt::print("pairs={} hits={} entries={} bytes={} build_ms={:.0f}\n", lht.pairs, lht.hits, lht.table.entryCount(),
-             lht.table.bytes(), stats.buildMs);
+  fmt::print("pairs={} hits={} entries={} bytes={} precision={} build_ms={:.0f}\n", lht.pairs, lht.hits,
+             lht.table.entryCount(), lht.table.bytes(), lhtPrecisionName(lht.table.precision()), stats.buildMs);
 }
 
 void runRasterize(const RasterizeArgs& args) {
   const bool fromScene = !args.scene.empty();
   if (fromScene == !args.shape.empty())
     throw Error(ErrorKind::Usage, "rasterize needs either --scene FILE --name NAME or --shape sphere|capsule");
+  std::optional<LhtPrecision> precision;
+  if (!args.precision.empty()) precision = parseLhtPrecision(args.precision, "--precision");
   LhtFile lht;
   RasterStats stats;
   if (fromScene) {
@@ -47,6 +50,7 @@ void runRasterize(const RasterizeArgs& args) {
     }
     LatticeDefinition& def = **it;
     if (args.oversampleGiven) def.oversample = args.oversample;  // --oversample overrides the scene
+    if (precision) def.precision = *precision;                    // and so does --precision
     lht = def.rasterizeNow(true, &stats, args.threads);
   } else {
     LatticeObject object;
@@ -64,7 +68,7 @@ void runRasterize(const RasterizeArgs& args) {
     lht.objectHash = object.hash();
     lht.pairs = stats.pairs;
     lht.hits = stats.hits;
-    lht.table = LatticeHashTable(raster.hits);
+    lht.table = LatticeHashTable(raster.hits, precision.value_or(LhtPrecision::Thesis));
   }
   writeLhtFile(args.output, lht);
   if (args.stats) printStats(lht, stats);
@@ -79,7 +83,8 @@ void addRasterize(CLI::App& root) {
       "units of the grid spacing lambda. Examples:\n"
       "  lattice rasterize --shape sphere --radius 0.5 --oversample 2 -o sphere.lht --stats\n"
       "  lattice rasterize --shape capsule --length 10 --radius 0.5 -o line.lht\n"
-      "  lattice rasterize --scene scenes/fuzzy-sphere-1000.toml --name hair -o hair.lht");
+      "  lattice rasterize --scene scenes/fuzzy-sphere-1000.toml --name hair -o hair.lht\n"
+      "  lattice rasterize --shape sphere --precision wide -o sphere-wide.lht");
   cmd->add_option("--scene", args->scene, "Scene file whose [[lattices]] entry to rasterize")->check(CLI::ExistingFile);
   cmd->add_option("--name", args->name, "Name of the [[lattices]] entry (with --scene)");
   cmd->add_option("--shape", args->shape, "sphere (centred) or capsule (axis along z from 0 to --length)");
@@ -88,7 +93,10 @@ void addRasterize(CLI::App& root) {
   auto* oversample = cmd->add_option("--oversample", args->oversample,
                                      "Lattice oversampling f_lat >= 1 (default 1, or the scene's)");
   cmd->add_option("-o,--output", args->output, "The .lht file to write (atomically)")->required();
-  cmd->add_flag("--stats", args->stats, "Print one line: pairs= hits= entries= bytes= build_ms=");
+  cmd->add_option("--precision", args->precision,
+                  fmt::format("LHT entry precision: {} (default: the scene's `precision`, else thesis)",
+                              lhtPrecisionChoices()));
+  cmd->add_flag("--stats", args->stats, "Print one line: pairs= hits= entries= bytes= precision= build_ms=");
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)");
   cmd->callback([args, oversample] {
     args->oversampleGiven = oversample->count() > 0;

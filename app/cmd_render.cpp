@@ -30,7 +30,6 @@
 #include "lht/lattice_scene.hpp"
 #include "pipeline/run_pipeline.hpp"
 #include "render/renderer.hpp"
-#include "render/scene_loader.hpp"
 #include "util/error.hpp"
 #include "util/progress.hpp"
 #include "util/resident_memory.hpp"
@@ -51,6 +50,7 @@ struct RenderCommandOptions {
   std::string arith = "double";
   bool full = false;
   bool noLatticeShadows = false;
+  std::string lhtPrecision;  // empty: each lattice's own `precision`
   std::string apolloProfile = "dn660";
   std::vector<std::string> settings;  // device profile key=value overrides
   std::string memoryBudget;            // --memory-budget, as typed
@@ -90,6 +90,10 @@ void defineRenderOptions(CLI::App& cmd, RenderCommandOptions& o) {
                "Full ray trace: replace every lattice by its exact CSG object (the thesis's reference column)");
   cmd.add_flag("--no-lattice-shadows", o.noLatticeShadows,
                "Lattices cast no shadows, as particles would not (thesis plate 3; plate 4 is the default)");
+  cmd.add_option("--lht-precision", o.lhtPrecision,
+                 fmt::format("LHT entry precision of every lattice, overriding the scene's `precision`: {} "
+                             "(docs/lattices.md, \"Entry precision\")",
+                             lattice::lht::lhtPrecisionChoices()));
   cmd.add_option("--memory-budget", o.memoryBudget,
                  "Keep peak resident memory within SIZE (e.g. 8MiB, 8192K, 8388608): chooses the quantizer's mode "
                  "to fit, or exits 8 saying why it cannot (docs/memory.md)");
@@ -309,8 +313,15 @@ void renderWith(const lattice::SceneDesc& scene, const RenderCommandOptions& o, 
 
 void runRender(const RenderCommandOptions& o, const CLI::App& cmd) {
   checkOutputs(o, cmd);
-  lattice::lht::registerLatticeSceneTypes();  // scenes may hold [[lattices]]
-  const lattice::SceneDesc scene = lattice::loadScene(o.scene);
+  // Before the scene: a bad flag should not wait for a parse.
+  std::optional<lattice::lht::LhtPrecision> precision;
+  if (!o.lhtPrecision.empty()) precision = lattice::lht::parseLhtPrecision(o.lhtPrecision, "--lht-precision");
+  // Scenes may hold [[lattices]]; their tables are built when the renderer
+  // is, so the override below is in time.
+  lattice::lht::SceneWithLattices loaded = lattice::lht::loadSceneWithLattices(o.scene);
+  if (precision)
+    for (const lattice::lht::LatticeDefinitionPtr& lattice : loaded.lattices) lattice->precision = *precision;
+  const lattice::SceneDesc& scene = loaded.scene;
   if (o.arith == "float")
     renderWith<float>(scene, o, cmd);
   else if (o.arith == "fixed")

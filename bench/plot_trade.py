@@ -20,6 +20,7 @@ GROUP_COLOURS = {
     "reference": "#000000",
     "arithmetic": "#d62728",
     "lattice": "#1f77b4",
+    "lht precision": "#17becf",
     "palette": "#2ca02c",
     "quantizer mode": "#9467bd",
 }

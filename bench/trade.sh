@@ -14,9 +14,10 @@
 # fixed` works), lattice oversampling f_lat 1..4 or the full ray trace,
 # palette size and dithering, and the quantizer's memory mode (these two
 # through the Tek 4125 driver and its emulator with the screen set to the
-# picture size, ray tracing in full so the error is the quantizer's). The LHT
-# entry precision is fixed by the thesis's 14-byte entry (8-bit s and
-# normals), so it is not a knob here.
+# picture size, ray tracing in full so the error is the quantizer's), and the
+# LHT entry precision (`lattice render --lht-precision`: the thesis's 14-byte
+# entry in the lattice rows, the wide 16-byte and compact 13-byte entries at
+# f_lat 1 and 2 in the "lht precision" rows; docs/lattices.md, "Entry precision").
 #
 # Timing is CPU time (user + system) with --threads 1: the machine may be
 # shared, and CPU time is what other processes disturb least. The lattice is
@@ -39,7 +40,7 @@ while [[ $# -gt 0 ]]; do
     --scenes) scenes=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --no-docs) docs=0; shift ;;
-    -h|--help) sed -n 2,24p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,25p "$0"; exit 0 ;;
     *) echo "trade.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -66,10 +67,12 @@ if "$lattice" render "$root/scenes/$(set -- $scenes; echo "$1").toml" --arith fi
   arithmetics="double float fixed"
 fi
 
-# A copy of the scene with oversample = f and the table cached next to it.
-variant() {  # scene f -> path
-  local scene=$1 f=$2 dst="$work/$1-f$2.toml"
-  sed -E "s/^oversample *= *[0-9.]+/oversample = $f\ncache = \"$1-f$2.lht\"/" "$root/scenes/$scene.toml" >"$dst"
+# A copy of the scene with oversample = f and the table cached next to it as
+# $work/<tag>.lht; tag is SCENE-fF, plus -PRECISION for a non-thesis entry
+# (a cache is only valid for the precision it was rasterized at).
+variant() {  # scene f tag -> path
+  local scene=$1 f=$2 tag=$3 dst="$work/$3.toml"
+  sed -E "s/^oversample *= *[0-9.]+/oversample = $f\ncache = \"$tag.lht\"/" "$root/scenes/$scene.toml" >"$dst"
   grep -q "^oversample = $f" "$dst" || { echo "trade.sh: scenes/$scene.toml has no 'oversample =' line" >&2; exit 3; }
   echo "$dst"
 }
@@ -97,11 +100,27 @@ tableBytes() {  # lht file -> bytes
   "$lattice" lht-info "$1" | awk '/^table bytes:/ { print $3 }'
 }
 
+# One lattice setting: the first render of a new variant rasterizes and
+# writes its cache (rasterizing = that run's time less a cached run's; a
+# variant already cached by an earlier arithmetic keeps its first figure).
+declare -A rasterSeconds
+latticeRow() {  # group setting scene f tag render-args...
+  local group=$1 setting=$2 scene=$3 f=$4 tag=$5 v first="" t m
+  shift 5
+  v=$(variant "$scene" "$f" "$tag")
+  if [[ ! -f $work/$tag.lht ]]; then
+    read -r first _ < <(timed "$v" "$@" -o "$work/img.png")
+  fi
+  read -r t m < <(measure "$v" "$@" -o "$work/img.png")
+  [[ -n $first ]] && rasterSeconds[$tag]=$(awk -v a="$first" -v b="$t" 'BEGIN { printf "%.3f", a - b }')
+  row "$group" "$setting" "$t" "$m" "$(tableBytes "$work/$tag.lht")" "${rasterSeconds[$tag]:-0}" "$work/img.png"
+}
+
 for scene in $scenes; do
   [[ -f $root/scenes/$scene.toml ]] || { echo "trade.sh: scenes/$scene.toml does not exist" >&2; exit 2; }
   tsv="$out/$scene.tsv"
   printf 'group\tsetting\tcpu_s\tratio\tpeak_kib\ttable_bytes\traster_s\tpsnr_db\tmax_err\tssim\n' >"$tsv.tmp"
-  base=$(variant "$scene" 1)
+  base=$(variant "$scene" 1 "$scene-f1")
   ref="$work/ref.png"
   echo "trade.sh: $scene: reference (double, full ray trace)" >&2
   read -r refTime refPeak < <(measure "$base" --full --arith double -o "$ref")
@@ -122,16 +141,16 @@ for scene in $scenes; do
     fi
     for f in 1 2 3 4; do
       echo "trade.sh: $scene: $arith f_lat=$f" >&2
-      v=$(variant "$scene" "$f")
-      first=""
-      if [[ ! -f $work/$scene-f$f.lht ]]; then  # the first run rasterizes and writes the cache
-        read -r first _ < <(timed "$v" --arith "$arith" -o "$work/img.png")
-      fi
-      read -r t m < <(measure "$v" --arith "$arith" -o "$work/img.png")
-      # Rasterizing = the first run's time less a cached run's.
-      [[ -n $first ]] && printf -v "raster_f$f" '%s' "$(awk -v a="$first" -v b="$t" 'BEGIN { printf "%.3f", a - b }')"
-      rasterVar="raster_f$f"
-      row lattice "$arith f_lat=$f" "$t" "$m" "$(tableBytes "$work/$scene-f$f.lht")" "${!rasterVar}" "$work/img.png"
+      latticeRow lattice "$arith f_lat=$f" "$scene" "$f" "$scene-f$f" --arith "$arith"
+    done
+  done
+
+  # LHT entry precision (double): the thesis's entry is the lattice rows above.
+  for precision in wide compact; do
+    for f in 1 2; do
+      echo "trade.sh: $scene: $precision entries, f_lat=$f" >&2
+      latticeRow "lht precision" "$precision f_lat=$f" "$scene" "$f" "$scene-f$f-$precision" --arith double \
+        --lht-precision "$precision"
     done
   done
 

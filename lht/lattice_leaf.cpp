@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "render/transform_condition.hpp"
@@ -18,7 +20,7 @@ template <typename T>
 class LatticeLeaf final : public Primitive<T> {
  public:
   LatticeLeaf(std::shared_ptr<const LhtFile> lht, const Mat4d& objectToWorld, MaterialId material, bool castsShadows)
-      : lht_(std::move(lht)), material_(material), castsShadows_(castsShadows) {
+      : lht_(std::move(lht)), precision_(lht_->table.precision()), material_(material), castsShadows_(castsShadows) {
     const Mat4d latticeToWorld = objectToWorld * lht_->box.latticeToObject();
     const std::string problem = conditionProblemFor<T>(latticeToWorld);
     if (!problem.empty()) throw Error(ErrorKind::Input, "lattice: " + problem);
@@ -41,7 +43,16 @@ class LatticeLeaf final : public Primitive<T> {
     const Mat4d worldToLattice = glm::inverse(latticeToWorld);
     worldToLattice_ = Mat4<T>(worldToLattice);
     // Normals go back with the inverse transpose of lattice -> world.
-    normalToWorld_ = Mat3<T>(glm::transpose(Mat3<double>(worldToLattice)));
+    const Mat3<double> normalToWorld = glm::transpose(Mat3<double>(worldToLattice));
+    normalToWorld_ = Mat3<T>(normalToWorld);
+    // Fixed point multiplies the entry's integer direction (components up to
+    // normalDirectionMax: 127, or 32767 for the wide entry) by this matrix.
+    // Scaled by a power of two so the product stays as small as with the
+    // thesis's 127 (Q31.32 saturates at 2^31); the length does not matter,
+    // the result is normalized, and for the thesis the factor is exactly 1.
+    const int bits = static_cast<int>(std::bit_width(static_cast<unsigned>(normalDirectionMax(precision_))));
+    const int extraBits = std::max(0, bits - 7);
+    directionToWorld_ = Mat3<T>(normalToWorld * std::ldexp(1.0, -extraBits));
     const auto& c = lht_->box.cells();
     box_ = {Vec3<T>(T(0)), Vec3<T>(T(c[0]), T(c[1]), T(c[2]))};
     const Bounds<double> world = transformBounds(Bounds<double>{Vec3d(0.0), Vec3d(c[0], c[1], c[2])}, latticeToWorld);
@@ -80,17 +91,20 @@ class LatticeLeaf final : public Primitive<T> {
         span.leave.normal = toWorld(leave->normal);
       }
     } else {
-      // Fixed point decodes the entry's bytes directly: s = byte / 255, and
-      // the normal's direction is its three signed bytes (normalized below).
-      const LhtEntry* enter = lht_->table.findEntry(in, outPoint);
+      // Fixed point decodes the entry's integers directly (the same decoder
+      // as find() uses, before its conversion to double): s is a fraction
+      // of integers and the normal an integer direction, normalized below.
+      const std::uint8_t* enter = lht_->table.findEntry(in, outPoint);
       if (!enter) return;
-      const LhtEntry* leave = lht_->table.findEntry(outPoint, in);
-      enterS = T(int(enter->s)) / T(255);
-      span.enter.normal = rawToWorld(rawNormal(*enter));
+      const std::uint8_t* leave = lht_->table.findEntry(outPoint, in);
+      const EntryIntegers enterValues = decodeEntryIntegers(enter, precision_);
+      enterS = fraction(enterValues);
+      span.enter.normal = directionToWorld(enterValues);
       if (leave) {
         haveLeave = true;
-        leaveS = T(int(leave->s)) / T(255);
-        span.leave.normal = rawToWorld(rawNormal(*leave));
+        const EntryIntegers leaveValues = decodeEntryIntegers(leave, precision_);
+        leaveS = fraction(leaveValues);
+        span.leave.normal = directionToWorld(leaveValues);
       }
     }
     span.enter.t = t0 + (t1 - t0) * enterS;
@@ -117,17 +131,18 @@ class LatticeLeaf final : public Primitive<T> {
     return {coord(0), coord(1), coord(2)};
   }
   Vec3<T> toWorld(const Vec3d& n) const { return lattice::normalize(normalToWorld_ * Vec3<T>(n)); }
-  Vec3<T> rawToWorld(const Vec3<T>& n) const { return lattice::normalize(normalToWorld_ * n); }
-  static Vec3<T> rawNormal(const LhtEntry& e) {
-    if (e.normal[0] == 0 && e.normal[1] == 0 && e.normal[2] == 0) return Vec3<T>(T(0), T(0), T(1));  // as decodeEntry
-    return Vec3<T>(T(int(e.normal[0])), T(int(e.normal[1])), T(int(e.normal[2])));
+  static T fraction(const EntryIntegers& e) { return T(e.sNumerator) / T(e.sDenominator); }
+  Vec3<T> directionToWorld(const EntryIntegers& e) const {
+    return lattice::normalize(directionToWorld_ * Vec3<T>(T(e.normal[0]), T(e.normal[1]), T(e.normal[2])));
   }
 
   std::shared_ptr<const LhtFile> lht_;
+  LhtPrecision precision_;
   MaterialId material_;
   bool castsShadows_;
   Mat4<T> worldToLattice_{T(1)};
   Mat3<T> normalToWorld_{T(1)};
+  Mat3<T> directionToWorld_{T(1)};  // normalToWorld_ scaled for integer directions (fixed point)
   Bounds<T> box_;
   Bounds<T> bounds_;
 };

@@ -80,7 +80,7 @@ void parseLatticeSection(const toml::node& section, ParseContext& context) {
   for (const toml::node& entry : *list) {
     const toml::table* table = entry.as_table();
     if (!table) context.fail(entry, "each [[lattices]] entry must be a table");
-    context.checkKeys(*table, {"name", "spacing", "oversample", "cache", "object", "shadows"});
+    context.checkKeys(*table, {"name", "spacing", "oversample", "cache", "object", "shadows", "precision"});
     auto def = std::make_shared<LatticeDefinition>();
     const auto name = context.string(*table, "name");
     if (!name || name->empty()) context.fail(*table, "a [[lattices]] entry needs a non-empty `name`");
@@ -91,6 +91,13 @@ void parseLatticeSection(const toml::node& section, ParseContext& context) {
     if (!(def->oversample >= 1.0 && def->oversample <= 255.0))
       context.fail(*table->get("oversample"), "`oversample` (f_lat) must be between 1 and 255");
     def->shadows = context.boolean(*table, "shadows").value_or(true);
+    if (const auto precision = context.string(*table, "precision")) {
+      const auto parsed = lhtPrecisionFromName(*precision);
+      if (!parsed)
+        context.fail(*table->get("precision"), fmt::format("unknown LHT entry `precision` '{}'; use one of {}",
+                                                           *precision, lhtPrecisionChoices()));
+      def->precision = *parsed;
+    }
     if (const auto cache = context.string(*table, "cache")) {
       std::filesystem::path path(*cache);
       def->cache = path.is_absolute() ? path : context.file().parent_path() / path;
@@ -166,7 +173,12 @@ NodeDesc parseScatterNode(const toml::table& table, ParseContext& context) {
 }  // namespace
 
 std::uint64_t LatticeDefinition::hash() const {
-  return fnv1a64(fmt::format("lattice spacing={:.17g} oversample={:.17g} object={}", lambda, oversample, objectText));
+  // The thesis's precision adds nothing, so caches written before the
+  // precision existed (all of them thesis) keep their hash.
+  const std::string form =
+      precision == LhtPrecision::Thesis ? "" : fmt::format(" precision={}", lhtPrecisionName(precision));
+  return fnv1a64(fmt::format("lattice spacing={:.17g} oversample={:.17g}{} object={}", lambda, oversample, form,
+                             objectText));
 }
 
 LhtFile LatticeDefinition::rasterizeNow(bool progress, RasterStats* stats, unsigned threads) const {
@@ -181,7 +193,7 @@ LhtFile LatticeDefinition::rasterizeNow(bool progress, RasterStats* stats, unsig
     lht.objectHash = hash();
     lht.pairs = raster.stats.pairs;
     lht.hits = raster.stats.hits;
-    lht.table = LatticeHashTable(raster.hits);
+    lht.table = LatticeHashTable(raster.hits, precision);
     if (stats) *stats = raster.stats;
     return lht;
   } catch (const Error& e) {
@@ -198,7 +210,7 @@ const Bounds<double>& LatticeDefinition::objectBounds() const {
 std::shared_ptr<const LhtFile> LatticeDefinition::table(bool progress) const {
   std::call_once(once_, [&] {
     if (cache && std::filesystem::exists(*cache)) {
-      table_ = std::make_shared<const LhtFile>(readLhtFile(*cache, hash()));
+      table_ = std::make_shared<const LhtFile>(readLhtFile(*cache, hash(), precision));
       return;
     }
     auto lht = std::make_shared<const LhtFile>(rasterizeNow(progress));
@@ -237,12 +249,12 @@ void registerLatticeSceneTypes() {
 namespace {
 
 template <typename Load>
-std::vector<LatticeDefinitionPtr> captureDefinitions(Load load) {
+SceneWithLattices captureDefinitions(Load load) {
   registerLatticeSceneTypes();
-  std::vector<LatticeDefinitionPtr> found;
-  capturedDefinitions = &found;
+  SceneWithLattices found;
+  capturedDefinitions = &found.lattices;
   try {
-    load();
+    found.scene = load();
   } catch (...) {
     capturedDefinitions = nullptr;
     throw;
@@ -253,12 +265,20 @@ std::vector<LatticeDefinitionPtr> captureDefinitions(Load load) {
 
 }  // namespace
 
+SceneWithLattices loadSceneWithLattices(const std::filesystem::path& sceneFile) {
+  return captureDefinitions([&] { return loadScene(sceneFile); });
+}
+
+SceneWithLattices parseSceneWithLattices(std::string_view text, const std::filesystem::path& fileName) {
+  return captureDefinitions([&] { return parseScene(text, fileName); });
+}
+
 std::vector<LatticeDefinitionPtr> loadLatticeDefinitions(const std::filesystem::path& sceneFile) {
-  return captureDefinitions([&] { loadScene(sceneFile); });
+  return loadSceneWithLattices(sceneFile).lattices;
 }
 
 std::vector<LatticeDefinitionPtr> parseLatticeDefinitions(std::string_view text, const std::filesystem::path& fileName) {
-  return captureDefinitions([&] { parseScene(text, fileName); });
+  return parseSceneWithLattices(text, fileName).lattices;
 }
 
 }  // namespace lattice::lht

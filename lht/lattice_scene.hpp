@@ -7,6 +7,7 @@
 //   oversample = 1               # f_lat
 //   cache = "hair.lht"           # optional; relative to the scene file
 //   shadows = true               # false: casts no shadows, like particles (plate 3)
+//   precision = "thesis"         # LHT entry: thesis (14 B), wide (16 B), compact (13 B)
 //   object = { type = "union", children = [ ... ] }   # any CSG subtree
 //
 //   [[objects]]
@@ -50,9 +51,13 @@ class LatticeDefinition {
   std::string objectText;  // canonical TOML of the object table
   std::optional<std::filesystem::path> cache;
   bool shadows = true;     // false: this lattice casts no shadows (thesis plate 3)
+  // The table's entry form. A plain field: `lattice render --lht-precision`
+  // (or a memory budget) may set it any time before table() first runs.
+  LhtPrecision precision = LhtPrecision::Thesis;
   std::string origin;      // "scene.toml:12:1"
 
-  // Hash of everything that decides the table's contents.
+  // Hash of everything that decides the table's contents (precision
+  // included, so a cache of another precision is stale).
   std::uint64_t hash() const;
   // The rasterized table: read from the cache when it matches, else
   // rasterized (and written to the cache if one is named). Thread-safe; done once.
@@ -76,6 +81,16 @@ void registerLatticeSceneTypes();
 
 // The [[lattices]] definitions of a scene file (for `lattice rasterize --scene`).
 std::vector<LatticeDefinitionPtr> loadLatticeDefinitions(const std::filesystem::path& sceneFile);
+
+// A loaded scene and its [[lattices]] definitions, which the scene's
+// lattice leaves share: changing a definition (its precision, say) before
+// the scene is rendered changes what the render builds.
+struct SceneWithLattices {
+  SceneDesc scene;
+  std::vector<LatticeDefinitionPtr> lattices;
+};
+SceneWithLattices loadSceneWithLattices(const std::filesystem::path& sceneFile);
+SceneWithLattices parseSceneWithLattices(std::string_view text, const std::filesystem::path& fileName);
 std::vector<LatticeDefinitionPtr> parseLatticeDefinitions(std::string_view text, const std::filesystem::path& fileName);
 
 // Almost uniformly spaced unit vectors: the Fibonacci (golden-angle) spiral.

@@ -4,6 +4,7 @@
 
 #include <bit>
 #include <cstring>
+#include <string>
 
 #include "io/atomic_file.hpp"
 #include "util/error.hpp"
@@ -53,6 +54,14 @@ Error bad(const std::string& name, const std::string& what) {
                                              name, what));
 }
 
+// "0 thesis, 1 wide, 2 compact"
+std::string precisionCodes() {
+  std::string out;
+  for (const LhtPrecisionInfo& info : kLhtPrecisions)
+    out += fmt::format("{}{} {}", out.empty() ? "" : ", ", static_cast<unsigned>(info.precision), info.name);
+  return out;
+}
+
 }  // namespace
 
 std::uint64_t fnv1a64(std::span<const std::uint8_t> bytes, std::uint64_t seed) {
@@ -73,7 +82,7 @@ std::vector<std::uint8_t> serializeLht(const LhtFile& lht) {
   w.bytes(kMagic, sizeof kMagic);
   w.u32(kLhtVersion);
   for (int a = 0; a < 3; ++a) w.u16(static_cast<std::uint16_t>(lht.box.cells()[a]));
-  w.u16(0);
+  w.u16(static_cast<std::uint16_t>(lht.table.precision()));
   w.f64(lht.box.lambda());
   w.f64(lht.box.oversample());
   for (int a = 0; a < 3; ++a) w.f64(lht.box.origin()[a]);
@@ -82,14 +91,14 @@ std::vector<std::uint8_t> serializeLht(const LhtFile& lht) {
   w.u64(lht.hits);
   w.u64(lht.table.entryCount());
   w.u64(lht.table.bucketCount());
-  w.u64(lht.table.slots().size());
-  w.bytes(lht.table.slots().data(), lht.table.slots().size() * sizeof(LhtEntry));
+  w.u64(lht.table.slotCount());
+  w.bytes(lht.table.slotBytes().data(), lht.table.slotBytes().size());
   w.u64(fnv1a64(w.out));
   return std::move(w.out);
 }
 
 LhtFile parseLht(std::span<const std::uint8_t> bytes, const std::string& name,
-                 std::optional<std::uint64_t> expectedObjectHash) {
+                 std::optional<std::uint64_t> expectedObjectHash, std::optional<LhtPrecision> expectedPrecision) {
   if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
     throw bad(name, "not a lattice hash table file (wrong magic number)");
   if (bytes.size() < kLhtHeaderBytes + 8)
@@ -98,11 +107,18 @@ LhtFile parseLht(std::span<const std::uint8_t> bytes, const std::string& name,
   Reader r(bytes);
   r.at = sizeof kMagic;
   const auto version = static_cast<std::uint32_t>(r.uint(4));
-  if (version != kLhtVersion)
-    throw bad(name, fmt::format("format version {} but this program reads version {}", version, kLhtVersion));
+  if (version != 1 && version != kLhtVersion)
+    throw bad(name, fmt::format("format version {} but this program reads versions 1 to {}", version, kLhtVersion));
   std::array<int, 3> cells{};
   for (int a = 0; a < 3; ++a) cells[a] = static_cast<int>(r.uint(2));
-  r.uint(2);
+  const auto precisionCode = static_cast<std::uint16_t>(r.uint(2));
+  // Version 1 had only the thesis's entry (and 0 in this field).
+  const std::optional<LhtPrecision> precision =
+      version == 1 ? std::optional(LhtPrecision::Thesis) : lhtPrecisionFromCode(precisionCode);
+  if (!precision)
+    throw bad(name, fmt::format("unknown entry precision code {} at byte 18 (this program knows {})", precisionCode,
+                                precisionCodes()));
+  const std::size_t stride = entryBytes(*precision);
   const double lambda = r.f64();
   const double oversample = r.f64();
   Vec3d origin;
@@ -115,33 +131,39 @@ LhtFile parseLht(std::span<const std::uint8_t> bytes, const std::string& name,
   const std::uint64_t slots = r.uint(8);
   // Size first (it catches truncation with a clearer message than the
   // checksum would), guarding the multiplication against absurd counts.
-  const std::uint64_t maxSlots = (bytes.size() - kLhtHeaderBytes - 8) / sizeof(LhtEntry);
-  if (slots > maxSlots || kLhtHeaderBytes + slots * sizeof(LhtEntry) + 8 != bytes.size()) {
+  const std::uint64_t maxSlots = (bytes.size() - kLhtHeaderBytes - 8) / stride;
+  if (slots > maxSlots || kLhtHeaderBytes + slots * stride + 8 != bytes.size()) {
     // slots comes from the file: keep the arithmetic for the message from overflowing.
     const std::string expected = slots < (std::uint64_t(1) << 58)
-                                     ? fmt::format("{} bytes", kLhtHeaderBytes + slots * sizeof(LhtEntry) + 8)
+                                     ? fmt::format("{} bytes", kLhtHeaderBytes + slots * stride + 8)
                                      : std::string("an impossible size");
-    throw bad(name, fmt::format("truncated or padded: {} bytes, but its header describes {} table slots ({})",
-                                bytes.size(), slots, expected));
+    throw bad(name, fmt::format("truncated or padded: {} bytes, but its header describes {} table slots of {} "
+                                "bytes ({})",
+                                bytes.size(), slots, stride, expected));
   }
   const std::size_t payloadEnd = bytes.size() - 8;
   Reader tail(bytes);
   tail.at = payloadEnd;
   if (tail.uint(8) != fnv1a64(bytes.first(payloadEnd)))
     throw bad(name, "checksum mismatch: the file is corrupted");
+  if (expectedPrecision && *expectedPrecision != *precision)
+    throw bad(name, fmt::format("holds '{}' entries ({} bytes each) but '{}' entries were asked for (the scene's "
+                                "`precision` or --lht-precision)",
+                                lhtPrecisionName(*precision), stride, lhtPrecisionName(*expectedPrecision)));
   if (expectedObjectHash && *expectedObjectHash != objectHash)
     throw bad(name, fmt::format("rasterized from a different object definition (object hash {:016x}, the scene's "
                                 "object has {:016x})",
                                 objectHash, *expectedObjectHash));
   try {
     LhtFile lht;
+    lht.version = version;
     lht.box = LatticeBox(cells, lambda, oversample, origin);
     lht.objectHash = objectHash;
     lht.pairs = pairs;
     lht.hits = hits;
-    std::vector<LhtEntry> table(slots);
-    std::memcpy(table.data(), bytes.data() + kLhtHeaderBytes, slots * sizeof(LhtEntry));
-    lht.table = LatticeHashTable(std::move(table), buckets, entries);
+    const auto* first = bytes.data() + kLhtHeaderBytes;
+    std::vector<std::uint8_t> table(first, first + slots * stride);
+    lht.table = LatticeHashTable(*precision, std::move(table), buckets, entries);
     return lht;
   } catch (const Error& e) {
     throw bad(name, fmt::format("inconsistent contents ({})", e.what()));
@@ -153,9 +175,10 @@ void writeLhtFile(const std::filesystem::path& path, const LhtFile& lht) {
   writeFileAtomically(path, bytes);
 }
 
-LhtFile readLhtFile(const std::filesystem::path& path, std::optional<std::uint64_t> expectedObjectHash) {
+LhtFile readLhtFile(const std::filesystem::path& path, std::optional<std::uint64_t> expectedObjectHash,
+                    std::optional<LhtPrecision> expectedPrecision) {
   const std::vector<std::uint8_t> bytes = readWholeFile(path);
-  return parseLht(bytes, path.string(), expectedObjectHash);
+  return parseLht(bytes, path.string(), expectedObjectHash, expectedPrecision);
 }
 
 }  // namespace lattice::lht

@@ -4,9 +4,10 @@
 //
 //   offset size
 //        0    8  magic "LATLHT\r\n" (the CR LF catches text-mode mangling)
-//        8    4  version (kLhtVersion)
+//        8    4  version (kLhtVersion; version 1 is still read)
 //       12    6  cells along x, y, z (u16 each, 1..255)
-//       18    2  reserved, 0
+//       18    2  entry precision code (LhtPrecision: 0 thesis, 1 wide, 2 compact;
+//                reserved and 0 in version 1, whose entries are all the thesis's)
 //       20    8  lambda (object units)
 //       28    8  f_lat
 //       36   24  lattice origin in object coordinates (x, y, z)
@@ -16,7 +17,7 @@
 //       84    8  entries
 //       92    8  buckets (primary slots)
 //      100    8  slots (primary + overflow)
-//      108  14n  the slots, LhtEntry bytes as in memory
+//      108  e*n  the n slots, e = entryBytes(precision) bytes each, as in memory
 //      end    8  FNV-1a 64 of every byte before it
 #include <cstdint>
 #include <filesystem>
@@ -30,10 +31,11 @@
 
 namespace lattice::lht {
 
-inline constexpr std::uint32_t kLhtVersion = 1;
+inline constexpr std::uint32_t kLhtVersion = 2;
 inline constexpr std::size_t kLhtHeaderBytes = 108;
 
 struct LhtFile {
+  std::uint32_t version = kLhtVersion;  // as read; files are always written at kLhtVersion
   LatticeBox box{{1, 1, 1}, 1.0, 1.0, Vec3d(0.0)};
   std::uint64_t objectHash = 0;
   std::uint64_t pairs = 0;  // N_lp
@@ -47,11 +49,15 @@ std::uint64_t fnv1a64(std::string_view text);
 
 std::vector<std::uint8_t> serializeLht(const LhtFile& lht);
 // `name` is used in messages. With expectedObjectHash, a file rasterized
-// from another object definition is refused.
+// from another object definition is refused; with expectedPrecision, a file
+// whose entries have another precision (a cache must not silently give a
+// picture of another accuracy than asked for).
 LhtFile parseLht(std::span<const std::uint8_t> bytes, const std::string& name,
-                 std::optional<std::uint64_t> expectedObjectHash = std::nullopt);
+                 std::optional<std::uint64_t> expectedObjectHash = std::nullopt,
+                 std::optional<LhtPrecision> expectedPrecision = std::nullopt);
 
 void writeLhtFile(const std::filesystem::path& path, const LhtFile& lht);  // atomically
-LhtFile readLhtFile(const std::filesystem::path& path, std::optional<std::uint64_t> expectedObjectHash = std::nullopt);
+LhtFile readLhtFile(const std::filesystem::path& path, std::optional<std::uint64_t> expectedObjectHash = std::nullopt,
+                    std::optional<LhtPrecision> expectedPrecision = std::nullopt);
 
 }  // namespace lattice::lht

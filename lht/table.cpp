@@ -12,54 +12,25 @@ namespace lattice::lht {
 
 namespace {
 
-// An empty primary slot has an all-zero key: (0,0,0)->(0,0,0) has p_i == p_o,
-// a point rather than a segment, so it is never a hit.
-bool isEmpty(const LhtEntry& e) {
-  for (std::uint8_t b : e.key)
-    if (b) return false;
-  return true;
-}
-
-std::uint32_t nextOf(const LhtEntry& e) {
-  return std::uint32_t(e.next[0]) | std::uint32_t(e.next[1]) << 8 | std::uint32_t(e.next[2]) << 16 |
-         std::uint32_t(e.next[3]) << 24;
-}
-
-void setNext(LhtEntry& e, std::uint32_t next) {
-  for (int b = 0; b < 4; ++b) e.next[b] = static_cast<std::uint8_t>(next >> (8 * b));
-}
-
-void makeKey(const LatticePoint& in, const LatticePoint& out, std::uint8_t key[6]) {
+void makeKey(const LatticePoint& in, const LatticePoint& out, std::uint8_t key[kEntryKeyBytes]) {
   key[0] = in.x, key[1] = in.y, key[2] = in.z, key[3] = out.x, key[4] = out.y, key[5] = out.z;
 }
 
 }  // namespace
 
-std::uint8_t quantizeS(double s) {
-  return static_cast<std::uint8_t>(std::lround(std::clamp(s, 0.0, 1.0) * 255.0));
+std::uint32_t LatticeHashTable::nextOf(std::uint64_t index) const {
+  return loadLittleEndian32(slot(index) + stride_ - kEntryNextBytes);
 }
 
-std::int8_t quantizeNormalComponent(double n) {
-  return static_cast<std::int8_t>(std::lround(std::clamp(n, -1.0, 1.0) * 127.0));
+void LatticeHashTable::setNext(std::uint64_t index, std::uint32_t next) {
+  storeLittleEndian32(slot(index) + stride_ - kEntryNextBytes, next);
 }
 
-LhtEntry encodeEntry(const RasterHit& hit) {
-  LhtEntry e{};
-  makeKey(hit.in, hit.out, e.key);
-  e.s = quantizeS(hit.s);
-  for (int a = 0; a < 3; ++a) e.normal[a] = quantizeNormalComponent(hit.normal[a]);
-  setNext(e, kNoNext);
-  return e;
-}
-
-LhtHit decodeEntry(const LhtEntry& entry) {
-  LhtHit hit;
-  hit.s = entry.s / 255.0;
-  const Vec3d n(entry.normal[0], entry.normal[1], entry.normal[2]);
-  const double length = glm::length(n);
-  // Renormalize: quantizing each component separately shortens or lengthens it.
-  hit.normal = length > 0.0 ? n / length : Vec3d(0, 0, 1);
-  return hit;
+// An empty primary slot has an all-zero key: (0,0,0)->(0,0,0) has p_i == p_o,
+// a point rather than a segment, so it is never a hit.
+bool LatticeHashTable::isEmpty(std::uint64_t index) const {
+  const std::uint8_t* key = slot(index);
+  return std::all_of(key, key + kEntryKeyBytes, [](std::uint8_t b) { return b == 0; });
 }
 
 std::uint64_t LatticeHashTable::bucketOf(const std::uint8_t key[6], std::uint64_t bucketCount) {
@@ -72,56 +43,62 @@ std::uint64_t LatticeHashTable::bucketOf(const std::uint8_t key[6], std::uint64_
   return h % bucketCount;
 }
 
-LatticeHashTable::LatticeHashTable(const std::vector<RasterHit>& hits, double loadFactor) {
+LatticeHashTable::LatticeHashTable(const std::vector<RasterHit>& hits, LhtPrecision precision, double loadFactor)
+    : precision_(precision), stride_(entryBytes(precision)) {
   if (!(loadFactor > 0.0)) throw Error(ErrorKind::Usage, "the LHT load factor must be positive");
   entries_ = hits.size();
   if (entries_ >= kNoNext) throw Error(ErrorKind::Input, "too many lattice hits for a 4-byte overflow index");
   buckets_ = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::ceil(double(entries_) / loadFactor)));
-  slots_.assign(buckets_, LhtEntry{});
-  for (LhtEntry& e : slots_) setNext(e, kNoNext);
+  slots_.assign(buckets_ * stride_, 0);
+  for (std::uint64_t b = 0; b < buckets_; ++b) setNext(b, kNoNext);
+  std::vector<std::uint8_t> entry(stride_);
   for (const RasterHit& hit : hits) {
-    LhtEntry e = encodeEntry(hit);
-    LhtEntry& head = slots_[bucketOf(e.key, buckets_)];
+    encodeEntry(hit, precision_, entry.data());
+    const std::uint64_t head = bucketOf(entry.data(), buckets_);
     if (isEmpty(head)) {
-      std::memcpy(head.key, e.key, sizeof e.key);
-      head.s = e.s;
-      std::memcpy(head.normal, e.normal, sizeof e.normal);
-      continue;  // keeps head.next
+      std::copy(entry.begin(), entry.end() - kEntryNextBytes, slot(head));  // keeps the head's next
+      continue;
     }
     // Push onto the front of the chain: the primary slot links to the newest
     // overflow entry, which links to the older ones.
-    setNext(e, nextOf(head));
-    setNext(head, static_cast<std::uint32_t>(slots_.size()));
-    slots_.push_back(e);  // invalidates `head`; not used after this
+    const std::uint64_t added = slotCount();
+    storeLittleEndian32(entry.data() + stride_ - kEntryNextBytes, nextOf(head));
+    slots_.insert(slots_.end(), entry.begin(), entry.end());
+    setNext(head, static_cast<std::uint32_t>(added));
   }
 }
 
-LatticeHashTable::LatticeHashTable(std::vector<LhtEntry> slots, std::uint64_t bucketCount, std::uint64_t entryCount)
-    : slots_(std::move(slots)), buckets_(bucketCount), entries_(entryCount) {
-  if (buckets_ == 0 || buckets_ > slots_.size())
-    throw Error(ErrorKind::Input, fmt::format("LHT bucket count {} does not fit its {} slots", buckets_, slots_.size()));
+LatticeHashTable::LatticeHashTable(LhtPrecision precision, std::vector<std::uint8_t> slotBytes,
+                                   std::uint64_t bucketCount, std::uint64_t entryCount)
+    : precision_(precision), stride_(entryBytes(precision)), slots_(std::move(slotBytes)), buckets_(bucketCount),
+      entries_(entryCount) {
+  if (slots_.size() % stride_ != 0)
+    throw Error(ErrorKind::Input, fmt::format("LHT slot bytes ({}) are not a whole number of {}-byte entries",
+                                              slots_.size(), stride_));
+  const std::uint64_t slots = slotCount();
+  if (buckets_ == 0 || buckets_ > slots)
+    throw Error(ErrorKind::Input, fmt::format("LHT bucket count {} does not fit its {} slots", buckets_, slots));
   // Every overflow slot must be reached exactly once, from a chain whose keys
   // all hash to that chain's bucket; then lookups cannot loop or stray.
-  std::vector<std::uint8_t> seen(slots_.size() - buckets_, 0);
+  std::vector<std::uint8_t> seen(slots - buckets_, 0);
   std::uint64_t counted = 0;
   for (std::uint64_t b = 0; b < buckets_; ++b) {
-    const LhtEntry* e = &slots_[b];
-    if (isEmpty(*e)) {
-      if (nextOf(*e) != kNoNext)
+    if (isEmpty(b)) {
+      if (nextOf(b) != kNoNext)
         throw Error(ErrorKind::Input, fmt::format("LHT bucket {} is empty but links to an overflow entry", b));
       continue;
     }
-    for (;;) {
-      if (bucketOf(e->key, buckets_) != b)
+    for (std::uint64_t index = b;;) {
+      if (bucketOf(slot(index), buckets_) != b)
         throw Error(ErrorKind::Input, fmt::format("LHT entry in bucket {} has a key that hashes elsewhere", b));
       ++counted;
-      const std::uint32_t next = nextOf(*e);
+      const std::uint32_t next = nextOf(index);
       if (next == kNoNext) break;
-      if (next < buckets_ || next >= slots_.size() || seen[next - buckets_])
+      if (next < buckets_ || next >= slots || seen[next - buckets_])
         throw Error(ErrorKind::Input, fmt::format("LHT overflow index {} in bucket {}'s chain is out of range or "
                                                   "shared", next, b));
       seen[next - buckets_] = 1;
-      e = &slots_[next];
+      index = next;
     }
   }
   if (std::find(seen.begin(), seen.end(), 0) != seen.end())
@@ -132,20 +109,20 @@ LatticeHashTable::LatticeHashTable(std::vector<LhtEntry> slots, std::uint64_t bu
 }
 
 std::optional<LhtHit> LatticeHashTable::find(const LatticePoint& in, const LatticePoint& out) const {
-  const LhtEntry* e = findEntry(in, out);
+  const std::uint8_t* e = findEntry(in, out);
   if (!e) return std::nullopt;
-  return decodeEntry(*e);
+  return decodeEntry(e, precision_);
 }
 
-const LhtEntry* LatticeHashTable::findEntry(const LatticePoint& in, const LatticePoint& out) const {
+const std::uint8_t* LatticeHashTable::findEntry(const LatticePoint& in, const LatticePoint& out) const {
   if (buckets_ == 0 || in == out) return nullptr;
-  std::uint8_t key[6];
+  std::uint8_t key[kEntryKeyBytes];
   makeKey(in, out, key);
   std::uint32_t index = static_cast<std::uint32_t>(bucketOf(key, buckets_));
   while (index != kNoNext) {
-    const LhtEntry& e = slots_[index];
-    if (std::memcmp(e.key, key, sizeof key) == 0) return &e;
-    index = nextOf(e);
+    const std::uint8_t* e = slot(index);
+    if (std::memcmp(e, key, kEntryKeyBytes) == 0) return e;
+    index = nextOf(index);
   }
   return nullptr;
 }
@@ -154,8 +131,8 @@ ChainStats LatticeHashTable::chainStats() const {
   ChainStats stats;
   for (std::uint64_t b = 0; b < buckets_; ++b) {
     std::uint64_t length = 0;
-    if (!isEmpty(slots_[b]))
-      for (std::uint32_t index = static_cast<std::uint32_t>(b); index != kNoNext; index = nextOf(slots_[index])) ++length;
+    if (!isEmpty(b))
+      for (std::uint32_t index = static_cast<std::uint32_t>(b); index != kNoNext; index = nextOf(index)) ++length;
     if (length) ++stats.usedBuckets;
     stats.longestChain = std::max(stats.longestChain, length);
     if (stats.chainLengthHistogram.size() <= length) stats.chainLengthHistogram.resize(length + 1, 0);

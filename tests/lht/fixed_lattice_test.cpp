@@ -4,7 +4,9 @@
 // exit across a rounding boundary of the grid.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "lht/lattice_scene.hpp"
 #include "render/renderer.hpp"
@@ -74,11 +76,16 @@ TEST_CASE("fixed point: a lattice scene matches the double render") {
   const SceneDesc scene = parseScene(kScene, "fuzzy.toml");
   // Measured (docs/fixed-point.md): the lattice render is identical to
   // double's; the full ray trace 46.8 dB, 0.02% of channels off by > 4.
-  SECTION("lattices") {
-    const testing::FixedVsDouble m = testing::compareRenders(render(scene, true, false), render(scene, false, false));
-    INFO("PSNR " << m.psnr << " dB, channels off by > 4: " << 100 * m.farFraction << "%");
-    CHECK(m.psnr > 35.0);
-    CHECK(m.farFraction < 0.01);
+  SECTION("lattices, at every entry precision (each decoded in integers for fixed point)") {
+    for (const lht::LhtPrecisionInfo& form : lht::kLhtPrecisions) {
+      lht::SceneWithLattices loaded = lht::parseSceneWithLattices(kScene, "fuzzy.toml");
+      for (const auto& lattice : loaded.lattices) lattice->precision = form.precision;
+      const testing::FixedVsDouble m =
+          testing::compareRenders(render(loaded.scene, true, false), render(loaded.scene, false, false));
+      INFO(form.name << ": PSNR " << m.psnr << " dB, channels off by > 4: " << 100 * m.farFraction << "%");
+      CHECK(m.psnr > 35.0);
+      CHECK(m.farFraction < 0.01);
+    }
   }
   SECTION("the full ray trace of the same hairs (capsules: cylinders, spheres, CSG)") {
     const testing::FixedVsDouble m = testing::compareRenders(render(scene, true, true), render(scene, false, true));
@@ -92,12 +99,21 @@ TEST_CASE("fixed point: the lattice leaf's per-pixel code has no floating point"
 #ifndef NDEBUG
   WARN("skipped: the scan needs an optimized build, where Fixed(double) of literals is folded at compile time");
 #else
+  // The integer helpers the Fixed32 leaf calls per pixel: the table lookup
+  // and the entry decoders of every precision (their names do not say Fixed).
+  const std::vector<std::string> integerPath = {"lht::LatticeHashTable::findEntry(", "lht::decodeEntryIntegers(",
+                                                "lht::decodeOctahedral(", "lht::LatticeHashTable::bucketOf("};
   const testing::FixedPointScan scan =
-      testing::scanFixedPointCode(std::string(LATTICE_BINARY_DIR) + "/lht/liblattice_lht.a");
-  bool sawSpans = false;
-  for (const std::string& f : scan.fixedFunctions)
-    sawSpans = sawSpans || f.find("LatticeLeaf<lattice::Fixed<32> >::spans") != std::string::npos;
-  REQUIRE(sawSpans);
+      testing::scanFixedPointCode(std::string(LATTICE_BINARY_DIR) + "/lht/liblattice_lht.a", integerPath);
+  const auto seen = [&](const std::string& name) {
+    return std::any_of(scan.fixedFunctions.begin(), scan.fixedFunctions.end(),
+                       [&](const std::string& f) { return f.find(name) != std::string::npos; });
+  };
+  REQUIRE(seen("LatticeLeaf<lattice::Fixed<32> >::spans"));
+  for (const std::string& f : integerPath) {
+    INFO("the scan did not see " << f);
+    REQUIRE(seen(f));
+  }
   // The detector works: the set-up code (double -> Q31.32 conversions) shows up.
   REQUIRE_FALSE(scan.withFloatingPoint.empty());
   for (const std::string& f : scan.withFloatingPoint) {

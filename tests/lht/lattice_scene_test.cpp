@@ -7,8 +7,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 
+#include <fmt/format.h>
+
+#include "io/image_metrics.hpp"
 #include "lht/lattice_scene.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_loader.hpp"
@@ -126,6 +130,70 @@ TEST_CASE("lattice scene: a lattice renders close to the full ray trace of its o
   CHECK(sumBlock / blocks < 4.0);  // measured 2.05
 }
 
+// A lattice ball seen along the lattice's z axis by a (nearly) parallel
+// bundle of rays, one through each grid column: every ray enters and leaves
+// the lattice box at grid points, so rounding to the grid moves nothing and
+// the lattice's only error is its entries' quantization - which the entry
+// precision decides. (In ordinary scenes rounding rays to the grid dominates
+// instead; docs/lattices.md, "Entry precision".) The box is 2.5 units, 15
+// cells of 1/6; the thesis camera's 16 pixel centres span exactly 2.5.
+const char* kGridAlignedBall = R"(
+[options]
+width = 16
+height = 16
+ambient = 0.1
+K = 0
+[camera]
+type = "thesis"
+distance = 10000.0
+width = 2.5
+height = 2.5
+[materials.shiny]
+diffuse = [0.8, 0.5, 0.3]
+specular = 0.6
+shininess = 40
+[[lights]]
+position = [-3.0, 4.0, -6.0]
+intensity = 60.0
+[[lattices]]
+name = "ball"
+spacing = 0.5
+oversample = 3
+shadows = false   # shadow rays are not grid-aligned; a convex ball casts none on itself anyway
+object = { type = "sphere", radius = 1.0 }
+[[objects]]
+type = "lattice"
+lattice = "ball"
+material = "shiny"
+)";
+
+TEST_CASE("lattice scene: the wide entry renders closer to the full ray trace than the thesis's") {
+  registerLatticeSceneTypes();
+  const RgbImage full = render(parseScene(kGridAlignedBall, "ball.toml"), true);
+  std::map<LhtPrecision, ImageMetrics> error;
+  for (const LhtPrecisionInfo& form : kLhtPrecisions) {
+    SceneWithLattices loaded = parseSceneWithLattices(kGridAlignedBall, "ball.toml");
+    loaded.lattices.at(0)->precision = form.precision;
+    error[form.precision] = compareRgb(render(loaded.scene, false), full);
+  }
+  const ImageMetrics& thesis = error[LhtPrecision::Thesis];
+  const ImageMetrics& wide = error[LhtPrecision::Wide];
+  const ImageMetrics& compact = error[LhtPrecision::Compact];
+  INFO("PSNR / max error against the full ray trace: thesis " << thesis.psnr << " dB / " << thesis.maxChannelError
+                                                              << ", wide " << wide.psnr << " / " << wide.maxChannelError
+                                                              << ", compact " << compact.psnr << " / "
+                                                              << compact.maxChannelError);
+  // Measured: thesis 54.2 dB / 5, wide 70.0 dB / 1, compact 50.3 dB / 11.
+  CHECK(thesis.maxChannelError <= 8);  // the geometry agrees: only shading is off
+  CHECK(wide.psnr >= thesis.psnr + 10.0);
+  CHECK(wide.maxChannelError <= 2);
+  CHECK(wide.maxChannelError <= thesis.maxChannelError);
+  CHECK(wide.differingPixels < thesis.differingPixels);
+  // The compact entry's octahedral normal is coarser than the thesis's 3 bytes.
+  CHECK(compact.psnr <= thesis.psnr);
+  CHECK(compact.psnr >= thesis.psnr - 8.0);
+}
+
 TEST_CASE("lattice scene: lattice-lattice shadows can be switched off (plate 3 vs plate 4)") {
   registerLatticeSceneTypes();
   const SceneDesc scene = parseScene(fuzzyScene(300), "fuzzy.toml");
@@ -199,6 +267,56 @@ TEST_CASE("lattice scene: the cache file is written, reused, and refused when th
   std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("lattice scene: the precision key picks the entry form and the thesis's keeps the old object hash") {
+  const auto definition = [](const std::string& keys) {
+    const auto defs = parseLatticeDefinitions(fuzzyScene(5, keys), "p.toml");
+    REQUIRE(defs.size() == 1);
+    return defs[0];
+  };
+  const LatticeDefinitionPtr plain = definition("");
+  CHECK(plain->precision == LhtPrecision::Thesis);
+  CHECK(definition("precision = \"thesis\"")->hash() == plain->hash());
+  // Caches written before the knob existed hold this hash and must stay valid.
+  CHECK(plain->hash() == fnv1a64(fmt::format("lattice spacing={:.17g} oversample={:.17g} object={}", plain->lambda,
+                                             plain->oversample, plain->objectText)));
+  for (const char* name : {"wide", "compact"}) {
+    const LatticeDefinitionPtr d = definition(fmt::format("precision = \"{}\"", name));
+    CHECK(lhtPrecisionName(d->precision) == name);
+    CHECK(d->hash() != plain->hash());
+    CHECK(d->rasterizeNow(false).table.precision() == d->precision);
+  }
+}
+
+TEST_CASE("lattice scene: a cache of another precision is refused and not silently used") {
+  registerLatticeSceneTypes();
+  const auto dir = std::filesystem::temp_directory_path() / ("lattice-lht-precision-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "s.toml") << fuzzyScene(5, "cache = \"hair.lht\"");
+  render(loadScene(dir / "s.toml"), false);  // writes a thesis cache
+  REQUIRE(readLhtFile(dir / "hair.lht").table.precision() == LhtPrecision::Thesis);
+  const auto expectRefusal = [&](const SceneDesc& scene, const std::string& asked) {
+    try {
+      render(scene, false);
+      FAIL("a cache of another precision was used");
+    } catch (const Error& e) {
+      const std::string message = e.what();
+      CHECK(message.find("hair.lht") != std::string::npos);
+      CHECK(message.find("'thesis' entries") != std::string::npos);
+      CHECK(message.find("'" + asked + "'") != std::string::npos);
+    }
+  };
+  // In the scene file...
+  std::ofstream(dir / "s.toml") << fuzzyScene(5, "cache = \"hair.lht\"\nprecision = \"wide\"");
+  expectRefusal(loadScene(dir / "s.toml"), "wide");
+  // ... or set on the definition before the render, as --lht-precision does.
+  std::ofstream(dir / "s.toml") << fuzzyScene(5, "cache = \"hair.lht\"");
+  SceneWithLattices loaded = loadSceneWithLattices(dir / "s.toml");
+  REQUIRE(loaded.lattices.size() == 1);
+  loaded.lattices[0]->precision = LhtPrecision::Compact;
+  expectRefusal(loaded.scene, "compact");
+  std::filesystem::remove_all(dir);
+}
+
 TEST_CASE("lattice scene: mistakes are located errors") {
   registerLatticeSceneTypes();
   CHECK(loadError("[[objects]]\ntype = \"lattice\"\nlattice = \"nope\"\n").find("no lattice named 'nope'") !=
@@ -214,4 +332,13 @@ TEST_CASE("lattice scene: mistakes are located errors") {
       "[[lattices]]\nname = \"a\"\nspacing = 1\nobject = { type = \"sphere\", radius = 1 }\n"
       "[[lattices]]\nname = \"a\"\nspacing = 1\nobject = { type = \"sphere\", radius = 1 }\n";
   CHECK(loadError(twice).find("defined twice") != std::string::npos);
+  const std::string badPrecision = loadError(
+      "[[lattices]]\nname = \"a\"\nspacing = 1\nprecision = \"huge\"\nobject = { type = \"sphere\", radius = 1 }\n");
+  CHECK(badPrecision.find("bad.toml:4:") != std::string::npos);
+  CHECK(badPrecision.find("'huge'") != std::string::npos);
+  CHECK(badPrecision.find("thesis (14 B/entry), wide (16 B/entry), compact (13 B/entry)") != std::string::npos);
+  const std::string notAString = loadError(
+      "[[lattices]]\nname = \"a\"\nspacing = 1\nprecision = 16\nobject = { type = \"sphere\", radius = 1 }\n");
+  CHECK(notAString.find("bad.toml:4:") != std::string::npos);
+  CHECK(notAString.find("precision") != std::string::npos);
 }

@@ -16,7 +16,7 @@ using namespace lattice::lht;
 
 namespace {
 
-LhtFile makeSphereLht() {
+LhtFile makeSphereLht(LhtPrecision precision = LhtPrecision::Thesis) {
   const LatticeObject sphere = sphereObject(0.5);
   LhtFile lht;
   lht.box = LatticeBox(sphere.bounds, 1.0, 2.0);
@@ -26,14 +26,23 @@ LhtFile makeSphereLht() {
   lht.objectHash = sphere.hash();
   lht.pairs = raster.stats.pairs;
   lht.hits = raster.stats.hits;
-  lht.table = LatticeHashTable(raster.hits);
+  lht.table = LatticeHashTable(raster.hits, precision);
   return lht;
 }
 
+// Replaces the trailing checksum so a deliberately changed file passes it.
+std::vector<std::uint8_t> resealed(std::vector<std::uint8_t> bytes) {
+  bytes.resize(bytes.size() - 8);
+  const std::uint64_t sum = fnv1a64(bytes);
+  for (int b = 0; b < 8; ++b) bytes.push_back(static_cast<std::uint8_t>(sum >> (8 * b)));
+  return bytes;
+}
+
 // The message of the Error thrown by parsing `bytes`, which must be Input.
-std::string refusal(const std::vector<std::uint8_t>& bytes, std::optional<std::uint64_t> hash = std::nullopt) {
+std::string refusal(const std::vector<std::uint8_t>& bytes, std::optional<std::uint64_t> hash = std::nullopt,
+                    std::optional<LhtPrecision> precision = std::nullopt) {
   try {
-    parseLht(bytes, "bad.lht", hash);
+    parseLht(bytes, "bad.lht", hash, precision);
   } catch (const Error& e) {
     CHECK(e.kind() == ErrorKind::Input);
     return e.what();
@@ -50,26 +59,49 @@ TEST_CASE("lht file: FNV-1a 64 matches the published test vectors") {
   CHECK(fnv1a64("foobar") == 0x85944171f73967e8ull);
 }
 
-TEST_CASE("lht file: write, read back, identical table and header") {
+TEST_CASE("lht file: every precision writes and reads back the identical table and header") {
+  for (const LhtPrecisionInfo& form : kLhtPrecisions) {
+    INFO(form.name);
+    const LhtFile lht = makeSphereLht(form.precision);
+    const auto dir = std::filesystem::temp_directory_path() / ("lattice-lht-test-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const auto path = dir / "sphere.lht";
+    writeLhtFile(path, lht);
+    const LhtFile back = readLhtFile(path, lht.objectHash, form.precision);
+    std::filesystem::remove_all(dir);
+    CHECK(back.version == kLhtVersion);
+    CHECK(back.table.precision() == form.precision);
+    CHECK(back.box.cells() == lht.box.cells());
+    CHECK(back.box.lambda() == lht.box.lambda());
+    CHECK(back.box.oversample() == lht.box.oversample());
+    CHECK(back.box.origin() == lht.box.origin());
+    CHECK(back.pairs == 18750);
+    CHECK(back.hits == 3486);
+    CHECK(back.table.entryCount() == lht.table.entryCount());
+    CHECK(back.table.bucketCount() == lht.table.bucketCount());
+    CHECK(back.table.slotBytes() == lht.table.slotBytes());
+    CHECK(serializeLht(back) == serializeLht(lht));
+    const std::vector<std::uint8_t> bytes = serializeLht(lht);
+    CHECK(bytes.size() == kLhtHeaderBytes + lht.table.slotCount() * form.entryBytes + 8);
+    CHECK(bytes[8] == 2);                                           // version 2
+    CHECK(bytes[18] == static_cast<std::uint8_t>(form.precision));  // the precision code, u16 LE
+    CHECK(bytes[19] == 0);
+  }
+}
+
+TEST_CASE("lht file: version-1 files are still read as thesis entries") {
   const LhtFile lht = makeSphereLht();
-  const auto dir = std::filesystem::temp_directory_path() / ("lattice-lht-test-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const auto path = dir / "sphere.lht";
-  writeLhtFile(path, lht);
-  const LhtFile back = readLhtFile(path, lht.objectHash);
-  std::filesystem::remove_all(dir);
-  CHECK(back.box.cells() == lht.box.cells());
-  CHECK(back.box.lambda() == lht.box.lambda());
-  CHECK(back.box.oversample() == lht.box.oversample());
-  CHECK(back.box.origin() == lht.box.origin());
-  CHECK(back.pairs == 18750);
-  CHECK(back.hits == 3486);
-  CHECK(back.table.entryCount() == lht.table.entryCount());
-  CHECK(back.table.bucketCount() == lht.table.bucketCount());
-  REQUIRE(back.table.slots().size() == lht.table.slots().size());
-  CHECK(std::memcmp(back.table.slots().data(), lht.table.slots().data(), lht.table.bytes()) == 0);
-  CHECK(serializeLht(back) == serializeLht(lht));
-  CHECK(serializeLht(lht).size() == kLhtHeaderBytes + lht.table.bytes() + 8);
+  // A version-1 file is the version-2 thesis file with 1 in the version and 0 at byte 18.
+  std::vector<std::uint8_t> v1 = serializeLht(lht);
+  REQUIRE(v1[18] == 0);
+  v1[8] = 1;
+  v1 = resealed(v1);
+  const LhtFile back = parseLht(v1, "old.lht", lht.objectHash, LhtPrecision::Thesis);
+  CHECK(back.version == 1);
+  CHECK(back.table.precision() == LhtPrecision::Thesis);
+  CHECK(back.table.slotBytes() == lht.table.slotBytes());
+  const std::string message = refusal(v1, std::nullopt, LhtPrecision::Wide);
+  CHECK(message.find("'thesis' entries") != std::string::npos);
 }
 
 TEST_CASE("lht file: every kind of bad file is refused with a message naming it and the fix") {
@@ -110,8 +142,27 @@ TEST_CASE("lht file: every kind of bad file is refused with a message naming it 
   }
   SECTION("wrong version") {
     std::vector<std::uint8_t> bad = good;
-    bad[8] = 2;
-    CHECK(refusal(bad).find("version 2") != std::string::npos);
+    bad[8] = 3;
+    CHECK(refusal(bad).find("version 3") != std::string::npos);
+  }
+  SECTION("an unknown precision code, even with a valid checksum") {
+    std::vector<std::uint8_t> bad = good;
+    bad[18] = 7;
+    const std::string message = refusal(resealed(bad));
+    CHECK(message.find("precision code 7") != std::string::npos);
+    CHECK(message.find("0 thesis, 1 wide, 2 compact") != std::string::npos);
+    CHECK(message.find("lattice rasterize") != std::string::npos);
+  }
+  SECTION("another precision than asked for") {
+    const std::string message = refusal(good, lht.objectHash, LhtPrecision::Compact);
+    CHECK(message.find("bad.lht") != std::string::npos);
+    CHECK(message.find("'thesis' entries (14 bytes each)") != std::string::npos);
+    CHECK(message.find("'compact'") != std::string::npos);
+  }
+  SECTION("a precision code that changes the stride is caught as a size mismatch") {
+    std::vector<std::uint8_t> bad = good;
+    bad[18] = static_cast<std::uint8_t>(LhtPrecision::Wide);
+    CHECK(refusal(resealed(bad)).find("truncated or padded") != std::string::npos);
   }
   SECTION("rasterized from another object") {
     const std::string message = refusal(good, sphereObject(0.6).hash());
@@ -119,11 +170,9 @@ TEST_CASE("lht file: every kind of bad file is refused with a message naming it 
   }
   SECTION("a checksum-valid file with inconsistent counts") {
     // Forge: bump the entry count and re-seal the checksum; the chain check catches it.
-    std::vector<std::uint8_t> bad(good.begin(), good.end() - 8);
+    std::vector<std::uint8_t> bad = good;
     bad[84] = static_cast<std::uint8_t>(bad[84] + 1);
-    const std::uint64_t sum = fnv1a64(bad);
-    for (int b = 0; b < 8; ++b) bad.push_back(static_cast<std::uint8_t>(sum >> (8 * b)));
-    CHECK(refusal(bad).find("inconsistent") != std::string::npos);
+    CHECK(refusal(resealed(bad)).find("inconsistent") != std::string::npos);
   }
   SECTION("a missing file") {
     CHECK_THROWS_AS(readLhtFile("/nonexistent/dir/x.lht"), Error);

@@ -1,5 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <set>
 
 #include "lht/lattice_object.hpp"
@@ -27,35 +30,41 @@ std::vector<RasterHit> syntheticHits(int count) {
 
 }  // namespace
 
-TEST_CASE("LHT: entries are the thesis's 14 bytes and quantize as documented") {
-  CHECK(sizeof(LhtEntry) == 14);
-  CHECK(quantizeS(0.0) == 0);
-  CHECK(quantizeS(1.0) == 255);
-  CHECK(quantizeS(0.5) == 128);
+TEST_CASE("LHT: the thesis entry is 14 bytes laid out as sec. 2.3 says") {
+  CHECK(entryBytes(LhtPrecision::Thesis) == 14);
+  CHECK(quantizeFraction(0.0, 255) == 0);
+  CHECK(quantizeFraction(1.0, 255) == 255);
+  CHECK(quantizeFraction(0.5, 255) == 128);
   CHECK(quantizeNormalComponent(-1.0) == -127);
   CHECK(quantizeNormalComponent(1.0) == 127);
-  RasterHit h{{1, 2, 3}, {4, 5, 6}, 0.3, glm::normalize(Vec3d(1, -2, 2))};
-  const LhtEntry e = encodeEntry(h);
-  CHECK(e.key[0] == 1);
-  CHECK(e.key[5] == 6);
-  const LhtHit back = decodeEntry(e);
+  const RasterHit h{{1, 2, 3}, {4, 5, 6}, 0.3, glm::normalize(Vec3d(1, -2, 2))};
+  std::uint8_t e[14] = {};
+  encodeEntry(h, LhtPrecision::Thesis, e);
+  // key, s * 255 rounded (76.5 -> 77), then n * 127 rounded per component, signed.
+  const std::uint8_t expected[10] = {1, 2, 3, 4, 5, 6, 77, 42, std::uint8_t(-85), 85};
+  CHECK(std::equal(expected, expected + 10, e));
+  const LhtHit back = decodeEntry(e, LhtPrecision::Thesis);
   CHECK(back.s == Approx(0.3).margin(0.5 / 255));
   CHECK(back.normal.y == Approx(-2.0 / 3).margin(1.0 / 127));
 }
 
-TEST_CASE("LHT: every entry is found and every absent key misses") {
+TEST_CASE("LHT: every entry is found and every absent key misses at every precision") {
+  for (const LhtPrecisionInfo& form : kLhtPrecisions)
   for (double load : {0.5, 1.0, 2.0, 4.0}) {
-    INFO("load factor " << load);
+    INFO(form.name << ", load factor " << load);
     const auto hits = syntheticHits(3000);
-    const LatticeHashTable table(hits, load);
+    const LatticeHashTable table(hits, form.precision, load);
+    CHECK(table.precision() == form.precision);
     CHECK(table.entryCount() == 3000);
     CHECK(table.loadFactor() == Approx(load).epsilon(0.01));
-    CHECK(table.bytes() == (table.bucketCount() + table.overflowCount()) * 14);
+    CHECK(table.entryStride() == form.entryBytes);
+    CHECK(table.bytes() == (table.bucketCount() + table.overflowCount()) * form.entryBytes);
+    const double normalError = 2.0 * std::sin(form.maxNormalErrorDegrees * std::numbers::pi / 360.0);  // chord
     for (const RasterHit& h : hits) {
       const auto found = table.find(h.in, h.out);
       REQUIRE(found);
-      CHECK(found->s == Approx(h.s).margin(0.5 / 255));
-      CHECK(found->normal.x == Approx(h.normal.x).margin(1.0 / 127));
+      CHECK(std::abs(found->s - h.s) <= form.maxSError);
+      CHECK(glm::length(found->normal - h.normal) <= normalError);
       CHECK_FALSE(table.find(h.out, h.in));  // reversed: a different pair
     }
     CHECK_FALSE(table.find({200, 200, 200}, {1, 1, 1}));
@@ -67,33 +76,51 @@ TEST_CASE("LHT: every entry is found and every absent key misses") {
   }
 }
 
-TEST_CASE("LHT: a table of a real lattice, its size and chains") {
+TEST_CASE("LHT: a table of a real lattice at every precision: its size and chains") {
   const LatticeObject sphere = sphereObject(0.5);
   const LatticeBox box(sphere.bounds, 1.0, 2.0);
   RasterOptions options;
   options.progress = false;
   const RasterResult raster = rasterize(box, *sphere.primitive, options);
-  const LatticeHashTable table(raster.hits);
-  CHECK(table.entryCount() == raster.hits.size());
-  CHECK(table.bytesPerEntry() >= 14.0);
-  CHECK(table.bytesPerEntry() < 17.0);  // load factor 2: ~15.0 expected
-  for (const RasterHit& h : raster.hits) CHECK(table.find(h.in, h.out));
+  const LatticeHashTable thesis(raster.hits);
+  for (const LhtPrecisionInfo& form : kLhtPrecisions) {
+    INFO(form.name);
+    const LatticeHashTable table(raster.hits, form.precision);
+    CHECK(table.entryCount() == raster.hits.size());
+    // Same hashing, same chains: only the stride differs between forms.
+    CHECK(table.bucketCount() == thesis.bucketCount());
+    CHECK(table.overflowCount() == thesis.overflowCount());
+    CHECK(table.bytes() == thesis.slotCount() * form.entryBytes);
+    const double e = double(form.entryBytes);
+    CHECK(table.bytesPerEntry() >= e);
+    CHECK(table.bytesPerEntry() < e * 17.0 / 14.0);  // load factor 2: ~1.07 slots per entry expected
+    for (const RasterHit& h : raster.hits) {
+      const auto found = table.find(h.in, h.out);
+      REQUIRE(found);
+      CHECK(std::abs(found->s - h.s) <= form.maxSError);
+    }
+  }
 }
 
 TEST_CASE("LHT: slots from a file are checked before they are trusted") {
   const auto hits = syntheticHits(100);
-  const LatticeHashTable table(hits, 2.0);
-  CHECK_NOTHROW(LatticeHashTable(table.slots(), table.bucketCount(), table.entryCount()));
-  CHECK_THROWS_AS(LatticeHashTable(table.slots(), table.bucketCount(), table.entryCount() + 1), Error);
-  CHECK_THROWS_AS(LatticeHashTable(table.slots(), 0, table.entryCount()), Error);
-  CHECK_THROWS_AS(LatticeHashTable(table.slots(), table.slots().size() + 1, table.entryCount()), Error);
-  // A chain that loops back on itself must be refused, not followed forever.
-  auto slots = table.slots();
-  for (std::size_t i = table.bucketCount(); i < slots.size(); ++i) {
-    const std::uint32_t self = static_cast<std::uint32_t>(i);
-    for (int b = 0; b < 4; ++b) slots[i].next[b] = static_cast<std::uint8_t>(self >> (8 * b));
-    break;
+  for (const LhtPrecisionInfo& form : kLhtPrecisions) {
+    INFO(form.name);
+    const LatticeHashTable table(hits, form.precision, 2.0);
+    const auto& bytes = table.slotBytes();
+    CHECK_NOTHROW(LatticeHashTable(form.precision, bytes, table.bucketCount(), table.entryCount()));
+    CHECK_THROWS_AS(LatticeHashTable(form.precision, bytes, table.bucketCount(), table.entryCount() + 1), Error);
+    CHECK_THROWS_AS(LatticeHashTable(form.precision, bytes, 0, table.entryCount()), Error);
+    CHECK_THROWS_AS(LatticeHashTable(form.precision, bytes, table.slotCount() + 1, table.entryCount()), Error);
+    // Bytes that are not whole entries of this precision.
+    std::vector<std::uint8_t> ragged(bytes.begin(), bytes.end() - 1);
+    CHECK_THROWS_AS(LatticeHashTable(form.precision, ragged, table.bucketCount(), table.entryCount()), Error);
+    // A chain that loops back on itself must be refused, not followed forever.
+    REQUIRE(table.overflowCount() > 0);
+    std::vector<std::uint8_t> looped = bytes;
+    const std::uint64_t first = table.bucketCount();
+    storeLittleEndian32(looped.data() + (first + 1) * form.entryBytes - kEntryNextBytes,
+                        static_cast<std::uint32_t>(first));
+    CHECK_THROWS_AS(LatticeHashTable(form.precision, looped, table.bucketCount(), table.entryCount()), Error);
   }
-  REQUIRE(table.overflowCount() > 0);
-  CHECK_THROWS_AS(LatticeHashTable(slots, table.bucketCount(), table.entryCount()), Error);
 }

@@ -65,7 +65,11 @@ inline bool isFloatingPointInstruction(const std::string& line) {
   return false;
 }
 
-inline FixedPointScan scanFixedPointCode(const std::string& library) {
+// extraFunctions: substrings of further function names to scan as
+// fixed-point per-pixel code although their names do not say Fixed<32>
+// (integer helpers the Fixed32 path calls, e.g. the LHT entry decoder).
+inline FixedPointScan scanFixedPointCode(const std::string& library,
+                                         const std::vector<std::string>& extraFunctions = {}) {
   FixedPointScan scan;
   const std::string command = "objdump -d -C --no-show-raw-insn '" + library + "' 2>/dev/null";
   FILE* pipe = ::popen(command.c_str(), "r");
@@ -78,6 +82,7 @@ inline FixedPointScan scanFixedPointCode(const std::string& library) {
     if (line.size() > 3 && line.compare(line.size() - 3, 3, ">:\n") == 0) {
       current = line.substr(line.find('<') + 1);
       inFixed = current.find("Fixed<32>") != std::string::npos || current.find("fixed_roots::") != std::string::npos;
+      for (const std::string& extra : extraFunctions) inFixed = inFixed || current.find(extra) != std::string::npos;
       if (inFixed) scan.fixedFunctions.insert(current);
       continue;
     }

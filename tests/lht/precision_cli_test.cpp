@@ -1,0 +1,144 @@
+// The entry-precision knob from the command line, run through the real
+// `lattice` binary (test_lht depends on it): `rasterize --precision`,
+// `render --lht-precision` overriding the scene, and `lht-info` reporting it.
+#include <catch2/catch.hpp>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "lht/lht_file.hpp"
+#include "tests/support/run_lattice.hpp"
+
+using namespace lattice;
+using namespace lattice::lht;
+using lattice::testing::runLattice;
+
+namespace {
+
+// A tiny scene whose lattice is cached next to it.
+std::string ballScene(const std::string& extraLatticeKeys = "") {
+  return R"(
+[options]
+width = 8
+height = 8
+[camera]
+type = "look_at"
+eye = [0.0, 0.0, -4.0]
+target = [0.0, 0.0, 0.0]
+fov = 40
+[[lights]]
+position = [2.0, 3.0, -4.0]
+intensity = 20.0
+[[lattices]]
+name = "ball"
+spacing = 1.0
+oversample = 2
+cache = "ball.lht"
+)" + extraLatticeKeys + R"(
+object = { type = "sphere", radius = 0.5 }
+[[objects]]
+type = "lattice"
+lattice = "ball"
+)";
+}
+
+class TempDir {
+ public:
+  TempDir() : path_(std::filesystem::temp_directory_path() / fmt::format("lattice-precision-cli-{}", ::getpid())) {
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDir() { std::filesystem::remove_all(path_); }
+  std::string operator/(const std::string& name) const { return (path_ / name).string(); }
+
+ private:
+  std::filesystem::path path_;
+};
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+TEST_CASE("precision CLI: rasterize --precision writes that form and lht-info reports it") {
+  INFO("lattice is not built (" << lattice::testing::latticeBinary() << "): build the `lattice` target or set LATTICE_EXE");
+  REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
+  const TempDir dir;
+  for (const LhtPrecisionInfo& form : kLhtPrecisions) {
+    INFO(form.name);
+    const std::string lht = dir / fmt::format("{}.lht", form.name);
+    const auto run = runLattice(fmt::format("rasterize --shape sphere --oversample 2 --precision {} -o '{}' --stats >'{}'",
+                                            form.name, lht, dir / "stats.txt"));
+    INFO(run.stderrText);
+    REQUIRE(run.exitCode == 0);
+    CHECK(readText(dir / "stats.txt").find(fmt::format("precision={}", form.name)) != std::string::npos);
+    const LhtFile read = readLhtFile(lht);
+    CHECK(read.table.precision() == form.precision);
+    CHECK(read.table.entryCount() == 1562);  // the sphere at f_lat 2, whatever the precision
+    REQUIRE(runLattice(fmt::format("lht-info '{}' >'{}'", lht, dir / "info.txt")).exitCode == 0);
+    const std::string info = readText(dir / "info.txt");
+    CHECK(info.find(fmt::format("precision:     {} ({}-byte entries", form.name, form.entryBytes)) !=
+          std::string::npos);
+    CHECK(info.find(fmt::format("{} bytes per slot", form.entryBytes)) != std::string::npos);
+    CHECK(info.find("format:        version 2") != std::string::npos);
+  }
+  const auto bad = runLattice(fmt::format("rasterize --shape sphere --precision huge -o '{}'", dir / "x.lht"));
+  CHECK(bad.exitCode == 2);
+  CHECK(bad.stderrText.find("--precision: unknown entry precision 'huge'") != std::string::npos);
+  CHECK(bad.stderrText.find("thesis (14 B/entry), wide (16 B/entry), compact (13 B/entry)") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "x.lht"));
+}
+
+TEST_CASE("precision CLI: rasterize --scene takes the scene's precision unless --precision overrides it") {
+  REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
+  const TempDir dir;
+  std::ofstream(dir / "s.toml") << ballScene("precision = \"compact\"");
+  REQUIRE(runLattice(fmt::format("rasterize --scene '{}' --name ball -o '{}'", dir / "s.toml", dir / "a.lht"))
+              .exitCode == 0);
+  CHECK(readLhtFile(dir / "a.lht").table.precision() == LhtPrecision::Compact);
+  REQUIRE(runLattice(fmt::format("rasterize --scene '{}' --name ball --precision wide -o '{}'", dir / "s.toml",
+                                 dir / "b.lht"))
+              .exitCode == 0);
+  CHECK(readLhtFile(dir / "b.lht").table.precision() == LhtPrecision::Wide);
+}
+
+TEST_CASE("precision CLI: render --lht-precision overrides the scene and a cache of another precision is refused") {
+  REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
+  const TempDir dir;
+  std::ofstream(dir / "s.toml") << ballScene();
+  const auto wide = runLattice(fmt::format("render '{}' --lht-precision wide -o '{}'", dir / "s.toml", dir / "w.png"));
+  INFO(wide.stderrText);
+  REQUIRE(wide.exitCode == 0);
+  CHECK(readLhtFile(dir / "ball.lht").table.precision() == LhtPrecision::Wide);  // rasterized at the override
+  // The scene asks for the thesis's entry: the wide cache must be refused, naming both.
+  const auto stale = runLattice(fmt::format("render '{}' -o '{}'", dir / "s.toml", dir / "t.png"));
+  CHECK(stale.exitCode == 3);
+  CHECK(stale.stderrText.find("ball.lht") != std::string::npos);
+  CHECK(stale.stderrText.find("'wide' entries (16 bytes each) but 'thesis' entries were asked for") !=
+        std::string::npos);
+  CHECK(runLattice(fmt::format("render '{}' --lht-precision wide -o '{}'", dir / "s.toml", dir / "w2.png")).exitCode ==
+        0);
+  const auto bad = runLattice(fmt::format("render '{}' --lht-precision 16 -o '{}'", dir / "s.toml", dir / "x.png"));
+  CHECK(bad.exitCode == 2);
+  CHECK(bad.stderrText.find("--lht-precision: unknown entry precision '16'") != std::string::npos);
+  CHECK(bad.stderrText.find("wide (16 B/entry)") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
+TEST_CASE("precision CLI: a bad precision in a scene names the file and line and column and the valid values") {
+  REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
+  const TempDir dir;
+  std::ofstream(dir / "s.toml") << ballScene("precision = \"double\"");
+  const auto run = runLattice(fmt::format("render '{}' -o '{}'", dir / "s.toml", dir / "x.png"));
+  CHECK(run.exitCode == 3);
+  CHECK(run.stderrText.find(dir / "s.toml:18:13:") != std::string::npos);
+  CHECK(run.stderrText.find("unknown LHT entry `precision` 'double'") != std::string::npos);
+  CHECK(run.stderrText.find("thesis (14 B/entry), wide (16 B/entry), compact (13 B/entry)") != std::string::npos);
+}
