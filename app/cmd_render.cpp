@@ -8,6 +8,8 @@
 //                     emulator's picture of that very stream (-o)
 #include <fmt/format.h>
 
+#include <malloc.h>
+
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -220,23 +222,17 @@ void renderStream(lattice::Renderer<T>& renderer, const RenderCommandOptions& o,
   }
 }
 
-// What --memory-budget plans with: the resident memory now that the scene
-// is built, the picture, and the images the output device will hold.
-template <typename T>
-lattice::app::MemoryPlanRequest budgetRequest(std::uint64_t budget, const lattice::Renderer<T>& renderer,
+// What --memory-budget plans with: the picture, the quantizer's options and
+// the images the output device will hold
+// (resident and peakSoFar are left for the caller to measure).
+lattice::app::MemoryPlanRequest budgetRequest(std::uint64_t budget, const lattice::RenderSettings& settings,
                                               const RenderCommandOptions& o, const CLI::App& cmd, bool streamDevice,
                                               bool apollo, int deviceWidth, int deviceHeight,
                                               const lattice::PipelineOptions& pipeline) {
-  const auto resident = lattice::residentMemory();
-  if (!resident)
-    throw Error(ErrorKind::Budget, "--memory-budget needs /proc/self/status to measure resident memory, and this "
-                                   "system has none; render without the budget");
   lattice::app::MemoryPlanRequest request;
   request.budget = budget;
-  request.resident = resident->current;
-  request.peakSoFar = resident->peak;
-  request.width = renderer.width();
-  request.height = renderer.height();
+  request.width = settings.width;
+  request.height = settings.height;
   request.pipeline = pipeline;
   request.modeChosenByUser = cmd.count("--mode") > 0 || cmd.count("--sample") > 0;
   request.quantized = streamDevice || apollo;
@@ -250,6 +246,34 @@ lattice::app::MemoryPlanRequest budgetRequest(std::uint64_t budget, const lattic
   if (streamDevice && !o.output.empty())
     request.deviceItems.push_back({"emulator screen", 3 * pixels(deviceWidth, deviceHeight)});
   return request;
+}
+
+lattice::ResidentMemory measuredResidentMemory() {
+  const auto resident = lattice::residentMemory();
+  if (!resident)
+    throw Error(ErrorKind::Budget, "--memory-budget needs /proc/self/status to measure resident memory, and this "
+                                   "system has none; render without the budget");
+  return *resident;
+}
+
+// Lattices rasterized in this run are packed in the form the budget can
+// hold (docs/memory.md): their entry count is only known then.
+void packLatticesWithin(const lattice::app::MemoryPlanRequest& request,
+                        const std::vector<lattice::lht::LatticeDefinitionPtr>& lattices) {
+  const std::uint64_t leastOutput = lattice::app::leastOutputBytes(request);
+  for (const lattice::lht::LatticeDefinitionPtr& lattice : lattices) {
+    lattice->packing = [budget = request.budget, leastOutput, name = lattice->name,
+                        requested = lattice->precision](std::uint64_t entries, std::uint64_t hitListBytes) {
+      const lattice::app::TablePacking packing = lattice::app::chooseTablePacking(
+          budget, measuredResidentMemory().current, hitListBytes, leastOutput, entries, requested);
+      if (packing.form != requested)
+        fmt::print(stderr, "lattice render: memory plan: lattice '{}' packed as {} ({}) instead of {} to fit the "
+                           "budget; not written to its cache\n",
+                   name, lattice::lht::lhtPrecisionName(packing.form), lattice::formatBytes(packing.tableBytes),
+                   lattice::lht::lhtPrecisionName(requested));
+      return packing.form;
+    };
+  }
 }
 
 // The plan is an estimate: say so, loudly, when the measured peak broke it.
@@ -267,7 +291,8 @@ void checkPeakAgainst(std::uint64_t budget) {
 }
 
 template <typename T>
-void renderWith(const lattice::SceneDesc& scene, const RenderCommandOptions& o, const CLI::App& cmd) {
+void renderWith(const lattice::lht::SceneWithLattices& loaded, const RenderCommandOptions& o, const CLI::App& cmd) {
+  const lattice::SceneDesc& scene = loaded.scene;
   const auto start = std::chrono::steady_clock::now();
   lattice::PipelineOptions pipeline = lattice::app::toPipelineOptions(o.pipeline, cmd);
   const bool toPort = cmd.count("--port") > 0;
@@ -283,13 +308,22 @@ void renderWith(const lattice::SceneDesc& scene, const RenderCommandOptions& o, 
     deviceWidth = apollo->width;
     deviceHeight = apollo->height;
   }
-  lattice::Renderer<T> renderer(scene, renderSettings(o, scene, deviceWidth, deviceHeight));
-  std::optional<std::uint64_t> budget;
+  const lattice::RenderSettings settings = renderSettings(o, scene, deviceWidth, deviceHeight);
+  std::optional<lattice::app::MemoryPlanRequest> budget;
   if (!o.memoryBudget.empty()) {
-    budget = lattice::parseByteCount(o.memoryBudget, "--memory-budget");
-    const lattice::app::MemoryPlan plan =
-        lattice::app::planMemory(budgetRequest(*budget, renderer, o, cmd, device.has_value(), apollo.has_value(),
-                                               deviceWidth, deviceHeight, pipeline));
+    budget = budgetRequest(lattice::parseByteCount(o.memoryBudget, "--memory-budget"), settings, o, cmd,
+                           device.has_value(), apollo.has_value(), deviceWidth, deviceHeight, pipeline);
+    packLatticesWithin(*budget, loaded.lattices);
+  }
+  lattice::Renderer<T> renderer(scene, settings);
+  if (budget) {
+    // The rasterizer's per-point hit lists are many small blocks, freed by
+    // now but kept by the allocator; give those pages back before measuring.
+    ::malloc_trim(0);
+    const lattice::ResidentMemory resident = measuredResidentMemory();
+    budget->resident = resident.current;
+    budget->peakSoFar = resident.peak;
+    const lattice::app::MemoryPlan plan = lattice::app::planMemory(*budget);
     pipeline.mode = plan.mode;
     fmt::print(stderr, "lattice render: memory plan: {}\n", plan.summary());
   }
@@ -308,7 +342,7 @@ void renderWith(const lattice::SceneDesc& scene, const RenderCommandOptions& o, 
   fmt::print(stderr, "lattice render: {}: {}x{}, {:.2f} s, {} rays ({} arithmetic, {} threads){}\n", o.scene,
              renderer.width(), renderer.height(), seconds, renderer.raysTraced(), o.arith, renderer.threads(),
              o.output.empty() ? "" : fmt::format(", picture {}", o.output));
-  if (budget) checkPeakAgainst(*budget);
+  if (budget) checkPeakAgainst(budget->budget);
 }
 
 void runRender(const RenderCommandOptions& o, const CLI::App& cmd) {
@@ -319,15 +353,16 @@ void runRender(const RenderCommandOptions& o, const CLI::App& cmd) {
   // Scenes may hold [[lattices]]; their tables are built when the renderer
   // is, so the override below is in time.
   lattice::lht::SceneWithLattices loaded = lattice::lht::loadSceneWithLattices(o.scene);
-  if (precision)
-    for (const lattice::lht::LatticeDefinitionPtr& lattice : loaded.lattices) lattice->precision = *precision;
-  const lattice::SceneDesc& scene = loaded.scene;
+  for (const lattice::lht::LatticeDefinitionPtr& lattice : loaded.lattices) {
+    if (precision) lattice->precision = *precision;
+    lattice->rasterThreads = static_cast<unsigned>(o.threads);  // --threads 1 means one thread throughout
+  }
   if (o.arith == "float")
-    renderWith<float>(scene, o, cmd);
+    renderWith<float>(loaded, o, cmd);
   else if (o.arith == "fixed")
-    renderWith<lattice::Fixed32>(scene, o, cmd);
+    renderWith<lattice::Fixed32>(loaded, o, cmd);
   else
-    renderWith<double>(scene, o, cmd);
+    renderWith<double>(loaded, o, cmd);
 }
 
 void addRender(CLI::App& root) {

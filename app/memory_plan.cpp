@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "lht/table.hpp"
 #include "util/error.hpp"
 #include "util/resident_memory.hpp"
 
@@ -103,6 +104,27 @@ MemoryPlan planMemory(const MemoryPlanRequest& request) {
                          formatBytes(smallest.predictedPeak), kBuildAdvice);
   throw Error(ErrorKind::Budget, fmt::format("--memory-budget {} cannot be met: {}.{}", budget, smallest.summary(),
                                              advice));
+}
+
+TablePacking chooseTablePacking(std::uint64_t budget, std::uint64_t resident, std::uint64_t hitListBytes,
+                                std::uint64_t leastOutput, std::uint64_t entries, lht::LhtPrecision requested) {
+  const auto fits = [&](lht::LhtPrecision form) {
+    const std::uint64_t table = lht::LatticeHashTable::expectedBytes(entries, form);
+    const std::uint64_t later = (resident > hitListBytes ? resident - hitListBytes : 0) + table + leastOutput;
+    return resident + table <= budget && later <= budget;
+  };
+  const auto packing = [&](lht::LhtPrecision form) {
+    return TablePacking{form, lht::LatticeHashTable::expectedBytes(entries, form)};
+  };
+  if (fits(requested)) return packing(requested);
+  // The forms no larger than the one asked for, smallest first.
+  std::vector<lht::LhtPrecisionInfo> smaller;
+  for (const lht::LhtPrecisionInfo& info : lht::kLhtPrecisions)
+    if (info.entryBytes < lht::entryBytes(requested)) smaller.push_back(info);
+  std::sort(smaller.begin(), smaller.end(), [](const auto& a, const auto& b) { return a.entryBytes < b.entryBytes; });
+  for (const lht::LhtPrecisionInfo& info : smaller)
+    if (fits(info.precision)) return packing(info.precision);
+  return packing(requested);
 }
 
 }  // namespace lattice::app

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "lht/lht_precision.hpp"
 #include "pipeline/run_pipeline.hpp"
 
 namespace lattice::app {
@@ -55,5 +56,18 @@ MemoryPlan planMemory(const MemoryPlanRequest& request);
 // request allows, the device's images, the allowance), whatever is resident:
 // the room a lattice table must leave when it is packed before the plan.
 std::uint64_t leastOutputBytes(const MemoryPlanRequest& request);
+
+// The LHT form for a freshly rasterized table of `entries` entries, chosen
+// while its hit list (hitListBytes) is still resident: `requested` if the
+// process can hold it both now (resident + table) and later (the hit list
+// freed, plus leastOutput), else the smallest form that can, else
+// `requested` (planMemory then refuses with the whole picture). Never a form
+// larger than `requested`.
+struct TablePacking {
+  lht::LhtPrecision form = lht::LhtPrecision::Thesis;
+  std::uint64_t tableBytes = 0;  // expected, in that form
+};
+TablePacking chooseTablePacking(std::uint64_t budget, std::uint64_t resident, std::uint64_t hitListBytes,
+                                std::uint64_t leastOutput, std::uint64_t entries, lht::LhtPrecision requested);
 
 }  // namespace lattice::app

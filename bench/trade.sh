@@ -112,7 +112,8 @@ latticeRow() {  # group setting scene f tag render-args...
     read -r first _ < <(timed "$v" "$@" -o "$work/img.png")
   fi
   read -r t m < <(measure "$v" "$@" -o "$work/img.png")
-  [[ -n $first ]] && rasterSeconds[$tag]=$(awk -v a="$first" -v b="$t" 'BEGIN { printf "%.3f", a - b }')
+  # A difference of two 10 ms-resolution timings: a small table can come out negative; say 0.
+  [[ -n $first ]] && rasterSeconds[$tag]=$(awk -v a="$first" -v b="$t" 'BEGIN { d = a - b; printf "%.3f", d > 0 ? d : 0 }')
   row "$group" "$setting" "$t" "$m" "$(tableBytes "$work/$tag.lht")" "${rasterSeconds[$tag]:-0}" "$work/img.png"
 }
 

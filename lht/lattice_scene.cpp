@@ -172,12 +172,12 @@ NodeDesc parseScatterNode(const toml::table& table, ParseContext& context) {
 
 }  // namespace
 
-std::uint64_t LatticeDefinition::hash() const {
+std::uint64_t LatticeDefinition::hashFor(LhtPrecision form) const {
   // The thesis's precision adds nothing, so caches written before the
   // precision existed (all of them thesis) keep their hash.
-  const std::string form =
-      precision == LhtPrecision::Thesis ? "" : fmt::format(" precision={}", lhtPrecisionName(precision));
-  return fnv1a64(fmt::format("lattice spacing={:.17g} oversample={:.17g}{} object={}", lambda, oversample, form,
+  const std::string formText =
+      form == LhtPrecision::Thesis ? "" : fmt::format(" precision={}", lhtPrecisionName(form));
+  return fnv1a64(fmt::format("lattice spacing={:.17g} oversample={:.17g}{} object={}", lambda, oversample, formText,
                              objectText));
 }
 
@@ -190,10 +190,12 @@ LhtFile LatticeDefinition::rasterizeNow(bool progress, RasterStats* stats, unsig
     options.progress = progress;
     options.threads = threads;
     const RasterResult raster = rasterize(lht.box, *solid.primitive, options);
-    lht.objectHash = hash();
+    const LhtPrecision form =
+        packing ? packing(raster.hits.size(), raster.hits.capacity() * sizeof(RasterHit)) : precision;
+    lht.objectHash = hashFor(form);
     lht.pairs = raster.stats.pairs;
     lht.hits = raster.stats.hits;
-    lht.table = LatticeHashTable(raster.hits, precision);
+    lht.table = LatticeHashTable(raster.hits, form);
     if (stats) *stats = raster.stats;
     return lht;
   } catch (const Error& e) {
@@ -213,8 +215,8 @@ std::shared_ptr<const LhtFile> LatticeDefinition::table(bool progress) const {
       table_ = std::make_shared<const LhtFile>(readLhtFile(*cache, hash(), precision));
       return;
     }
-    auto lht = std::make_shared<const LhtFile>(rasterizeNow(progress));
-    if (cache) writeLhtFile(*cache, *lht);
+    auto lht = std::make_shared<const LhtFile>(rasterizeNow(progress, nullptr, rasterThreads));
+    if (cache && lht->table.precision() == precision) writeLhtFile(*cache, *lht);
     table_ = std::move(lht);
   });
   return table_;

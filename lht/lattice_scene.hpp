@@ -30,6 +30,7 @@
 // an instance is built as its exact object instead (the thesis's "full ray
 // trace"); with latticeShadows off, lattices cast no shadows (plate 3).
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -54,11 +55,19 @@ class LatticeDefinition {
   // The table's entry form. A plain field: `lattice render --lht-precision`
   // (or a memory budget) may set it any time before table() first runs.
   LhtPrecision precision = LhtPrecision::Thesis;
+
+  // Under a memory budget: the entry form to pack a freshly rasterized table
+  // in, given its entry count and the bytes its hit list holds meanwhile
+  // (unset: `precision`). A cache is read as named whatever this says; a
+  // table packed in another form than `precision` is not written to it.
+  std::function<LhtPrecision(std::uint64_t entries, std::uint64_t hitListBytes)> packing;
+  unsigned rasterThreads = 0;  // threads rasterizing the table; 0: all cores
   std::string origin;      // "scene.toml:12:1"
 
   // Hash of everything that decides the table's contents (precision
   // included, so a cache of another precision is stale).
-  std::uint64_t hash() const;
+  std::uint64_t hash() const { return hashFor(precision); }
+  std::uint64_t hashFor(LhtPrecision form) const;
   // The rasterized table: read from the cache when it matches, else
   // rasterized (and written to the cache if one is named). Thread-safe; done once.
   std::shared_ptr<const LhtFile> table(bool progress = true) const;

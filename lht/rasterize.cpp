@@ -53,15 +53,21 @@ class Rasterizer {
     if (!options_.progress) progress.setEnabled(false);
 
     std::vector<RasterStats> stats(threads);
-    std::vector<std::thread> workers;
-    for (unsigned w = 0; w < threads; ++w)
-      workers.emplace_back([this, &stats, &progress, w] {
-        for (std::size_t i = next_.fetch_add(1); i < points_.size(); i = next_.fetch_add(1)) {
-          tracePoint(i, stats[w]);
-          progress.advance();
-        }
-      });
-    for (std::thread& t : workers) t.join();
+    const auto work = [this, &stats, &progress](unsigned w) {
+      for (std::size_t i = next_.fetch_add(1); i < points_.size(); i = next_.fetch_add(1)) {
+        tracePoint(i, stats[w]);
+        progress.advance();
+      }
+    };
+    // One thread works in the caller's: a worker thread would get an
+    // allocator arena of its own, resident long after the rasterizer is done.
+    if (threads == 1) {
+      work(0);
+    } else {
+      std::vector<std::thread> workers;
+      for (unsigned w = 0; w < threads; ++w) workers.emplace_back(work, w);
+      for (std::thread& t : workers) t.join();
+    }
     progress.finish();
 
     RasterResult result;
@@ -74,7 +80,12 @@ class Rasterizer {
     std::size_t total = 0;
     for (const auto& list : perPoint_) total += list.size();
     result.hits.reserve(total);
-    for (auto& list : perPoint_) result.hits.insert(result.hits.end(), list.begin(), list.end());
+    // Each point's list is released once copied, so the hits are not held
+    // twice at the end (the peak a memory budget sees).
+    for (auto& list : perPoint_) {
+      result.hits.insert(result.hits.end(), list.begin(), list.end());
+      std::vector<RasterHit>().swap(list);
+    }
     result.stats.buildMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return result;

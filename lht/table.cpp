@@ -33,6 +33,29 @@ bool LatticeHashTable::isEmpty(std::uint64_t index) const {
   return std::all_of(key, key + kEntryKeyBytes, [](std::uint8_t b) { return b == 0; });
 }
 
+std::uint64_t LatticeHashTable::slotsFor(const std::vector<RasterHit>& hits, std::uint64_t bucketCount) {
+  // Every bucket holds its first key in its primary slot; every other key of
+  // the bucket takes one overflow slot.
+  std::vector<bool> used(bucketCount, false);
+  std::uint64_t usedBuckets = 0;
+  std::uint8_t key[kEntryKeyBytes];
+  for (const RasterHit& hit : hits) {
+    makeKey(hit.in, hit.out, key);
+    const std::uint64_t b = bucketOf(key, bucketCount);
+    if (!used[b]) used[b] = true, ++usedBuckets;
+  }
+  return bucketCount + hits.size() - usedBuckets;
+}
+
+std::uint64_t LatticeHashTable::expectedBytes(std::uint64_t entries, LhtPrecision precision, double loadFactor) {
+  // Keys spread like a Poisson process over the buckets (Fibonacci hashing
+  // of distinct keys): a bucket is empty with probability exp(-loadFactor),
+  // and only empty buckets cost a slot beyond one per entry.
+  const double buckets = std::max(1.0, std::ceil(double(entries) / loadFactor));
+  const double slots = double(entries) + buckets * std::exp(-loadFactor);
+  return static_cast<std::uint64_t>(std::ceil(slots)) * entryBytes(precision);
+}
+
 std::uint64_t LatticeHashTable::bucketOf(const std::uint8_t key[6], std::uint64_t bucketCount) {
   std::uint64_t k = 0;
   for (int b = 0; b < 6; ++b) k |= std::uint64_t(key[b]) << (8 * b);
@@ -49,6 +72,9 @@ LatticeHashTable::LatticeHashTable(const std::vector<RasterHit>& hits, LhtPrecis
   entries_ = hits.size();
   if (entries_ >= kNoNext) throw Error(ErrorKind::Input, "too many lattice hits for a 4-byte overflow index");
   buckets_ = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::ceil(double(entries_) / loadFactor)));
+  // The exact size first: growing the overflow area by doubling would leave
+  // up to half of the table's memory allocated and unused.
+  slots_.reserve(slotsFor(hits, buckets_) * stride_);
   slots_.assign(buckets_ * stride_, 0);
   for (std::uint64_t b = 0; b < buckets_; ++b) setNext(b, kNoNext);
   std::vector<std::uint8_t> entry(stride_);

@@ -58,6 +58,13 @@ class LatticeHashTable {
   const std::vector<std::uint8_t>& slotBytes() const { return slots_; }
 
   static std::uint64_t bucketOf(const std::uint8_t key[6], std::uint64_t bucketCount);
+  // The slots a table of these hits over bucketCount buckets will have.
+  static std::uint64_t slotsFor(const std::vector<RasterHit>& hits, std::uint64_t bucketCount);
+  // The bytes a table of `entries` hits is expected to take, before it is
+  // built (a memory budget chooses the precision with it); within about 1 %
+  // for tables of thousands of entries.
+  static std::uint64_t expectedBytes(std::uint64_t entries, LhtPrecision precision,
+                                     double loadFactor = kDefaultLoadFactor);
 
  private:
   const std::uint8_t* slot(std::uint64_t index) const { return slots_.data() + index * stride_; }

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "app/memory_plan.hpp"
+#include "lht/table.hpp"
 #include "util/error.hpp"
 
 using lattice::PipelineMode;
@@ -102,4 +103,36 @@ TEST_CASE("app:memory_plan_for_truecolour_has_no_quantizer") {
   const auto plan = planMemory(r);
   CHECK(plan.predictedPeak == r.budget);
   CHECK_THAT(plan.summary(), !Catch::Contains("histogram"));
+}
+
+TEST_CASE("app:memory_plan_packs_a_lattice_table_in_the_form_that_fits") {
+  using lattice::app::chooseTablePacking;
+  using lattice::lht::LhtPrecision;
+  using lattice::lht::LatticeHashTable;
+  constexpr std::uint64_t entries = 100000;
+  const std::uint64_t thesis = LatticeHashTable::expectedBytes(entries, LhtPrecision::Thesis);
+  const std::uint64_t compact = LatticeHashTable::expectedBytes(entries, LhtPrecision::Compact);
+  const std::uint64_t wide = LatticeHashTable::expectedBytes(entries, LhtPrecision::Wide);
+  REQUIRE(compact < thesis);
+  REQUIRE(thesis < wide);
+  const std::uint64_t resident = 4 * MiB, hitList = 4 * MiB, output = 2 * MiB;
+  // While the hit list is alive: resident + table is the binding sum.
+  CHECK(chooseTablePacking(resident + thesis, resident, hitList, output, entries, LhtPrecision::Thesis).form ==
+        LhtPrecision::Thesis);
+  const auto packed = chooseTablePacking(resident + thesis - 1, resident, hitList, output, entries, LhtPrecision::Thesis);
+  CHECK(packed.form == LhtPrecision::Compact);
+  CHECK(packed.tableBytes == compact);
+  // Too small for any form: the requested one (the plan refuses later).
+  CHECK(chooseTablePacking(resident + compact - 1, resident, hitList, output, entries, LhtPrecision::Thesis).form ==
+        LhtPrecision::Thesis);
+  // Wide asked for and no room: the smallest form that fits, never a larger one.
+  CHECK(chooseTablePacking(resident + thesis, resident, hitList, output, entries, LhtPrecision::Wide).form ==
+        LhtPrecision::Compact);
+  CHECK(chooseTablePacking(UINT64_MAX / 2, resident, hitList, output, entries, LhtPrecision::Compact).form ==
+        LhtPrecision::Compact);
+  // After the hit list is freed the output must still fit beside the table.
+  const std::uint64_t smallHitList = 1024;
+  CHECK(chooseTablePacking(resident + thesis + output - smallHitList - 1, resident, smallHitList, output, entries,
+                           LhtPrecision::Thesis)
+            .form == LhtPrecision::Compact);
 }

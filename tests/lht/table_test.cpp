@@ -124,3 +124,19 @@ TEST_CASE("LHT: slots from a file are checked before they are trusted") {
     CHECK_THROWS_AS(LatticeHashTable(form.precision, looped, table.bucketCount(), table.entryCount()), Error);
   }
 }
+
+TEST_CASE("LHT: the table reserves exactly its slots and its expected size is close") {
+  // syntheticHits keeps keys distinct up to 8000 (20 x 20 x 20 inputs).
+  const std::vector<RasterHit> hits = syntheticHits(8000);
+  for (const LhtPrecisionInfo& info : kLhtPrecisions) {
+    INFO(info.name);
+    const LatticeHashTable table(hits, info.precision);
+    // No growth slack: the overflow area was sized before it was filled.
+    CHECK(table.slotBytes().capacity() == table.slotBytes().size());
+    CHECK(LatticeHashTable::slotsFor(hits, table.bucketCount()) == table.slotCount());
+    // The budget's prediction (before any table exists) within 2 %.
+    const double expected = double(LatticeHashTable::expectedBytes(hits.size(), info.precision));
+    CHECK(std::abs(expected / double(table.bytes()) - 1.0) < 0.02);
+  }
+  CHECK(LatticeHashTable::expectedBytes(0, LhtPrecision::Thesis) == 14);  // one empty bucket's slot at most
+}
