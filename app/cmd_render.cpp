@@ -8,8 +8,6 @@
 //                     emulator's picture of that very stream (-o)
 #include <fmt/format.h>
 
-#include <malloc.h>
-
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -18,7 +16,7 @@
 #include <vector>
 
 #include "app/command_registry.hpp"
-#include "app/memory_plan.hpp"
+#include "app/render_budget.hpp"
 #include "app/pipeline_args.hpp"
 #include "app/serial_options.hpp"
 #include "app/stream_devices.hpp"
@@ -34,7 +32,6 @@
 #include "render/renderer.hpp"
 #include "util/error.hpp"
 #include "util/progress.hpp"
-#include "util/resident_memory.hpp"
 
 namespace {
 
@@ -81,7 +78,9 @@ void defineRenderOptions(CLI::App& cmd, RenderCommandOptions& o) {
       ->check(CLI::Range(1, 16384));
   cmd.add_option("--height", o.height, "Image height in pixels (default: the scene's, fitted to the device)")
       ->check(CLI::Range(1, 16384));
-  cmd.add_option("--threads", o.threads, "Worker threads (default: all cores); the image does not depend on it")
+  cmd.add_option("--threads", o.threads,
+                 "Worker threads for rendering and rasterizing lattices (default: all cores); the image does not "
+                 "depend on it")
       ->check(CLI::Range(1, 256));
   cmd.add_option("--arith", o.arith,
                  "Arithmetic of the whole per-pixel path: float, double, or fixed (Q31.32 integers, no FPU; "
@@ -98,7 +97,8 @@ void defineRenderOptions(CLI::App& cmd, RenderCommandOptions& o) {
                              lattice::lht::lhtPrecisionChoices()));
   cmd.add_option("--memory-budget", o.memoryBudget,
                  "Keep peak resident memory within SIZE (e.g. 8MiB, 8192K, 8388608): chooses the quantizer's mode "
-                 "to fit, or exits 8 saying why it cannot (docs/memory.md)");
+                 "and the entry form of lattices rasterized now to fit, or exits 8 saying why it cannot "
+                 "(docs/memory.md)");
   lattice::app::addPipelineOptions(&cmd, o.pipeline);
   lattice::app::addSerialOptions(&cmd, o.serial, /*portRequired=*/false);
 }
@@ -222,74 +222,6 @@ void renderStream(lattice::Renderer<T>& renderer, const RenderCommandOptions& o,
   }
 }
 
-// What --memory-budget plans with: the picture, the quantizer's options and
-// the images the output device will hold
-// (resident and peakSoFar are left for the caller to measure).
-lattice::app::MemoryPlanRequest budgetRequest(std::uint64_t budget, const lattice::RenderSettings& settings,
-                                              const RenderCommandOptions& o, const CLI::App& cmd, bool streamDevice,
-                                              bool apollo, int deviceWidth, int deviceHeight,
-                                              const lattice::PipelineOptions& pipeline) {
-  lattice::app::MemoryPlanRequest request;
-  request.budget = budget;
-  request.width = settings.width;
-  request.height = settings.height;
-  request.pipeline = pipeline;
-  request.modeChosenByUser = cmd.count("--mode") > 0 || cmd.count("--sample") > 0;
-  request.quantized = streamDevice || apollo;
-  const auto pixels = [](int w, int h) { return static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h); };
-  if (!request.quantized)
-    request.deviceItems.push_back({"truecolour picture", 3 * pixels(request.width, request.height)});
-  if (apollo)  // a byte a pixel of bitmap, then the screen as RGB for the PNG
-    request.deviceItems.push_back({"Apollo bitmap and picture", 4 * pixels(deviceWidth, deviceHeight)});
-  if (streamDevice && o.device == "tek4027")  // the driver keeps the frame to pick its stream order
-    request.deviceItems.push_back({"Tek 4027 frame", pixels(request.width, request.height)});
-  if (streamDevice && !o.output.empty())
-    request.deviceItems.push_back({"emulator screen", 3 * pixels(deviceWidth, deviceHeight)});
-  return request;
-}
-
-lattice::ResidentMemory measuredResidentMemory() {
-  const auto resident = lattice::residentMemory();
-  if (!resident)
-    throw Error(ErrorKind::Budget, "--memory-budget needs /proc/self/status to measure resident memory, and this "
-                                   "system has none; render without the budget");
-  return *resident;
-}
-
-// Lattices rasterized in this run are packed in the form the budget can
-// hold (docs/memory.md): their entry count is only known then.
-void packLatticesWithin(const lattice::app::MemoryPlanRequest& request,
-                        const std::vector<lattice::lht::LatticeDefinitionPtr>& lattices) {
-  const std::uint64_t leastOutput = lattice::app::leastOutputBytes(request);
-  for (const lattice::lht::LatticeDefinitionPtr& lattice : lattices) {
-    lattice->packing = [budget = request.budget, leastOutput, name = lattice->name,
-                        requested = lattice->precision](std::uint64_t entries, std::uint64_t hitListBytes) {
-      const lattice::app::TablePacking packing = lattice::app::chooseTablePacking(
-          budget, measuredResidentMemory().current, hitListBytes, leastOutput, entries, requested);
-      if (packing.form != requested)
-        fmt::print(stderr, "lattice render: memory plan: lattice '{}' packed as {} ({}) instead of {} to fit the "
-                           "budget; not written to its cache\n",
-                   name, lattice::lht::lhtPrecisionName(packing.form), lattice::formatBytes(packing.tableBytes),
-                   lattice::lht::lhtPrecisionName(requested));
-      return packing.form;
-    };
-  }
-}
-
-// The plan is an estimate: say so, loudly, when the measured peak broke it.
-void checkPeakAgainst(std::uint64_t budget) {
-  const auto resident = lattice::residentMemory();
-  if (!resident) return;
-  fmt::print(stderr, "lattice render: peak resident memory {} of the {} budget\n", lattice::formatBytes(resident->peak),
-             lattice::formatBytes(budget));
-  if (resident->peak > budget)
-    throw Error(ErrorKind::Budget,
-                fmt::format("the render finished and its outputs are written, but its resident memory peaked at {}, "
-                            "over the --memory-budget of {}: the plan's estimate was short (please report it with "
-                            "the scene)",
-                            lattice::formatBytes(resident->peak), lattice::formatBytes(budget)));
-}
-
 template <typename T>
 void renderWith(const lattice::lht::SceneWithLattices& loaded, const RenderCommandOptions& o, const CLI::App& cmd) {
   const lattice::SceneDesc& scene = loaded.scene;
@@ -311,22 +243,13 @@ void renderWith(const lattice::lht::SceneWithLattices& loaded, const RenderComma
   const lattice::RenderSettings settings = renderSettings(o, scene, deviceWidth, deviceHeight);
   std::optional<lattice::app::MemoryPlanRequest> budget;
   if (!o.memoryBudget.empty()) {
-    budget = budgetRequest(lattice::parseByteCount(o.memoryBudget, "--memory-budget"), settings, o, cmd,
-                           device.has_value(), apollo.has_value(), deviceWidth, deviceHeight, pipeline);
-    packLatticesWithin(*budget, loaded.lattices);
+    budget = lattice::app::renderBudgetRequest(
+        lattice::parseByteCount(o.memoryBudget, "--memory-budget"), settings.width, settings.height, pipeline,
+        cmd.count("--mode") > 0 || cmd.count("--sample") > 0, {o.device, !o.output.empty(), deviceWidth, deviceHeight});
+    lattice::app::packLatticesWithin(*budget, loaded.lattices);
   }
   lattice::Renderer<T> renderer(scene, settings);
-  if (budget) {
-    // The rasterizer's per-point hit lists are many small blocks, freed by
-    // now but kept by the allocator; give those pages back before measuring.
-    ::malloc_trim(0);
-    const lattice::ResidentMemory resident = measuredResidentMemory();
-    budget->resident = resident.current;
-    budget->peakSoFar = resident.peak;
-    const lattice::app::MemoryPlan plan = lattice::app::planMemory(*budget);
-    pipeline.mode = plan.mode;
-    fmt::print(stderr, "lattice render: memory plan: {}\n", plan.summary());
-  }
+  if (budget) pipeline.mode = lattice::app::planBuiltRender(*budget).mode;
 
   if (device) {
     RenderCommandOptions adjusted = o;
@@ -342,7 +265,7 @@ void renderWith(const lattice::lht::SceneWithLattices& loaded, const RenderComma
   fmt::print(stderr, "lattice render: {}: {}x{}, {:.2f} s, {} rays ({} arithmetic, {} threads){}\n", o.scene,
              renderer.width(), renderer.height(), seconds, renderer.raysTraced(), o.arith, renderer.threads(),
              o.output.empty() ? "" : fmt::format(", picture {}", o.output));
-  if (budget) checkPeakAgainst(budget->budget);
+  if (budget) lattice::app::checkPeakAgainst(budget->budget);
 }
 
 void runRender(const RenderCommandOptions& o, const CLI::App& cmd) {

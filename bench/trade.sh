@@ -113,7 +113,7 @@ latticeRow() {  # group setting scene f tag render-args...
   fi
   read -r t m < <(measure "$v" "$@" -o "$work/img.png")
   # A difference of two 10 ms-resolution timings: a small table can come out negative; say 0.
-  [[ -n $first ]] && rasterSeconds[$tag]=$(awk -v a="$first" -v b="$t" 'BEGIN { d = a - b; printf "%.3f", d > 0 ? d : 0 }')
+  [[ -n $first ]] && rasterSeconds[$tag]=$(awk -v a="$first" -v b="$t" 'BEGIN { d = a - b; printf "%.3f", (d > 0) ? d : 0 }')
   row "$group" "$setting" "$t" "$m" "$(tableBytes "$work/$tag.lht")" "${rasterSeconds[$tag]:-0}" "$work/img.png"
 }
 

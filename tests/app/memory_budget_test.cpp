@@ -36,7 +36,7 @@ double predictedPeak(const std::string& log) {
 }
 
 const std::string kRender = fmt::format(
-    "render '{}/scenes/hook.toml' --device tek4125 --width 256 --height 256 --threads 1 --quiet", LATTICE_SOURCE_DIR);
+    "render '{}/scenes/hook.toml' --device tek4125 --width 512 --height 512 --threads 1 --quiet", LATTICE_SOURCE_DIR);
 
 }  // namespace
 
@@ -46,9 +46,10 @@ TEST_CASE("app:memory_budget_picks_a_mode_and_the_peak_fits") {
   INFO(roomy.stderrText);
   REQUIRE(roomy.exitCode == 0);
   CHECK_THAT(roomy.stderrText, Catch::Contains("memory plan: frame mode"));
-  // Half the 256 KiB frame buffer less than the frame plan: only the two
-  // passes fit, and the binary's own check of its peak must pass.
-  const auto budget = static_cast<long long>(predictedPeak(roomy.stderrText)) - 128 * 1024;
+  // Half the 1 MiB frame buffer less than the frame plan: only the two
+  // passes fit (with 512 KiB either side for run-to-run variation), and the
+  // binary's own check of its measured peak must pass.
+  const auto budget = static_cast<long long>(predictedPeak(roomy.stderrText)) - 512 * 1024;
   const auto tight = runLattice(fmt::format("{} --stream '{}' --memory-budget {}", kRender,
                                             (dir / "b.tek").string(), budget));
   INFO(tight.stderrText);
