@@ -25,6 +25,9 @@ std::array<std::int32_t, 3> decodeOctahedral(OctahedralCode code, std::int32_t m
 
 OctahedralCode encodeOctahedral(const Vec3d& unit, std::int32_t maxValue) {
   const double l1 = std::abs(unit.x) + std::abs(unit.y) + std::abs(unit.z);
+  // A zero or non-finite normal (a degenerate gradient) has no direction to
+  // keep: store +z, as the thesis entry decodes an all-zero normal.
+  if (!(l1 > 0.0) || !std::isfinite(l1)) return OctahedralCode{0, 0};
   double u = unit.x / l1, v = unit.y / l1;
   if (unit.z < 0.0) {
     const double foldedU = (1.0 - std::abs(v)) * signNotZero(u);

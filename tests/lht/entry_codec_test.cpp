@@ -4,6 +4,8 @@
 // the octahedral fold) and over a dense sample of the sphere.
 #include <catch2/catch.hpp>
 
+#include <limits>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -166,6 +168,18 @@ TEST_CASE("LHT precision: any payload bytes decode to a usable fraction and dire
       CHECK(v.sNumerator <= v.sDenominator);
       CHECK((v.normal[0] != 0 || v.normal[1] != 0 || v.normal[2] != 0));
       CHECK(std::max({std::abs(v.normal[0]), std::abs(v.normal[1]), std::abs(v.normal[2])}) <= m);
+    }
+  }
+}
+
+TEST_CASE("LHT precision: a zero or non-finite normal encodes as +z, never as garbage") {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const Vec3d& bad : {Vec3d(0.0), Vec3d(nan, 0.0, 1.0), Vec3d(std::numeric_limits<double>::infinity(), 0, 0)}) {
+    for (const std::int32_t m : {127, 32767}) {
+      const OctahedralCode code = encodeOctahedral(bad, m);
+      CHECK(code.u == 0);
+      CHECK(code.v == 0);
+      CHECK(decodeOctahedral(code, m) == std::array<std::int32_t, 3>{0, 0, m});
     }
   }
 }
