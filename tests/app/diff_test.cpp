@@ -5,11 +5,11 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
-#include <unistd.h>
 
 #include "io/atomic_file.hpp"
 #include "io/image_metrics.hpp"
 #include "io/png.hpp"
+#include "tests/support/temp_dir.hpp"
 #include "util/error.hpp"
 
 namespace {
@@ -26,11 +26,6 @@ lattice::RgbImage gradient(int w, int h) {
   return image;
 }
 
-std::filesystem::path scratchDir() {
-  auto dir = std::filesystem::temp_directory_path() / ("lattice-diff-test-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 }  // namespace
 
@@ -109,7 +104,7 @@ TEST_CASE("the difference image amplifies and clamps", "[diff]") {
 }
 
 TEST_CASE("comparing files names the file that cannot be read", "[diff]") {
-  const auto dir = scratchDir();
+  const lattice::testing::TempDir dir("diff-test");
   const auto good = dir / "good.png";
   const auto other = dir / "other.png";
   const auto bad = dir / "bad.png";
@@ -139,5 +134,4 @@ TEST_CASE("comparing files names the file that cannot be read", "[diff]") {
   } catch (const lattice::Error& e) {
     CHECK_THAT(e.what(), Catch::Contains("small.png") && Catch::Contains("good.png"));
   }
-  std::filesystem::remove_all(dir);
 }

@@ -9,19 +9,15 @@
 #include <iterator>
 #include <regex>
 #include <string>
-#include <unistd.h>
 
 #include "tests/support/run_lattice.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace {
 
 using lattice::testing::runLattice;
+using lattice::testing::TempDir;
 
-std::filesystem::path scratch() {
-  auto dir = std::filesystem::temp_directory_path() / fmt::format("lattice-budget-test-{}", ::getpid());
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 std::string readAll(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -41,8 +37,8 @@ const std::string kRender = fmt::format(
 }  // namespace
 
 TEST_CASE("app:memory_budget_picks_a_mode_and_the_peak_fits") {
-  const auto dir = scratch();
-  const auto roomy = runLattice(fmt::format("{} --stream '{}' --memory-budget 1G", kRender, (dir / "a.tek").string()));
+  const TempDir dir("memory-budget");
+  const auto roomy = runLattice(fmt::format("{} --stream '{}' --memory-budget 1G", kRender, dir / "a.tek"));
   INFO(roomy.stderrText);
   REQUIRE(roomy.exitCode == 0);
   CHECK_THAT(roomy.stderrText, Catch::Contains("memory plan: frame mode"));
@@ -51,21 +47,19 @@ TEST_CASE("app:memory_budget_picks_a_mode_and_the_peak_fits") {
   // binary's own check of its measured peak must pass.
   const auto budget = static_cast<long long>(predictedPeak(roomy.stderrText)) - 512 * 1024;
   const auto tight = runLattice(fmt::format("{} --stream '{}' --memory-budget {}", kRender,
-                                            (dir / "b.tek").string(), budget));
+                                            dir / "b.tek", budget));
   INFO(tight.stderrText);
   REQUIRE(tight.exitCode == 0);
   CHECK_THAT(tight.stderrText, Catch::Contains("memory plan: passes mode"));
   CHECK(readAll(dir / "a.tek") == readAll(dir / "b.tek"));  // the modes draw the same picture
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("app:memory_budget_too_small_exits_8_and_writes_nothing") {
-  const auto dir = scratch();
-  const auto run = runLattice(fmt::format("{} --stream '{}' --memory-budget 1M", kRender, (dir / "c.tek").string()));
+  const TempDir dir("memory-budget");
+  const auto run = runLattice(fmt::format("{} --stream '{}' --memory-budget 1M", kRender, dir / "c.tek"));
   CHECK(run.exitCode == 8);
   CHECK_THAT(run.stderrText, Catch::Contains("--memory-budget 1.00 MiB") && Catch::Contains("peaked at"));
   CHECK_FALSE(std::filesystem::exists(dir / "c.tek"));
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("app:memory_budget_rejects_a_bad_size_before_rendering") {
@@ -75,13 +69,12 @@ TEST_CASE("app:memory_budget_rejects_a_bad_size_before_rendering") {
 }
 
 TEST_CASE("app:memory_budget_counts_the_truecolour_picture") {
-  const auto dir = scratch();
+  const TempDir dir("memory-budget");
   const auto run = runLattice(fmt::format("render '{}/scenes/hook.toml' --width 128 --height 128 --threads 1 -o '{}' "
                                           "--memory-budget 1G",
-                                          LATTICE_SOURCE_DIR, (dir / "t.png").string()));
+                                          LATTICE_SOURCE_DIR, dir / "t.png"));
   INFO(run.stderrText);
   CHECK(run.exitCode == 0);
   CHECK_THAT(run.stderrText, Catch::Contains("48.0 KiB truecolour picture") && !Catch::Contains("histogram"));
   CHECK(std::filesystem::exists(dir / "t.png"));
-  std::filesystem::remove_all(dir);
 }

@@ -1,27 +1,23 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
-#include <unistd.h>
 
 #include "io/atomic_file.hpp"
+#include "tests/support/temp_dir.hpp"
 #include "util/error.hpp"
 
 using namespace lattice;
 namespace fs = std::filesystem;
 
 namespace {
-fs::path scratchDir() {
-  fs::path dir = fs::temp_directory_path() / ("lattice-atomic-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
 std::size_t filesIn(const fs::path& dir) {
   return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
 }
 }  // namespace
 
 TEST_CASE("an atomic file appears only when closed, with all its bytes") {
-  fs::path dir = scratchDir();
+  const lattice::testing::TempDir scratch("atomic");
+  const fs::path dir = scratch.path();
   fs::path target = dir / "out.bin";
   fs::remove(target);
   std::vector<std::uint8_t> payload(200000);
@@ -36,11 +32,11 @@ TEST_CASE("an atomic file appears only when closed, with all its bytes") {
   }
   CHECK(readWholeFile(target) == payload);
   CHECK(filesIn(dir) == 1);  // no temporary left behind
-  fs::remove_all(dir);
 }
 
 TEST_CASE("an atomic file abandoned before close leaves the old file untouched") {
-  fs::path dir = scratchDir();
+  const lattice::testing::TempDir scratch("atomic");
+  const fs::path dir = scratch.path();
   fs::path target = dir / "keep.txt";
   writeFileAtomically(target, std::vector<std::uint8_t>{'o', 'l', 'd'});
   {
@@ -49,7 +45,6 @@ TEST_CASE("an atomic file abandoned before close leaves the old file untouched")
   }  // destroyed without close(): e.g. an exception while rendering
   CHECK(readWholeFile(target) == std::vector<std::uint8_t>{'o', 'l', 'd'});
   CHECK(filesIn(dir) == 1);
-  fs::remove_all(dir);
 }
 
 TEST_CASE("atomic file errors name the path") {

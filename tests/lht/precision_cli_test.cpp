@@ -3,7 +3,6 @@
 // `render --lht-precision` overriding the scene, and `lht-info` reporting it.
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -12,10 +11,13 @@
 
 #include "lht/lht_file.hpp"
 #include "tests/support/run_lattice.hpp"
+#include "tests/support/temp_dir.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;
 using lattice::testing::runLattice;
+
+using lattice::testing::TempDir;
 
 namespace {
 
@@ -46,17 +48,6 @@ lattice = "ball"
 )";
 }
 
-class TempDir {
- public:
-  TempDir() : path_(std::filesystem::temp_directory_path() / fmt::format("lattice-precision-cli-{}", ::getpid())) {
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() { std::filesystem::remove_all(path_); }
-  std::string operator/(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  std::filesystem::path path_;
-};
 
 std::string readText(const std::string& path) {
   std::ifstream in(path);
@@ -70,7 +61,7 @@ std::string readText(const std::string& path) {
 TEST_CASE("precision CLI: rasterize --precision writes that form and lht-info reports it") {
   INFO("lattice is not built (" << lattice::testing::latticeBinary() << "): build the `lattice` target or set LATTICE_EXE");
   REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
-  const TempDir dir;
+  const TempDir dir("precision-cli");
   for (const LhtPrecisionInfo& form : kLhtPrecisions) {
     INFO(form.name);
     const std::string lht = dir / fmt::format("{}.lht", form.name);
@@ -98,7 +89,7 @@ TEST_CASE("precision CLI: rasterize --precision writes that form and lht-info re
 
 TEST_CASE("precision CLI: rasterize --scene takes the scene's precision unless --precision overrides it") {
   REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
-  const TempDir dir;
+  const TempDir dir("precision-cli");
   std::ofstream(dir / "s.toml") << ballScene("precision = \"compact\"");
   REQUIRE(runLattice(fmt::format("rasterize --scene '{}' --name ball -o '{}'", dir / "s.toml", dir / "a.lht"))
               .exitCode == 0);
@@ -111,7 +102,7 @@ TEST_CASE("precision CLI: rasterize --scene takes the scene's precision unless -
 
 TEST_CASE("precision CLI: render --lht-precision overrides the scene and a cache of another precision is refused") {
   REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
-  const TempDir dir;
+  const TempDir dir("precision-cli");
   std::ofstream(dir / "s.toml") << ballScene();
   const auto wide = runLattice(fmt::format("render '{}' --lht-precision wide -o '{}'", dir / "s.toml", dir / "w.png"));
   INFO(wide.stderrText);
@@ -134,7 +125,7 @@ TEST_CASE("precision CLI: render --lht-precision overrides the scene and a cache
 
 TEST_CASE("precision CLI: a bad precision in a scene names the file and line and column and the valid values") {
   REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
-  const TempDir dir;
+  const TempDir dir("precision-cli");
   std::ofstream(dir / "s.toml") << ballScene("precision = \"double\"");
   const auto run = runLattice(fmt::format("render '{}' -o '{}'", dir / "s.toml", dir / "x.png"));
   CHECK(run.exitCode == 3);
