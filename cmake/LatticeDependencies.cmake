@@ -22,11 +22,6 @@ add_library(lattice_png INTERFACE)
 if(LATTICE_STATIC)
   set(LATTICE_WITH_LIBUSB OFF CACHE BOOL "" FORCE)
   target_link_libraries(lattice_fmt INTERFACE fmt::fmt-header-only)
-  # The package's own target forces the shared library (TOML_HEADER_ONLY=0);
-  # the headers alone, with the implementation inlined, need only the path.
-  get_target_property(_toml_includes tomlplusplus::tomlplusplus INTERFACE_INCLUDE_DIRECTORIES)
-  target_include_directories(lattice_toml SYSTEM INTERFACE ${_toml_includes})
-  target_compile_definitions(lattice_toml INTERFACE TOML_HEADER_ONLY=1)
   find_library(LATTICE_PNG_STATIC NAMES libpng16.a libpng.a REQUIRED)
   find_library(LATTICE_Z_STATIC NAMES libz.a REQUIRED)
   find_path(LATTICE_PNG_INCLUDE png.h REQUIRED)
@@ -35,6 +30,18 @@ if(LATTICE_STATIC)
 else()
   find_package(PNG REQUIRED)
   target_link_libraries(lattice_fmt INTERFACE fmt::fmt)
-  target_link_libraries(lattice_toml INTERFACE tomlplusplus::tomlplusplus)
   target_link_libraries(lattice_png INTERFACE PNG::PNG)
+endif()
+
+# toml++ header-only in the static build, and in the fuzzing build so the TOML
+# parser itself is instrumented (coverage feedback and sanitizer checks reach
+# inside it, where the shared library would be a black box).
+if(LATTICE_STATIC OR LATTICE_FUZZ)
+  # The package's own target forces the shared library (TOML_HEADER_ONLY=0);
+  # the headers alone, with the implementation inlined, need only the path.
+  get_target_property(_toml_includes tomlplusplus::tomlplusplus INTERFACE_INCLUDE_DIRECTORIES)
+  target_include_directories(lattice_toml SYSTEM INTERFACE ${_toml_includes})
+  target_compile_definitions(lattice_toml INTERFACE TOML_HEADER_ONLY=1)
+else()
+  target_link_libraries(lattice_toml INTERFACE tomlplusplus::tomlplusplus)
 endif()

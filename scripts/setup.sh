@@ -1,14 +1,20 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Lattice builds with, only those missing, so it is
 # safe to run again and again. `--bench` adds the peers the benchmarks compare
-# against (POV-Ray, Embree, pngquant, GNU time).
+# against (POV-Ray, Embree, pngquant, GNU time); `--fuzz` adds clang 14, its
+# runtime libraries (libFuzzer, ASan, UBSan: libclang-rt-14-dev) and llvm-14
+# (llvm-symbolizer), for scripts/fuzz.sh and the sanitizer build in CI.
 set -euo pipefail
 
 packages=(cmake g++ make pkg-config git catch2 libglm-dev libpng-dev libusb-1.0-0-dev
           libtomlplusplus-dev libcli11-dev libfmt-dev)
-if [[ "${1:-}" == "--bench" ]]; then
-  packages+=(povray libembree-dev pngquant time python3)
-fi
+for option in "$@"; do
+  case $option in
+    --bench) packages+=(povray libembree-dev pngquant time python3) ;;
+    --fuzz) packages+=(clang-14 libclang-rt-14-dev llvm-14) ;;
+    *) echo "setup.sh: unknown option $option (known: --bench, --fuzz)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,112 @@
+// The fuzzing entry points (entries.hpp).
+//
+// Method and tunables:
+// * Each entry calls the library function a user's file reaches (not the CLI,
+//   whose process start would cost more than the parse) and catches only
+//   lattice::Error.
+// * Decoders are fed in chunks whose size follows from the input's length
+//   (1..8 bytes), so chunk boundaries fall everywhere across a run without
+//   spending input bytes on them; a seed is still a valid stream.
+// * The .lht entry parses the bytes as they are and again with the trailing
+//   FNV-1a checksum recomputed, so mutations also reach the checks behind it
+//   (a random flip almost never survives a 64-bit checksum). A table that
+//   parses is walked (chainStats) and probed with find().
+// * The PNG reader takes a path, so the bytes go through a scratch file in
+//   $TMPDIR named by the process id (one per fuzzing worker).
+#include "fuzz/entries.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "devices/tek4027/tek4027_decoder.hpp"
+#include "devices/tek4125/tek4100_decoder.hpp"
+#include "io/png.hpp"
+#include "lht/lattice_scene.hpp"
+#include "lht/lht_file.hpp"
+#include "util/error.hpp"
+
+namespace lattice::fuzz {
+namespace {
+
+void decode(StreamDecoder& decoder, std::span<const std::uint8_t> bytes) {
+  const std::size_t chunk = 1 + bytes.size() % 8;
+  for (std::size_t at = 0; at < bytes.size(); at += chunk)
+    decoder.feed(bytes.subspan(at, std::min(chunk, bytes.size() - at)));
+  decoder.finish();
+}
+
+void probeLht(std::span<const std::uint8_t> bytes) {
+  try {
+    const lht::LhtFile file = lht::parseLht(bytes, "fuzz.lht");
+    (void)file.table.chainStats();
+    const auto& cells = file.box.cells();
+    for (int i = 0; i < 64; ++i) {
+      const auto coord = [&](int axis, int salt) {
+        return static_cast<std::uint8_t>((i * 37 + salt) % (cells[static_cast<std::size_t>(axis)] + 1));
+      };
+      const lht::LatticePoint in{coord(0, 0), coord(1, 5), coord(2, 11)};
+      const lht::LatticePoint out{coord(0, 3), coord(1, 7), coord(2, 13)};
+      (void)file.table.find(in, out);
+    }
+  } catch (const Error&) {
+  }
+}
+
+}  // namespace
+
+void sceneLoader(std::span<const std::uint8_t> bytes) {
+  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  try {
+    (void)lht::parseSceneWithLattices(text, "fuzz.toml");
+  } catch (const Error&) {
+  }
+}
+
+void lhtReader(std::span<const std::uint8_t> bytes) {
+  probeLht(bytes);
+  if (bytes.size() < lht::kLhtHeaderBytes + 8) return;
+  std::vector<std::uint8_t> fixed(bytes.begin(), bytes.end());
+  const std::size_t end = fixed.size() - 8;
+  std::uint64_t sum = lht::fnv1a64(std::span<const std::uint8_t>(fixed).first(end));
+  for (std::size_t i = 0; i < 8; ++i, sum >>= 8) fixed[end + i] = static_cast<std::uint8_t>(sum);
+  probeLht(fixed);
+}
+
+void tek4125Decoder(std::span<const std::uint8_t> bytes) {
+  const auto decoder = makeTek4100Decoder(Tek4125Profile{});
+  decode(*decoder, bytes);
+}
+
+void tek4027Decoder(std::span<const std::uint8_t> bytes) {
+  Tek4027Decoder decoder{Tek4027Profile{}};
+  decode(decoder, bytes);
+}
+
+void pngReader(std::span<const std::uint8_t> bytes) {
+  static const std::filesystem::path scratch =
+      std::filesystem::temp_directory_path() / ("lattice-fuzz-" + std::to_string(::getpid()) + ".png");
+  {
+    std::ofstream out(scratch, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  }
+  try {
+    (void)readPng(scratch);
+  } catch (const Error&) {
+  }
+}
+
+const std::vector<Target>& targets() {
+  static const std::vector<Target> list{{"scene", sceneLoader},
+                                        {"lht", lhtReader},
+                                        {"tek4125", tek4125Decoder},
+                                        {"tek4027", tek4027Decoder},
+                                        {"png", pngReader}};
+  return list;
+}
+
+}  // namespace lattice::fuzz
