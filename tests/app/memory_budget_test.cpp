@@ -37,6 +37,11 @@ const std::string kRender = fmt::format(
 }  // namespace
 
 TEST_CASE("app:memory_budget_picks_a_mode_and_the_peak_fits") {
+#ifdef LATTICE_SANITIZED
+  WARN("skipped under the sanitizers: ASan's shadow memory and quarantine add to the measured peak, which the "
+       "plan cannot predict (the g++ build runs it)");
+  return;
+#endif
   const TempDir dir("memory-budget");
   const auto roomy = runLattice(fmt::format("{} --stream '{}' --memory-budget 1G", kRender, dir / "a.tek"));
   INFO(roomy.stderrText);
