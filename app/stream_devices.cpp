@@ -14,17 +14,20 @@ namespace {
 
 class Tek4125StreamDriver final : public StreamDriver {
  public:
-  Tek4125StreamDriver(ByteSink& out, const Tek4125Profile& profile) : driver_(out, profile) {}
+  Tek4125StreamDriver(ByteSink& out, const Tek4125Profile& profile) : driver_(out, profile), forms_(profile.forms) {}
   IndexedSink& sink() override { return driver_; }
   StreamStats stats() const override {
     const Tek4125StreamStats& s = driver_.stats();
     return {s.bytes, s.seconds,
-            fmt::format("{} raster writes, {} rectangle fills, {} pixels left to the clear", s.rasterWrites,
-                        s.rectangleFills, s.skippedPixels)};
+            fmt::format("profile {}, {} bits a pixel, {} raster writes, {} run-length writes, {} rectangle fills, "
+                        "{} background pixels skipped ({})",
+                        forms_, s.rasterBits, s.rasterWrites, s.runLengthWrites, s.rectangleFills, s.skippedPixels,
+                        s.candidate)};
   }
 
  private:
   Tek4125Driver driver_;
+  std::string forms_;
 };
 
 class Tek4027StreamDriver final : public StreamDriver {

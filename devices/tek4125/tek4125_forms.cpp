@@ -1,0 +1,36 @@
+#include "devices/tek4125/tek4125_forms.hpp"
+
+#include <fmt/format.h>
+
+#include "util/error.hpp"
+
+namespace lattice {
+
+const std::vector<Tek4125Forms>& tek4125FormSets() {
+  static const std::vector<Tek4125Forms> sets = {
+      // Fields: name, defineSurfaces, explicitBackground, screenViewport,
+      // fullXy, escapeDel, colourEntriesPerTg, runLength, runCodeBytesPerRl,
+      // maxRunCode, beamContinues, rasterOnlyAtFourBits. RL's 12-byte cap and
+      // its codes below 32768 are the RAL GKS driver's (GK4TRO); RP at 4 bits
+      // is zebra's dev_4107.c, the only packing a source shows.
+      {"strict", true, true, true, true, true, 1, true, 12, 32767, false, true},
+      {"compact", false, false, false, false, false, 0, true, 0, 65535, true, false},
+  };
+  return sets;
+}
+
+std::string tek4125FormSetNames() {
+  std::string names;
+  for (const Tek4125Forms& f : tek4125FormSets()) names += (names.empty() ? "" : ", ") + f.name;
+  return names;
+}
+
+const Tek4125Forms& tek4125Forms(std::string_view name) {
+  for (const Tek4125Forms& f : tek4125FormSets())
+    if (f.name == name) return f;
+  throw Error(ErrorKind::Usage,
+              fmt::format("tek4125 profile: profile={} is not a form set; use one of {} (docs/tek4125.md)", name,
+                          tek4125FormSetNames()));
+}
+
+}  // namespace lattice
