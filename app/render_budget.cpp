@@ -41,6 +41,12 @@ MemoryPlanRequest renderBudgetRequest(std::uint64_t budget, int width, int heigh
   // working set on the example scenes (docs/memory.md, "Calibration").
   if (outputs.device == "tek4027")
     request.deviceItems.push_back({"Tek 4027 frame and candidate streams", 20 * pixels(width, height)});
+  // The 4125 driver keeps the frame (a byte a pixel) and encodes up to three
+  // candidate streams, holding the shortest beside the one being written
+  // (growing by doubling, then copied once to escape DEL): 8 B a pixel
+  // covers the example scenes (docs/memory.md, "Calibration").
+  if (outputs.device == "tek4125")
+    request.deviceItems.push_back({"Tek 4125 frame and candidate streams", 8 * pixels(width, height)});
   if (stream && outputs.writesPng)
     request.deviceItems.push_back({"emulator screen", 3 * pixels(outputs.deviceWidth, outputs.deviceHeight)});
   // libpng's zlib deflate state (two 128 KiB windows at the default levels)

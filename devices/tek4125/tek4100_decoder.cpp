@@ -73,7 +73,8 @@ const std::vector<Tek4100Decoder::Spec>& Tek4100Decoder::commandTable() {
       {"SK", Action::Accept, 1, {P::Int}},                  // delete segment
       {"LH", Action::Accept, 1, {P::Xy}},                   // marker (not drawn)
       {"LT", Action::Accept, 1, {P::String}},               // graphic text (no font: not drawn)
-      // Set-up commands of PGPLOT, zebra, RAL-CGM and the RAL GKS driver.
+      // Set-up commands of PGPLOT, zebra, RAL-CGM, the RAL GKS driver and
+      // BRL-CAD (docs/tek-sources.md).
       {"MB", Action::Accept, 2, {P::Int, P::Int}},  // background indices (text)
       {"RE", Action::Accept, 1, {P::Int}},          // view border
       {"RF", Action::Accept, 1, {P::Int}},          // fix-up level
@@ -86,6 +87,13 @@ const std::vector<Tek4100Decoder::Spec>& Tek4100Decoder::commandTable() {
       {"NC", Action::Accept, 2, {P::Int, P::Int}},  // end-of-message characters
       {"NQ", Action::Accept, 1, {P::Int}},          // queue size
       {"SV", Action::Accept, 2, {P::Int, P::Int}},  // segment visibility
+      {"SO", Action::Accept, 1, {P::Int}},          // begin segment (zebra)
+      {"SC", Action::Accept, 0, {}},                // end segment
+      {"QA", Action::Accept, 1, {P::Int}},          // copy size
+      {"NF", Action::Accept, 1, {P::Int}},          // flagging (BRL-CAD dm-tek4109.c)
+      {"KC", Action::Accept, 0, {}},                // cancel crosshairs
+      {"TC", Action::Accept, 3, {P::Int, P::Int, P::Int}},  // GIN cursor colour
+      {"IJ", Action::Accept, 2, {P::Int, P::Int}},          // GIN cursor speed
   };
   return table;
 }

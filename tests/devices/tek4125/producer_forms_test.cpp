@@ -167,13 +167,17 @@ TEST_CASE("PGPLOT's, zebra's, RAL-CGM's and the GKS driver's set-up sequences ar
   s.raw("\x1b%!0").raw("\x1bRU1;6").raw("\x1bLL2").cmd("RS").p(0, 0).p(639, 479).raw("\x1bTM111");
   s.cmd("TG").i(1).i(4).i(3).i(0).i(100).i(0);
   s.cmd("RR").p(0, 0).p(639, 479).i(3).raw("\x1bML1");
-  // zebra dev_4107.c: NQ, RW, SK, SV, QA is not ours (skipped as unknown), RU 0 11 4, RH + RP.
+  // zebra dev_4107.c tek_open: NQ, RW, SK, SV.
   s.cmd("NQ").i(32767).cmd("RW").p(0, 0).p(639, 479).cmd("SK").i(-1).raw("\x1bSV00");
   // RAL-CGM TEKinit: KI1, TB000, MB00, RE0, TM111, NT, NC, KT2, ML1, MV0, RD1 4, RV, RW.
   s.raw("\x1bKI1\x1bTB000\x1bMB00\x1bRE0\x1bTM111\x1bNT1=\x1bNC=0\x1bKT2\x1bML1\x1bMV0");
   s.cmd("RD").i(1).i(8).cmd("RV").p(0, 0).p(4095, 3071).cmd("RW").p(0, 0).p(4095, 3071);
   // GKS GK4TID: KE0, KT2, MB00, RE0, TB000, KA1, RF2, MG1.
   s.raw("\x1bKE0\x1bKT2\x1bMB00\x1bRE0\x1bTB000\x1bKA1\x1bRF2\x1bMG1");
+  // BRL-CAD dm-tek4109.c T49_open: NF1, MC, LL, KI0, IJ5:, TCK4C2F4, ML2; and KC.
+  s.raw("\x1bNF1\x1bMCA>B8:\x1bLLA>\x1bKI0\x1bIJ5:\x1bTCK4C2F4\x1bML2\x1bKC");
+  // zebra segments: SO 1, SC, QA1.
+  s.raw("\x1bSO1\x1bSC\x1bQA1");
   const auto d = run(s.bytes);
   CHECK(d.report().malformed == 0);
   CHECK(d.report().unknownCommands == 0);
