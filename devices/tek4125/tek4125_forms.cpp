@@ -1,8 +1,6 @@
 #include "devices/tek4125/tek4125_forms.hpp"
 
-#include <fmt/format.h>
-
-#include "util/error.hpp"
+#include "devices/tek4125/named_table.hpp"
 
 namespace lattice {
 
@@ -19,18 +17,8 @@ const std::vector<Tek4125Forms>& tek4125FormSets() {
   return sets;
 }
 
-std::string tek4125FormSetNames() {
-  std::string names;
-  for (const Tek4125Forms& f : tek4125FormSets()) names += (names.empty() ? "" : ", ") + f.name;
-  return names;
-}
+std::string tek4125FormSetNames() { return namesOf(tek4125FormSets()); }
 
-const Tek4125Forms& tek4125Forms(std::string_view name) {
-  for (const Tek4125Forms& f : tek4125FormSets())
-    if (f.name == name) return f;
-  throw Error(ErrorKind::Usage,
-              fmt::format("tek4125 profile: profile={} is not a form set; use one of {} (docs/tek4125.md)", name,
-                          tek4125FormSetNames()));
-}
+const Tek4125Forms& tek4125Forms(std::string_view name) { return findNamed(tek4125FormSets(), name, "profile"); }
 
 }  // namespace lattice

@@ -1,8 +1,6 @@
 #include "devices/tek4125/tek4125_strategy.hpp"
 
-#include <fmt/format.h>
-
-#include "util/error.hpp"
+#include "devices/tek4125/named_table.hpp"
 
 namespace lattice {
 
@@ -19,17 +17,10 @@ const std::vector<Tek4125NamedStrategy>& tek4125Strategies() {
   return all;
 }
 
-std::string tek4125StrategyNames() {
-  std::string names;
-  for (const auto& s : tek4125Strategies()) names += (names.empty() ? "" : ", ") + s.name;
-  return names;
-}
+std::string tek4125StrategyNames() { return namesOf(tek4125Strategies()); }
 
 const Tek4125NamedStrategy& tek4125Strategy(std::string_view name) {
-  for (const auto& s : tek4125Strategies())
-    if (s.name == name) return s;
-  throw Error(ErrorKind::Usage,
-              fmt::format("tek4125 profile: strategy={} is unknown; use one of {}", name, tek4125StrategyNames()));
+  return findNamed(tek4125Strategies(), name, "strategy");
 }
 
 }  // namespace lattice

@@ -20,7 +20,12 @@ using namespace lattice;
 
 namespace {
 
-bool haveGnuplot() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
+// False, with a warning saying why, where gnuplot is not installed.
+bool haveGnuplot() {
+  if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) return true;
+  WARN("gnuplot is not installed: skipped (scripts/setup.sh installs gnuplot-nox)");
+  return false;
+}
 
 // The plot: frame from 0.25 to 0.75 of the terminal's drawing area on both
 // axes, y = x from corner to corner, no key.
@@ -100,10 +105,7 @@ void checkPlot(const std::vector<std::uint8_t>& stream, const Geometry& g, int l
 }  // namespace
 
 TEST_CASE("gnuplot's tek410x terminal: the plot's frame and line land where gnuplot put them") {
-  if (!haveGnuplot()) {
-    WARN("gnuplot is not installed: skipped (scripts/setup.sh installs gnuplot-nox)");
-    return;
-  }
+  if (!haveGnuplot()) return;
   const lattice::testing::TempDir dir("gnuplot-410x");
   const auto stream = plotWith("tek410x", dir);
   REQUIRE(stream.size() > 200);
@@ -112,10 +114,7 @@ TEST_CASE("gnuplot's tek410x terminal: the plot's frame and line land where gnup
 }
 
 TEST_CASE("gnuplot's tek40xx terminal: 4010 vectors with raw DEL bytes land where gnuplot put them") {
-  if (!haveGnuplot()) {
-    WARN("gnuplot is not installed: skipped (scripts/setup.sh installs gnuplot-nox)");
-    return;
-  }
+  if (!haveGnuplot()) return;
   const lattice::testing::TempDir dir("gnuplot-40xx");
   const auto stream = plotWith("tek40xx", dir);
   REQUIRE(stream.size() > 200);

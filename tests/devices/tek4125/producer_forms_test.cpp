@@ -9,39 +9,13 @@
 
 #include "devices/tek4125/tek4100_decoder.hpp"
 #include "devices/tek4125/tek_encoding.hpp"
+#include "tests/devices/tek4125/stream_builder.hpp"
 
 using namespace lattice;
 using namespace lattice::tek;
+using namespace lattice::tektest;
 
 namespace {
-
-struct Stream {
-  Bytes bytes;
-  Stream& raw(std::string_view s) {
-    for (char ch : s) bytes.push_back(static_cast<std::uint8_t>(ch));
-    return *this;
-  }
-  Stream& cmd(std::string_view name) {
-    appendCommand(bytes, name);
-    return *this;
-  }
-  Stream& i(int v) {
-    appendInt(bytes, v);
-    return *this;
-  }
-  Stream& p(int x, int y) {  // always the full five bytes, as GKS, zebra and RAL-CGM send them
-    XyEncoder fresh;
-    fresh.append(bytes, x, y);
-    return *this;
-  }
-};
-
-Tek4100Decoder run(const Bytes& b, Tek4125Profile profile = {}) {
-  Tek4100Decoder d(profile);
-  d.feed(b);
-  d.finish();
-  return d;
-}
 
 // Screen pixel (x, y), Tek orientation (y = 0 is the bottom row).
 int px(const Tek4100Decoder& d, int x, int y) { return d.image().at(x, d.image().height - 1 - y); }
@@ -53,7 +27,7 @@ TEST_CASE("RL run codes write length * 2^bits + index at the beam and wrap at th
   // arrays of run codes, one row after another with no RH.
   Stream s;
   s.cmd("RU").i(-1).i(11).i(4);
-  s.cmd("RS").p(100, 209).p(109, 200);  // 10 x 10, corners in GKS's order
+  s.cmd("RS").full(100, 209).full(109, 200);  // 10 x 10, corners in GKS's order
   s.cmd("RL").i(3).i(4 * 16 + 2).i(6 * 16 + 5).i(10 * 16 + 7);  // row 1: 4 of 2, 6 of 5; row 2: 10 of 7
   s.cmd("RL").i(1).i(15 * 16 + 3);                               // rows 3 and 4 (5 of it)
   const auto d = run(s.bytes);
@@ -74,10 +48,10 @@ TEST_CASE("RL run codes write length * 2^bits + index at the beam and wrap at th
 TEST_CASE("RL at 8 bits wraps a run across the viewport's edge") {
   Stream s;
   s.cmd("RU").i(1).i(11).i(8);
-  s.cmd("RS").p(0, 0).p(1279, 1023);
-  s.cmd("RH").p(1270, 500);
+  s.cmd("RS").full(0, 0).full(1279, 1023);
+  s.cmd("RH").full(1270, 500);
   s.cmd("RL").i(2).i(12 * 256 + 200).i(255 * 256 + 9);
-  s.cmd("RH").p(0, 0);
+  s.cmd("RH").full(0, 0);
   s.cmd("RL").i(1).i(65535);  // the largest code: 255 pixels of index 255
   const auto d = run(s.bytes);
   CHECK(d.report().malformed == 0);
@@ -111,7 +85,7 @@ TEST_CASE("after KI1 a raw DEL is dropped and ESC ? stands for it inside a param
   CHECK(px(d, 1023 * 1280 / 4096, 127 * 1280 / 4096) == 1);
   // Without KI1, DEL is data (gnuplot's tek40xx sends it raw as a Lo-Y).
   Stream t;
-  t.cmd("ML").i(1).cmd("LF").p(0, 127).cmd("LG").p(1023, 127);
+  t.cmd("ML").i(1).cmd("LF").full(0, 127).cmd("LG").full(1023, 127);
   const auto e = run(t.bytes);
   CHECK(e.report().malformed == 0);
   CHECK(px(e, 0, 127 * 1280 / 4096) == 1);
@@ -121,8 +95,8 @@ TEST_CASE("after KI1 a raw DEL is dropped and ESC ? stands for it inside a param
 TEST_CASE("RD gives surface 1 its planes; fewer planes mask the indices drawn") {
   Stream s;
   s.cmd("RD").i(1).i(4);  // surface 1 owns 4 of the 8 planes
-  s.cmd("RU").i(1).i(11).i(8).cmd("RS").p(0, 0).p(1279, 1023);
-  s.cmd("RR").p(10, 10).p(11, 11).i(0x35);
+  s.cmd("RU").i(1).i(11).i(8).cmd("RS").full(0, 0).full(1279, 1023);
+  s.cmd("RR").full(10, 10).full(11, 11).i(0x35);
   auto d = run(s.bytes);
   CHECK(d.report().malformed == 0);
   CHECK(px(d, 10, 10) == 0x5);
@@ -130,10 +104,10 @@ TEST_CASE("RD gives surface 1 its planes; fewer planes mask the indices drawn") 
   Tek4125Profile fourPlaneSurface;
   fourPlaneSurface.surfacePlanes = 4;
   Stream t;
-  t.cmd("RR").p(10, 10).p(11, 11).i(0x35);
+  t.cmd("RR").full(10, 10).full(11, 11).i(0x35);
   CHECK(px(run(t.bytes, fourPlaneSurface), 10, 10) == 0x5);
   Stream u;
-  u.cmd("RD").i(1).i(8).cmd("RR").p(10, 10).p(11, 11).i(0x35);
+  u.cmd("RD").i(1).i(8).cmd("RR").full(10, 10).full(11, 11).i(0x35);
   CHECK(px(run(u.bytes, fourPlaneSurface), 10, 10) == 0x35);
 }
 
@@ -164,14 +138,14 @@ TEST_CASE("the power-up colour map follows PGPLOT's table or, as a profile key, 
 TEST_CASE("PGPLOT's, zebra's, RAL-CGM's and the GKS driver's set-up sequences are accepted whole") {
   Stream s;
   // PGPLOT tkdriv.f, begin picture: RU1;6, LL2, RS, TM111, TG14 per entry, RR erase, ML1.
-  s.raw("\x1b%!0").raw("\x1bRU1;6").raw("\x1bLL2").cmd("RS").p(0, 0).p(639, 479).raw("\x1bTM111");
+  s.raw("\x1b%!0").raw("\x1bRU1;6").raw("\x1bLL2").cmd("RS").full(0, 0).full(639, 479).raw("\x1bTM111");
   s.cmd("TG").i(1).i(4).i(3).i(0).i(100).i(0);
-  s.cmd("RR").p(0, 0).p(639, 479).i(3).raw("\x1bML1");
+  s.cmd("RR").full(0, 0).full(639, 479).i(3).raw("\x1bML1");
   // zebra dev_4107.c tek_open: NQ, RW, SK, SV.
-  s.cmd("NQ").i(32767).cmd("RW").p(0, 0).p(639, 479).cmd("SK").i(-1).raw("\x1bSV00");
+  s.cmd("NQ").i(32767).cmd("RW").full(0, 0).full(639, 479).cmd("SK").i(-1).raw("\x1bSV00");
   // RAL-CGM TEKinit: KI1, TB000, MB00, RE0, TM111, NT, NC, KT2, ML1, MV0, RD1 4, RV, RW.
   s.raw("\x1bKI1\x1bTB000\x1bMB00\x1bRE0\x1bTM111\x1bNT1=\x1bNC=0\x1bKT2\x1bML1\x1bMV0");
-  s.cmd("RD").i(1).i(8).cmd("RV").p(0, 0).p(4095, 3071).cmd("RW").p(0, 0).p(4095, 3071);
+  s.cmd("RD").i(1).i(8).cmd("RV").full(0, 0).full(4095, 3071).cmd("RW").full(0, 0).full(4095, 3071);
   // GKS GK4TID: KE0, KT2, MB00, RE0, TB000, KA1, RF2, MG1.
   s.raw("\x1bKE0\x1bKT2\x1bMB00\x1bRE0\x1bTB000\x1bKA1\x1bRF2\x1bMG1");
   // BRL-CAD dm-tek4109.c T49_open: NF1, MC, LL, KI0, IJ5:, TCK4C2F4, ML2; and KC.
@@ -189,8 +163,8 @@ TEST_CASE("PGPLOT's, zebra's, RAL-CGM's and the GKS driver's set-up sequences ar
 
 TEST_CASE("RR and RH follow the profile's origin readings") {
   Stream s;
-  s.cmd("RS").p(100, 100).p(199, 199).cmd("RR").p(0, 0).p(1, 1).i(4);
-  s.cmd("RU").i(1).i(11).i(4).cmd("RH").p(10, 10).cmd("RP").i(1).i(1).raw("\x50");  // index 12
+  s.cmd("RS").full(100, 100).full(199, 199).cmd("RR").full(0, 0).full(1, 1).i(4);
+  s.cmd("RU").i(1).i(11).i(4).cmd("RH").full(10, 10).cmd("RP").i(1).i(1).raw("\x50");  // index 12
   const auto screen = run(s.bytes);
   CHECK(px(screen, 0, 0) == 4);
   CHECK(px(screen, 110, 110) == 12);
