@@ -11,7 +11,7 @@
 #include "app/command_registry.hpp"
 #include "io/image_metrics.hpp"
 #include "io/png.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace {
 

@@ -14,7 +14,7 @@
 #include "app/command_registry.hpp"
 #include "app/stream_devices.hpp"
 #include "io/png.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include "app/command_registry.hpp"
 #include "io/port_discovery.hpp"
 #include "io/usb_hotplug.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace {
 

@@ -10,10 +10,10 @@
 #include "app/command_registry.hpp"
 #include "app/pipeline_args.hpp"
 #include "io/png.hpp"
-#include "pipeline/indexed_image.hpp"
-#include "pipeline/rgb_image_source.hpp"
-#include "pipeline/run_pipeline.hpp"
-#include "util/error.hpp"
+#include "foundation/indexed_image.hpp"
+#include "foundation/rgb_image_source.hpp"
+#include "quantize/run_pipeline.hpp"
+#include "foundation/error.hpp"
 
 namespace {
 

@@ -9,7 +9,7 @@
 #include "lht/lattice_object.hpp"
 #include "lht/lattice_scene.hpp"
 #include "lht/lht_file.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace {
 

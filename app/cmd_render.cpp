@@ -22,16 +22,16 @@
 #include "app/stream_devices.hpp"
 #include "devices/apollo_sim/apollo_output.hpp"
 #include "devices/apollo_sim/apollo_profile.hpp"
-#include "io/atomic_file.hpp"
+#include "foundation/atomic_file.hpp"
 #include "io/png.hpp"
 #include "io/serial_sink.hpp"
 #include "io/stdout_sink.hpp"
 #include "io/tee_sink.hpp"
 #include "lht/lattice_scene.hpp"
-#include "pipeline/run_pipeline.hpp"
+#include "quantize/run_pipeline.hpp"
 #include "render/renderer.hpp"
-#include "util/error.hpp"
-#include "util/progress.hpp"
+#include "foundation/error.hpp"
+#include "foundation/progress.hpp"
 
 namespace {
 
@@ -256,8 +256,10 @@ void renderWith(const lattice::lht::SceneWithLattices& loaded, const RenderComma
     if (toPort && cmd.count("--baud") == 0) adjusted.serial.baud = device->line.baud;  // the profile's rate
     renderStream(renderer, adjusted, *device, pipeline, toPort);
   } else if (apollo) {
-    const lattice::PipelineReport report = lattice::renderToApolloPng(renderer, *apollo, pipeline, o.output);
-    fmt::print(stderr, "lattice render: {} palette entries on the simulated {}\n", report.paletteSize, apollo->model);
+    const lattice::ApolloScreen result = lattice::renderToApollo(renderer, *apollo, pipeline);
+    lattice::writePng(o.output, result.screen);
+    fmt::print(stderr, "lattice render: {} palette entries on the simulated {}\n", result.report.paletteSize,
+               apollo->model);
   } else {
     renderTruecolour(renderer, o);
   }

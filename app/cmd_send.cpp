@@ -8,11 +8,11 @@
 
 #include "app/command_registry.hpp"
 #include "app/serial_options.hpp"
-#include "io/atomic_file.hpp"
+#include "foundation/atomic_file.hpp"
 #include "io/serial_sink.hpp"
 #include "io/stream_sender.hpp"
-#include "util/error.hpp"
-#include "util/progress.hpp"
+#include "foundation/error.hpp"
+#include "foundation/progress.hpp"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <exception>
 
 #include "app/command_registry.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 int main(int argc, char** argv) {
   CLI::App root{"lattice: three-dimensional texturing using lattices (Lewis 1988), rendered to\n"

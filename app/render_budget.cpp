@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 #include <malloc.h>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::app {
 

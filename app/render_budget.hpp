@@ -9,7 +9,7 @@
 
 #include "app/memory_plan.hpp"
 #include "lht/lattice_scene.hpp"
-#include "util/resident_memory.hpp"
+#include "foundation/resident_memory.hpp"
 
 namespace lattice::app {
 

@@ -7,7 +7,7 @@
 #include "devices/tek4027/tek4027_encoder.hpp"
 #include "devices/tek4125/tek4100_decoder.hpp"
 #include "devices/tek4125/tek4125_driver.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::app {
 namespace {

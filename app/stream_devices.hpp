@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "devices/stream_decoder.hpp"
-#include "io/byte_sink.hpp"
-#include "io/line_timing.hpp"
-#include "pipeline/scanline.hpp"
+#include "foundation/byte_sink.hpp"
+#include "foundation/line_timing.hpp"
+#include "foundation/scanline.hpp"
 
 namespace lattice::app {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "io/line_timing.hpp"
+#include "foundation/line_timing.hpp"
 
 namespace lattice {
 

@@ -2,7 +2,6 @@
 
 #include "devices/apollo_sim/apollo_sink.hpp"
 #include "devices/apollo_sim/gpr_display.hpp"
-#include "io/png.hpp"
 
 namespace lattice {
 
@@ -15,13 +14,6 @@ ApolloScreen renderToApollo(RowSource18& source, const ApolloProfile& profile, c
   result.screen = display.snapshot();
   display.terminate();
   return result;
-}
-
-PipelineReport renderToApolloPng(RowSource18& source, const ApolloProfile& profile, const PipelineOptions& options,
-                                 const std::filesystem::path& png) {
-  ApolloScreen result = renderToApollo(source, profile, options);
-  writePng(png, result.screen);
-  return result.report;
 }
 
 }  // namespace lattice

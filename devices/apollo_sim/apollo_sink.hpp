@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "devices/apollo_sim/gpr_display.hpp"
-#include "pipeline/scanline.hpp"
+#include "foundation/scanline.hpp"
 
 namespace lattice {
 

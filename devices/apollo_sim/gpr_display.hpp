@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "devices/apollo_sim/apollo_profile.hpp"
-#include "pipeline/indexed_image.hpp"
+#include "foundation/indexed_image.hpp"
 
 namespace lattice {
 

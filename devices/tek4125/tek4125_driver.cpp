@@ -6,7 +6,7 @@
 
 #include "devices/tek4125/tek4125_rows.hpp"
 #include "devices/tek4125/tek4125_writer.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

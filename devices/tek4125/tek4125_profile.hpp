@@ -9,7 +9,7 @@
 
 #include "devices/tek4125/tek4125_forms.hpp"
 #include "devices/tek4125/tek4125_strategy.hpp"
-#include "io/line_timing.hpp"
+#include "foundation/line_timing.hpp"
 
 namespace lattice {
 

@@ -5,7 +5,7 @@
 // can ask for any coordinate.
 #include <span>
 
-#include "pipeline/indexed_image.hpp"
+#include "foundation/indexed_image.hpp"
 
 namespace lattice::tek {
 

@@ -26,13 +26,13 @@
 #include <vector>
 
 #include "app/stream_devices.hpp"
-#include "io/atomic_file.hpp"
+#include "foundation/atomic_file.hpp"
 #include "io/png.hpp"
 #include "io/pty.hpp"
 #include "tests/support/run_lattice.hpp"
 #include "io/serial_options.hpp"
 #include "io/serial_sink.hpp"
-#include "pipeline/run_pipeline.hpp"
+#include "quantize/run_pipeline.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_loader.hpp"
 #include "tests/support/golden.hpp"

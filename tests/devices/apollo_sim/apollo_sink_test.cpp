@@ -7,7 +7,7 @@
 #include "io/png.hpp"
 #include "tests/quantize/test_sources.hpp"
 #include "tests/support/golden.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 using lattice::testing::FunctionSource;
@@ -91,10 +91,10 @@ TEST_CASE("Apollo screens match the golden PNGs") {
   }
 }
 
-TEST_CASE("renderToApolloPng writes the screen as a PNG") {
+TEST_CASE("an Apollo screen saved as a PNG keeps the whole screen") {
   auto path = std::filesystem::path(LATTICE_BINARY_DIR) / "apollo_sink_test_out.png";
   auto source = patternSource(40, 30);
-  renderToApolloPng(source, dn580Profile(), quiet(Dither::None), path);
+  writePng(path, renderToApollo(source, dn580Profile(), quiet(Dither::None)).screen);
   RgbImage back = readPng(path);
   CHECK(back.width == 1280);
   CHECK(back.height == 1024);

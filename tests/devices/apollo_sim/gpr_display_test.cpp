@@ -4,7 +4,7 @@
 
 #include "devices/apollo_sim/apollo_profile.hpp"
 #include "devices/apollo_sim/gpr_display.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 

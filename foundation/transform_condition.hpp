@@ -13,7 +13,7 @@
 #include <string>
 #include <type_traits>
 
-#include "render/vec.hpp"
+#include "foundation/vec.hpp"
 
 namespace lattice {
 

@@ -2,9 +2,9 @@
 
 #include <filesystem>
 
-#include "io/atomic_file.hpp"
+#include "foundation/atomic_file.hpp"
 #include "tests/support/temp_dir.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 namespace fs = std::filesystem;

@@ -17,7 +17,7 @@
 #include <cstddef>
 #include <string>
 
-#include "pipeline/scanline.hpp"
+#include "foundation/scanline.hpp"
 #include "quantize/quantize_options.hpp"
 
 namespace lattice {

@@ -1,4 +1,4 @@
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 #include <fmt/format.h>
 

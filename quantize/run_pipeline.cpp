@@ -1,4 +1,4 @@
-#include "pipeline/run_pipeline.hpp"
+#include "quantize/run_pipeline.hpp"
 
 #include <fmt/format.h>
 
@@ -9,8 +9,8 @@
 #include "quantize/inverse_colormap.hpp"
 #include "quantize/median_cut.hpp"
 #include "quantize/row_mapper.hpp"
-#include "util/error.hpp"
-#include "util/progress.hpp"
+#include "foundation/error.hpp"
+#include "foundation/progress.hpp"
 
 namespace lattice {
 namespace {

@@ -2,8 +2,8 @@
 
 #include <vector>
 
-#include "pipeline/rgb_image_source.hpp"
-#include "util/error.hpp"
+#include "foundation/rgb_image_source.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 

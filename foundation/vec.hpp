@@ -17,8 +17,8 @@
 
 #include <glm/glm.hpp>
 
-#include "render/fixed.hpp"
-#include "render/fixed_math.hpp"
+#include "foundation/fixed.hpp"
+#include "foundation/fixed_math.hpp"
 
 namespace lattice {
 

@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
-#include "util/error.hpp"
-#include "util/progress.hpp"
+#include "foundation/error.hpp"
+#include "foundation/progress.hpp"
 
 using namespace lattice;
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "render/ray.hpp"
+#include "foundation/ray.hpp"
 
 namespace lattice {
 

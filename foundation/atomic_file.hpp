@@ -7,7 +7,7 @@
 #include <span>
 #include <string>
 
-#include "io/byte_sink.hpp"
+#include "foundation/byte_sink.hpp"
 
 namespace lattice {
 

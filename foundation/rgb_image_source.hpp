@@ -2,8 +2,8 @@
 // A RowSource18 over a truecolour image: each 8-bit channel is rounded to the
 // nearest of 64 levels, the precision the thesis's *model* produced, so PNG
 // input goes through exactly the path a rendered picture takes.
-#include "io/png.hpp"
-#include "pipeline/scanline.hpp"
+#include "foundation/rgb_image.hpp"
+#include "foundation/scanline.hpp"
 
 namespace lattice {
 

@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "pipeline/scanline.hpp"
+#include "foundation/scanline.hpp"
 
 namespace lattice {
 

@@ -1,4 +1,4 @@
-#include "util/key_value.hpp"
+#include "foundation/key_value.hpp"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

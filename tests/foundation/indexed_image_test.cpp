@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "pipeline/indexed_image.hpp"
+#include "foundation/indexed_image.hpp"
 
 using namespace lattice;
 

@@ -1,8 +1,8 @@
-#include "pipeline/rgb_image_source.hpp"
+#include "foundation/rgb_image_source.hpp"
 
 #include <fmt/format.h>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

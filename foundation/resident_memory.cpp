@@ -1,4 +1,4 @@
-#include "util/resident_memory.hpp"
+#include "foundation/resident_memory.hpp"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

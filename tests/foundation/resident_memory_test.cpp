@@ -4,8 +4,8 @@
 #include <cstring>
 #include <memory>
 
-#include "util/error.hpp"
-#include "util/resident_memory.hpp"
+#include "foundation/error.hpp"
+#include "foundation/resident_memory.hpp"
 
 using lattice::ErrorKind;
 using lattice::formatBytes;

@@ -6,7 +6,7 @@
 // compile time by repeated integer square roots of 2.
 #include <array>
 
-#include "render/fixed.hpp"
+#include "foundation/fixed.hpp"
 
 namespace lattice {
 

@@ -1,4 +1,4 @@
-#include "render/transform_condition.hpp"
+#include "foundation/transform_condition.hpp"
 
 #include <fmt/format.h>
 

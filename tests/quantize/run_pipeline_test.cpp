@@ -4,11 +4,11 @@
 #include <climits>
 #include <set>
 
-#include "pipeline/indexed_image.hpp"
-#include "pipeline/run_pipeline.hpp"
+#include "foundation/indexed_image.hpp"
+#include "quantize/run_pipeline.hpp"
 #include "quantize/median_cut.hpp"
 #include "tests/quantize/test_sources.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 using lattice::testing::FunctionSource;

@@ -1,4 +1,4 @@
-#include "pipeline/indexed_image.hpp"
+#include "foundation/indexed_image.hpp"
 
 #include <algorithm>
 #include <stdexcept>

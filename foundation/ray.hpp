@@ -2,7 +2,7 @@
 // A ray r(t) = origin + direction * t (thesis eq. 1.1). The direction is not
 // necessarily unit length: transforming a ray into object space keeps t the
 // same in both spaces, so hits from different leaves compare directly.
-#include "render/vec.hpp"
+#include "foundation/vec.hpp"
 
 namespace lattice {
 
