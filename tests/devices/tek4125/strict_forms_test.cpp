@@ -138,3 +138,27 @@ TEST_CASE("a strict stream draws the same picture under every unsettled reading;
     }
   }
 }
+
+TEST_CASE("a DEL inside a parameter goes as ESC ? in strict, raw in compact, and both decode alike") {
+  // A y with (y >> 2) & 31 == 31 has Lo-Y = DEL: screen rows 508..511 for
+  // strict's screen-wide viewport, picture rows 124..127 for compact's.
+  const IndexedImage img = noise(1280, 140, 200, 4u);  // screen rows 442..581
+  Tek4125Profile strict, compact;
+  compact.forms = "compact";
+  const auto s = encode(img, strict), c = encode(img, compact);
+  long rawStrict = 0, escapes = 0, rawCompact = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    rawStrict += s[i] == 0x7F;
+    escapes += s[i] == 0x1B && i + 1 < s.size() && s[i + 1] == '?';
+  }
+  for (std::uint8_t b : c) rawCompact += b == 0x7F;
+  CHECK(rawStrict == 0);
+  CHECK(escapes > 0);
+  CHECK(rawCompact > 0);
+  Tek4100Decoder a(strict), b(compact);
+  a.feed(s);
+  b.feed(c);
+  CHECK(a.report().malformed == 0);
+  CHECK(cutPicture(a.image(), strict, img.width, img.height).pixels == img.pixels);
+  CHECK(cutPicture(b.image(), compact, img.width, img.height).pixels == img.pixels);
+}
