@@ -188,9 +188,12 @@ void renderStream(lattice::Renderer<T>& renderer, const RenderCommandOptions& o,
                   bool toPort) {
   std::unique_ptr<lattice::ByteSink> transport;
   std::string destination;
+  int replyFd = -1;  // the terminal answers here (serial lines only)
   if (toPort) {
     lattice::SerialOptions serial = o.serial;
-    transport = lattice::openSerialSink(serial);
+    auto serialSink = lattice::openSerialSink(serial);
+    replyFd = serialSink->fd();
+    transport = std::move(serialSink);
     destination = serial.port;
   } else if (o.stream == "-") {
     transport = std::make_unique<lattice::StdoutSink>();
@@ -205,6 +208,7 @@ void renderStream(lattice::Renderer<T>& renderer, const RenderCommandOptions& o,
     if (emulator) emulator->feed(bytes);
   });
   auto driver = device.makeDriver(tee);
+  if (replyFd >= 0) driver->answerOn(replyFd, o.serial.stallTimeoutSeconds);
   lattice::runPipeline(renderer, driver->sink(), pipeline);
   tee.close();  // renames the stream file into place, or drains the serial line
   const lattice::app::StreamStats stats = driver->stats();

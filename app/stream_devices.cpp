@@ -34,14 +34,19 @@ class Tek4027StreamDriver final : public StreamDriver {
   StreamStats stats() const override {
     const Tek4027StreamStats& s = driver_.stats();
     return {s.bytes, s.seconds(),
-            fmt::format("strategy {}, {} commands ({} colour changes, {} vector commands), line {:.0f} s, "
-                        "drawing {:.0f} s",
-                        strategyName(s.strategy), s.commands, s.colourSelects, s.vectorCommands, s.lineSeconds,
-                        s.terminalSeconds)};
+            fmt::format("profile {}, strategy {}, {} commands ({} colour changes, {} vector commands, {} report "
+                        "requests), line {:.0f} s, drawing {:.0f} s",
+                        driver_.profile().name, strategyName(s.strategy), s.commands, s.colourSelects,
+                        s.vectorCommands, s.reportRequests, s.lineSeconds, s.terminalSeconds)};
+  }
+  void answerOn(int fd, double timeoutSeconds) override {
+    replies_ = std::make_unique<Tek4027FdReplies>(fd, timeoutSeconds);
+    driver_.setReplies(replies_.get());
   }
 
  private:
   Tek4027Driver driver_;
+  std::unique_ptr<Tek4027FdReplies> replies_;
 };
 
 StreamDevice tek4125(const std::vector<std::string>& overrides) {

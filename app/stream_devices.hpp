@@ -27,6 +27,9 @@ class StreamDriver {
   virtual ~StreamDriver() = default;
   virtual IndexedSink& sink() = 0;
   virtual StreamStats stats() const = 0;  // after sink().end()
+  // A serial line the terminal answers on (its descriptor), for drivers that
+  // wait for answers (the 4027's `!REP` pacing). Ignored by the others.
+  virtual void answerOn(int /*fd*/, double /*timeoutSeconds*/) {}
 };
 
 struct StreamDevice {

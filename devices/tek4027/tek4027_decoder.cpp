@@ -150,11 +150,13 @@ bool Tek4027Decoder::execute() {
   else if (key == "COM")
     ok = setCommandChar();
   else if (key == "GRA")
-    ok = checkOnly(2, 4);  // graphics region in text rows: the framebuffer is fixed
+    ok = checkOnly(2, 4, false);  // graphics region in text rows: the framebuffer is fixed
   else if (key == "WOR")
-    ok = checkOnly(1, 1);  // workspace size: text layout only
+    ok = checkOnly(1, 2, true);  // workspace size [H]: text layout only
   else if (key == "MON")
-    ok = checkOnly(1, 2);  // monitor size [H]: text layout only
+    ok = checkOnly(1, 3, true);  // monitor size [H] [K] (`!MON 12 H K` in a real program): text layout only
+  else if (key == "REP")
+    ok = checkOnly(0, 1, false);  // report request (UGS paces with `!REP 00`): the emulator has no one to answer
   else if (key == "CLE")
     ok = args_.empty();  // clears tab stops: nothing graphic
   else if (key == "LIN") {
@@ -202,12 +204,19 @@ bool Tek4027Decoder::potNumber(std::size_t index, int& out) const {
   return out < profile_.colors;
 }
 
-bool Tek4027Decoder::checkOnly(std::size_t minArgs, std::size_t maxArgs) {
+bool Tek4027Decoder::checkOnly(std::size_t minArgs, std::size_t maxArgs, bool letterFlags) {
   if (args_.size() < minArgs || args_.size() > maxArgs) return false;
   long v = 0;
   for (std::size_t i = 0; i < args_.size(); ++i) {
-    // !MON n H: the optional H (hold) flag is a letter.
-    if (i == 1 && name_.rfind("MON", 0) == 0 && (args_[i] == "H" || args_[i] == "h")) continue;
+    const std::string& t = args_[i];
+    // Workspace and monitor take single-letter flags, alone or after the
+    // count: terminfo's `mon h`, `wor 33h`, a real program's `!MON 12 H K`.
+    if (letterFlags && std::isalpha(static_cast<unsigned char>(t.back()))) {
+      if (t.size() == 1) continue;
+      const std::string count = t.substr(0, t.size() - 1);
+      if (count.find_first_not_of("0123456789") == std::string::npos) continue;
+      return false;
+    }
     if (!number(i, v) || v < 0) return false;
   }
   return true;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "devices/tek4027/tek4027_encoder.hpp"
+#include "devices/tek4027/tek4027_pacing.hpp"
 #include "devices/tek4027/tek4027_profile.hpp"
 #include "io/byte_sink.hpp"
 #include "pipeline/scanline.hpp"
@@ -22,6 +23,11 @@ class Tek4027Driver final : public IndexedSink {
  public:
   explicit Tek4027Driver(ByteSink& sink, Tek4027Profile profile = {},
                          Tek4027Strategy strategy = Tek4027Strategy::Shortest);
+
+  // A serial line's input: when the profile paces the stream with `!REP`
+  // requests, end() waits for one reply after each record. Without one (a
+  // file), the requests are written and nothing waits.
+  void setReplies(Tek4027Replies* replies) { replies_ = replies; }
 
   int maxColors() const override { return profile_.colors; }
   // Throws lattice::Error(Usage) if the frame is larger than the graphics
@@ -45,6 +51,7 @@ class Tek4027Driver final : public IndexedSink {
   int nextRow_ = -1;  // -1: begin() not called
   std::array<int, 256> potOf_{};
   Tek4027StreamStats stats_;
+  Tek4027Replies* replies_ = nullptr;
 };
 
 }  // namespace lattice

@@ -4,6 +4,8 @@
 
 #include <iterator>
 
+#include "devices/tek4027/tek4027_pacing.hpp"
+
 namespace lattice {
 
 const char* strategyName(Tek4027Strategy strategy) {
@@ -18,6 +20,9 @@ const char* strategyName(Tek4027Strategy strategy) {
   }
   return "?";
 }
+
+int percentFromLevel(std::uint8_t level) { return (level * 100 + 127) / 255; }
+std::uint8_t levelFromPercent(long percent) { return static_cast<std::uint8_t>((percent * 255 + 50) / 100); }
 
 namespace {
 
@@ -95,13 +100,22 @@ class Encoder {
     w_.arg(profile_.graphicsLastRow);
     // Pots first, so the erase already shows the new background colour.
     for (int p = 0; p < 8; ++p) {
-      const auto& hls = picture_.potColours[static_cast<std::size_t>(p)];
-      if (!hls) continue;
-      w_.command("MAP");
-      w_.pot(p);
-      w_.arg(hls->hue);
-      w_.arg(hls->lightness);
-      w_.arg(hls->saturation);
+      const auto& rgb = picture_.potColours[static_cast<std::size_t>(p)];
+      if (!rgb) continue;
+      if (profile_.colourForm == Tek4027ColourForm::Mix) {
+        w_.command("MIX");
+        w_.pot(p);
+        w_.arg(percentFromLevel(rgb->r));
+        w_.arg(percentFromLevel(rgb->g));
+        w_.arg(percentFromLevel(rgb->b));
+      } else {
+        const Hls hls = rgbToTekHls(*rgb);
+        w_.command("MAP");
+        w_.pot(p);
+        w_.arg(hls.hue);
+        w_.arg(hls.lightness);
+        w_.arg(hls.saturation);
+      }
     }
     w_.command("ERA");
     w_.arg("G");
@@ -233,7 +247,7 @@ class Encoder {
       for (const auto& chain : chains) {
         std::uint64_t commands = 0;
         std::string text = absoluteChain(chain, commands);
-        if (relative && chain.size() > 2) {
+        if (relative && profile_.relativeVectors && chain.size() > 2) {
           std::uint64_t altCommands = 0;
           std::string alt = relativeChain(chain, altCommands);
           if (alt.size() < text.size()) {
@@ -278,7 +292,11 @@ std::string encodeTek4027(const Tek4027Picture& picture, const Tek4027Profile& p
   }
   Tek4027StreamStats local;
   local.strategy = strategy;
-  std::string text = Encoder(picture, profile, local).run(strategy);
+  // Pacing is part of the stream's cost, so Shortest compares paced streams.
+  PacedStream paced = paceWithReports(Encoder(picture, profile, local).run(strategy), profile);
+  std::string text = std::move(paced.text);
+  local.reportRequests = paced.recordEnds.size();
+  local.commands += local.reportRequests;
   local.bytes = text.size();
   local.lineSeconds = transmitSeconds(local.bytes, profile.line);
   local.terminalSeconds = static_cast<double>(local.bytes) / profile.terminalCharsPerSecond;

@@ -89,7 +89,8 @@ TEST_CASE("every strategy reproduces gradients, rings and few-colour noise") {
 }
 
 TEST_CASE("a single-colour frame is just an erase, and 1x1 frames work") {
-  auto flat = singleColourImage(640, 480, {200, 100, 50});
+  const Tek4027Profile screen;
+  auto flat = singleColourImage(screen.width, screen.height, {200, 100, 50});
   auto sent = send(flat);
   checkReproduces(flat, sent);
   CHECK(sent.stats.vectorCommands == 0);
@@ -104,9 +105,13 @@ TEST_CASE("a single-colour frame is just an erase, and 1x1 frames work") {
   checkReproduces(pair, send(pair));
 }
 
-TEST_CASE("a full 640x480 noise frame is reproduced") {
-  auto img = noiseImage(640, 480, 8, 42);
-  checkReproduces(img, send(img, Tek4027Strategy::ChainedRelative));
+TEST_CASE("a full-screen noise frame is reproduced in each profile") {
+  for (const std::string& name : tek4027PresetNames()) {
+    INFO("profile " << name);
+    const Tek4027Profile profile = tek4027Preset(name);
+    auto img = noiseImage(profile.width, profile.height, 8, 42);
+    checkReproduces(img, send(img, Tek4027Strategy::ChainedRelative, profile), profile);
+  }
 }
 
 TEST_CASE("the most frequent colour becomes the background pot and is not drawn") {

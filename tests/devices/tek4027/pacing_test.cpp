@@ -1,0 +1,142 @@
+// Report pacing: the stream cut into records that each end with `!REP 00`,
+// and a driver that waits for the terminal's answer after each record, over
+// a real pty (tests/io/pty_peer.hpp) standing in for the serial line.
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <string>
+#include <thread>
+
+#include "devices/tek4027/tek4027_decoder.hpp"
+#include "devices/tek4027/tek4027_driver.hpp"
+#include "io/byte_sink.hpp"
+#include "io/pty.hpp"
+#include "io/serial_port.hpp"
+#include "io/serial_sink.hpp"
+#include "tests/devices/tek4027/synthetic_images.hpp"
+#include "tests/io/pty_peer.hpp"
+#include "util/error.hpp"
+
+using namespace lattice;
+
+namespace {
+
+void feedRows(Tek4027Driver& driver, const IndexedImage& img) {
+  driver.begin({img.width, img.height, img.colormap});
+  for (int y = 0; y < img.height; ++y)
+    driver.row(y, std::span<const PaletteIndex>(&img.pixels[static_cast<std::size_t>(y) * img.width],
+                                                static_cast<std::size_t>(img.width)));
+  driver.end();
+}
+
+std::string drive(const IndexedImage& img, const Tek4027Profile& profile) {
+  MemorySink sink;
+  Tek4027Driver driver(sink, profile);
+  feedRows(driver, img);
+  return {sink.data().begin(), sink.data().end()};
+}
+
+IndexedImage decodeScreen(const std::string& text, const Tek4027Profile& profile) {
+  Tek4027Decoder d(profile);
+  d.feed(std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+  d.finish();
+  REQUIRE(d.report().malformed == 0);
+  REQUIRE(d.report().unknownCommands == 0);
+  return d.image();
+}
+
+}  // namespace
+
+TEST_CASE("records end with a report request and hold whole commands") {
+  Tek4027Profile paced;
+  paced.pacing = Tek4027Pacing::Report;
+  Tek4027Profile plain = paced;
+  plain.pacing = Tek4027Pacing::None;
+  const auto img = testing::ringsImage(160, 120);
+  const std::string text = drive(img, paced);
+  const std::vector<std::size_t> ends = reportRecordEnds(text, paced);
+  REQUIRE(ends.size() > 3);
+  CHECK(ends.back() == text.size());  // the last request ends the stream
+  std::size_t start = 0;
+  for (std::size_t end : ends) {
+    CHECK(end - start <= static_cast<std::size_t>(paced.recordBytes));
+    CHECK(text[start] == '!');  // a record starts with a command
+    start = end;
+  }
+  // Same picture with and without the requests.
+  CHECK(decodeScreen(text, paced).pixels == decodeScreen(drive(img, plain), plain).pixels);
+}
+
+TEST_CASE("auto pacing leaves a stream of one record alone") {
+  const Tek4027Profile profile;  // strict: auto
+  IndexedImage small(8, 8, 2);
+  small.colormap = {{0, 0, 0}, {255, 255, 255}};
+  small.at(3, 3) = 1;
+  const std::string text = drive(small, profile);
+  CHECK(text.size() <= static_cast<std::size_t>(profile.recordBytes));
+  CHECK(text.find("!REP") == std::string::npos);
+}
+
+TEST_CASE("over a serial line the driver waits for each answer before the next record", "[serial]") {
+  PtyPair pty;
+  testing::PtyPeer peer(pty);
+  SerialOptions options;
+  options.port = pty.slavePath();
+  options.baud = 38400;
+  options.flow = FlowControl::XonXoff;
+  options.stallTimeoutSeconds = 5.0;
+  SerialSink sink(SerialPort(options.port), options);
+
+  Tek4027Profile profile;
+  profile.pacing = Tek4027Pacing::Report;
+  const auto img = testing::ringsImage(160, 120);
+  const std::string expected = drive(img, profile);
+  const std::vector<std::size_t> ends = reportRecordEnds(expected, profile);
+  REQUIRE(ends.size() > 3);
+
+  Tek4027FdReplies replies(sink.fd(), 5.0);
+  Tek4027Driver driver(sink, profile);
+  driver.setReplies(&replies);
+  std::thread sender([&] { feedRows(driver, img); });
+  // The terminal: after each record, make sure nothing more arrives until it
+  // answers, then answer with a report line.
+  std::size_t overran = 0;
+  for (std::size_t end : ends) {
+    REQUIRE(peer.waitFor(end));
+    std::this_thread::sleep_for(std::chrono::milliseconds(30));
+    if (peer.received() != end) ++overran;
+    for (char c : std::string("!DAT 00\r")) peer.send(static_cast<std::uint8_t>(c));
+  }
+  sender.join();
+  sink.close();
+  peer.settle(0.05);
+  CHECK(overran == 0);
+  CHECK(replies.repliesSeen() == ends.size());
+  const auto got = peer.data();
+  CHECK(std::string(got.begin(), got.end()) == expected);  // the same bytes as the file path
+}
+
+TEST_CASE("a terminal that never answers stops the paced driver with Stalled", "[serial]") {
+  PtyPair pty;
+  testing::PtyPeer peer(pty);
+  SerialOptions options;
+  options.port = pty.slavePath();
+  options.baud = 38400;
+  options.stallTimeoutSeconds = 5.0;
+  SerialSink sink(SerialPort(options.port), options);
+  Tek4027Profile profile;
+  profile.pacing = Tek4027Pacing::Report;
+  Tek4027FdReplies replies(sink.fd(), 0.3);
+  Tek4027Driver driver(sink, profile);
+  driver.setReplies(&replies);
+  try {
+    feedRows(driver, testing::ringsImage(160, 120));
+    FAIL("the driver went on without an answer");
+  } catch (const lattice::Error& e) {
+    CHECK(e.kind() == ErrorKind::Stalled);
+  }
+  // It stopped after the first record.
+  const std::string expected = drive(testing::ringsImage(160, 120), profile);
+  peer.settle(0.05);
+  CHECK(peer.received() == reportRecordEnds(expected, profile).front());
+}
