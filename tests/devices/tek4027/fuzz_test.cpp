@@ -11,6 +11,7 @@
 #include "devices/tek4027/tek4027_decoder.hpp"
 #include "devices/tek4027/tek4027_driver.hpp"
 #include "io/byte_sink.hpp"
+#include "tests/devices/tek4027/drive_frame.hpp"
 #include "tests/devices/tek4027/synthetic_images.hpp"
 
 using namespace lattice;
@@ -56,14 +57,8 @@ TEST_CASE("random streams over the command alphabet never break the emulator") {
 }
 
 TEST_CASE("mutated driver streams never break the emulator") {
-  MemorySink sink;
-  Tek4027Driver driver(sink);
-  auto img = testing::ringsImage(64, 48);
-  driver.begin({img.width, img.height, img.colormap});
-  for (int y = 0; y < img.height; ++y)
-    driver.row(y, std::span<const PaletteIndex>(&img.pixels[static_cast<std::size_t>(y) * img.width], 64));
-  driver.end();
-  const std::vector<std::uint8_t>& original = sink.data();
+  const std::string text = testing::driveFrame(testing::ringsImage(64, 48), Tek4027Profile{});
+  const std::vector<std::uint8_t> original(text.begin(), text.end());
   REQUIRE(original.size() > 500);
 
   std::mt19937 rng(4027);

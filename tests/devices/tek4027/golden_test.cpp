@@ -12,6 +12,7 @@
 #include "devices/tek4027/tek4027_driver.hpp"
 #include "io/byte_sink.hpp"
 #include "io/png.hpp"
+#include "tests/devices/tek4027/drive_frame.hpp"
 #include "tests/devices/tek4027/synthetic_images.hpp"
 #include "tests/support/golden.hpp"
 
@@ -20,14 +21,18 @@ using namespace lattice;
 namespace {
 
 std::vector<std::uint8_t> drive(const IndexedImage& img, const Tek4027Profile& profile) {
-  MemorySink sink;
-  Tek4027Driver driver(sink, profile);
-  driver.begin({img.width, img.height, img.colormap});
-  for (int y = 0; y < img.height; ++y)
-    driver.row(y, std::span<const PaletteIndex>(&img.pixels[static_cast<std::size_t>(y) * img.width],
-                                                static_cast<std::size_t>(img.width)));
-  driver.end();
-  return sink.data();
+  const std::string text = testing::driveFrame(img, profile);
+  return {text.begin(), text.end()};
+}
+
+// The emulator's screen for a stream that must decode without complaint.
+IndexedImage cleanDecode(const std::vector<std::uint8_t>& stream, const Tek4027Profile& profile) {
+  Tek4027Decoder decoder(profile);
+  decoder.feed(stream);
+  decoder.finish();
+  CHECK(decoder.report().malformed == 0);
+  CHECK(decoder.report().unknownCommands == 0);
+  return decoder.image();
 }
 
 std::string suffix(const std::string& profileName) { return profileName == "strict" ? "" : "-" + profileName; }
@@ -41,12 +46,8 @@ TEST_CASE("golden: rings 48x32 stream and emulated screen") {
     const auto stream = drive(testing::ringsImage(48, 32), profile);
     testing::checkGoldenBytes("tek4027/rings-48x32" + suffix(name) + ".tek", stream);
 
-    Tek4027Decoder decoder(profile);
-    decoder.feed(stream);
-    decoder.finish();
-    CHECK(decoder.report().malformed == 0);
-    CHECK(decoder.report().unknownCommands == 0);
-    testing::checkGoldenPng("tek4027/rings-48x32-screen" + suffix(name) + ".png", toRgbImage(decoder.image()));
+    testing::checkGoldenPng("tek4027/rings-48x32-screen" + suffix(name) + ".png",
+                            toRgbImage(cleanDecode(stream, profile)));
   }
 }
 
@@ -58,13 +59,8 @@ TEST_CASE("golden: all eight pots, gradient 40x24") {
     const auto stream = drive(img, profile);
     testing::checkGoldenBytes("tek4027/gradient-40x24" + suffix(name) + ".tek", stream);
 
-    Tek4027Decoder decoder(profile);
-    decoder.feed(stream);
-    decoder.finish();
-    CHECK(decoder.report().malformed == 0);
-    CHECK(decoder.report().unknownCommands == 0);
     // Crop to the frame: the rest of the screen is the erase colour.
-    RgbImage screen = toRgbImage(decoder.image());
+    RgbImage screen = toRgbImage(cleanDecode(stream, profile));
     RgbImage frame(img.width, img.height);
     for (int y = 0; y < img.height; ++y)
       for (int x = 0; x < img.width; ++x) std::copy_n(screen.pixel(x, y), 3, frame.pixel(x, y));

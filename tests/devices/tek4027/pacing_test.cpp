@@ -13,6 +13,7 @@
 #include "io/pty.hpp"
 #include "io/serial_port.hpp"
 #include "io/serial_sink.hpp"
+#include "tests/devices/tek4027/drive_frame.hpp"
 #include "tests/devices/tek4027/synthetic_images.hpp"
 #include "tests/io/pty_peer.hpp"
 #include "util/error.hpp"
@@ -21,20 +22,35 @@ using namespace lattice;
 
 namespace {
 
-void feedRows(Tek4027Driver& driver, const IndexedImage& img) {
-  driver.begin({img.width, img.height, img.colormap});
-  for (int y = 0; y < img.height; ++y)
-    driver.row(y, std::span<const PaletteIndex>(&img.pixels[static_cast<std::size_t>(y) * img.width],
-                                                static_cast<std::size_t>(img.width)));
-  driver.end();
+using testing::feedFrame;
+
+std::string drive(const IndexedImage& img, const Tek4027Profile& profile) { return testing::driveFrame(img, profile); }
+
+Tek4027Profile alwaysPaced() {
+  Tek4027Profile profile;
+  profile.pacing = Tek4027Pacing::Report;
+  return profile;
 }
 
-std::string drive(const IndexedImage& img, const Tek4027Profile& profile) {
-  MemorySink sink;
-  Tek4027Driver driver(sink, profile);
-  feedRows(driver, img);
-  return {sink.data().begin(), sink.data().end()};
-}
+// A paced driver on the slave side of a pty (the serial line), the peer on
+// the master side as the terminal, and the driver reading answers from the line.
+struct PacedLine {
+  explicit PacedLine(double replyTimeout) : replies(sink.fd(), replyTimeout) { driver.setReplies(&replies); }
+  static SerialOptions options(const PtyPair& pty) {
+    SerialOptions o;
+    o.port = pty.slavePath();
+    o.baud = 38400;
+    o.flow = FlowControl::XonXoff;
+    o.stallTimeoutSeconds = 5.0;
+    return o;
+  }
+  PtyPair pty;
+  testing::PtyPeer peer{pty};
+  SerialSink sink{SerialPort(pty.slavePath()), options(pty)};
+  Tek4027Profile profile = alwaysPaced();
+  Tek4027FdReplies replies;
+  Tek4027Driver driver{sink, profile};
+};
 
 IndexedImage decodeScreen(const std::string& text, const Tek4027Profile& profile) {
   Tek4027Decoder d(profile);
@@ -48,8 +64,7 @@ IndexedImage decodeScreen(const std::string& text, const Tek4027Profile& profile
 }  // namespace
 
 TEST_CASE("records end with a report request and hold whole commands") {
-  Tek4027Profile paced;
-  paced.pacing = Tek4027Pacing::Report;
+  const Tek4027Profile paced = alwaysPaced();
   Tek4027Profile plain = paced;
   plain.pacing = Tek4027Pacing::None;
   const auto img = testing::ringsImage(160, 120);
@@ -78,26 +93,14 @@ TEST_CASE("auto pacing leaves a stream of one record alone") {
 }
 
 TEST_CASE("over a serial line the driver waits for each answer before the next record", "[serial]") {
-  PtyPair pty;
-  testing::PtyPeer peer(pty);
-  SerialOptions options;
-  options.port = pty.slavePath();
-  options.baud = 38400;
-  options.flow = FlowControl::XonXoff;
-  options.stallTimeoutSeconds = 5.0;
-  SerialSink sink(SerialPort(options.port), options);
-
-  Tek4027Profile profile;
-  profile.pacing = Tek4027Pacing::Report;
+  PacedLine line(5.0);
+  testing::PtyPeer& peer = line.peer;
   const auto img = testing::ringsImage(160, 120);
-  const std::string expected = drive(img, profile);
-  const std::vector<std::size_t> ends = reportRecordEnds(expected, profile);
+  const std::string expected = drive(img, line.profile);
+  const std::vector<std::size_t> ends = reportRecordEnds(expected, line.profile);
   REQUIRE(ends.size() > 3);
 
-  Tek4027FdReplies replies(sink.fd(), 5.0);
-  Tek4027Driver driver(sink, profile);
-  driver.setReplies(&replies);
-  std::thread sender([&] { feedRows(driver, img); });
+  std::thread sender([&] { feedFrame(line.driver, img); });
   // The terminal: after each record, make sure nothing more arrives until it
   // answers, then answer with a report line.
   std::size_t overran = 0;
@@ -108,35 +111,24 @@ TEST_CASE("over a serial line the driver waits for each answer before the next r
     for (char c : std::string("!DAT 00\r")) peer.send(static_cast<std::uint8_t>(c));
   }
   sender.join();
-  sink.close();
+  line.sink.close();
   peer.settle(0.05);
   CHECK(overran == 0);
-  CHECK(replies.repliesSeen() == ends.size());
+  CHECK(line.replies.repliesSeen() == ends.size());
   const auto got = peer.data();
   CHECK(std::string(got.begin(), got.end()) == expected);  // the same bytes as the file path
 }
 
 TEST_CASE("a terminal that never answers stops the paced driver with Stalled", "[serial]") {
-  PtyPair pty;
-  testing::PtyPeer peer(pty);
-  SerialOptions options;
-  options.port = pty.slavePath();
-  options.baud = 38400;
-  options.stallTimeoutSeconds = 5.0;
-  SerialSink sink(SerialPort(options.port), options);
-  Tek4027Profile profile;
-  profile.pacing = Tek4027Pacing::Report;
-  Tek4027FdReplies replies(sink.fd(), 0.3);
-  Tek4027Driver driver(sink, profile);
-  driver.setReplies(&replies);
+  PacedLine line(0.3);
   try {
-    feedRows(driver, testing::ringsImage(160, 120));
+    feedFrame(line.driver, testing::ringsImage(160, 120));
     FAIL("the driver went on without an answer");
   } catch (const lattice::Error& e) {
     CHECK(e.kind() == ErrorKind::Stalled);
   }
   // It stopped after the first record.
-  const std::string expected = drive(testing::ringsImage(160, 120), profile);
-  peer.settle(0.05);
-  CHECK(peer.received() == reportRecordEnds(expected, profile).front());
+  const std::string expected = drive(testing::ringsImage(160, 120), line.profile);
+  line.peer.settle(0.05);
+  CHECK(line.peer.received() == reportRecordEnds(expected, line.profile).front());
 }

@@ -9,6 +9,7 @@
 #include "devices/tek4027/tek4027_decoder.hpp"
 #include "devices/tek4027/tek4027_driver.hpp"
 #include "io/byte_sink.hpp"
+#include "tests/devices/tek4027/drive_frame.hpp"
 #include "tests/devices/tek4027/synthetic_images.hpp"
 #include "util/error.hpp"
 
@@ -16,16 +17,7 @@ using namespace lattice;
 
 namespace {
 
-std::string drive(const IndexedImage& img, const Tek4027Profile& profile) {
-  MemorySink sink;
-  Tek4027Driver driver(sink, profile);
-  driver.begin({img.width, img.height, img.colormap});
-  for (int y = 0; y < img.height; ++y)
-    driver.row(y, std::span<const PaletteIndex>(&img.pixels[static_cast<std::size_t>(y) * img.width],
-                                                static_cast<std::size_t>(img.width)));
-  driver.end();
-  return {sink.data().begin(), sink.data().end()};
-}
+std::string drive(const IndexedImage& img, const Tek4027Profile& profile) { return testing::driveFrame(img, profile); }
 
 // The three-letter keys of every command in a stream.
 std::set<std::string> commandNames(const std::string& text) {

@@ -9,6 +9,7 @@
 #include "devices/tek4027/tek4027_driver.hpp"
 #include "io/byte_sink.hpp"
 #include "util/error.hpp"
+#include "tests/devices/tek4027/drive_frame.hpp"
 #include "tests/devices/tek4027/synthetic_images.hpp"
 
 using namespace lattice;
@@ -26,11 +27,7 @@ Sent send(const IndexedImage& img, Tek4027Strategy strategy = Tek4027Strategy::S
           Tek4027Profile profile = {}) {
   MemorySink sink;
   Tek4027Driver driver(sink, profile, strategy);
-  driver.begin({img.width, img.height, img.colormap});
-  for (int y = 0; y < img.height; ++y)
-    driver.row(y, std::span<const PaletteIndex>(&img.pixels[static_cast<std::size_t>(y) * img.width],
-                                                static_cast<std::size_t>(img.width)));
-  driver.end();
+  feedFrame(driver, img);
   Sent s;
   s.bytes = sink.data();
   s.stats = driver.stats();
