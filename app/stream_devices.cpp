@@ -34,9 +34,9 @@ class Tek4027StreamDriver final : public StreamDriver {
   StreamStats stats() const override {
     const Tek4027StreamStats& s = driver_.stats();
     return {s.bytes, s.seconds(),
-            fmt::format("profile {}, strategy {}, {} commands ({} colour changes, {} vector commands, {} report "
+            fmt::format("profile {}, strategy {} along {}, {} commands ({} colour changes, {} vector commands, {} report "
                         "requests), line {:.0f} s, drawing {:.0f} s",
-                        driver_.profile().name, strategyName(s.strategy), s.commands, s.colourSelects,
+                        driver_.profile().name, strategyName(s.strategy), orientationName(s.orientation), s.commands, s.colourSelects,
                         s.vectorCommands, s.reportRequests, s.lineSeconds, s.terminalSeconds)};
   }
   void answerOn(int fd, double timeoutSeconds) override {

@@ -8,8 +8,9 @@
 
 namespace lattice {
 
-Tek4027Driver::Tek4027Driver(ByteSink& sink, Tek4027Profile profile, Tek4027Strategy strategy)
-    : sink_(sink), profile_(profile), strategy_(strategy) {
+Tek4027Driver::Tek4027Driver(ByteSink& sink, Tek4027Profile profile, Tek4027Strategy strategy,
+                             Tek4027Orientation orientation)
+    : sink_(sink), profile_(profile), strategy_(strategy), orientation_(orientation) {
   profile_.validate();
   potOf_.fill(-1);
 }
@@ -80,7 +81,7 @@ void Tek4027Driver::end() {
     if (count[i] > 0 || i == background)
       picture.potColours[static_cast<std::size_t>(potOf_[i])] = frame_.palette[i];
 
-  const std::string text = encodeTek4027(picture, profile_, strategy_, &stats_);
+  const std::string text = encodeTek4027(picture, profile_, strategy_, &stats_, orientation_);
   // In pieces, so a slow sink (a serial line with flow control) can report
   // progress and pace itself as the picture goes out; with report pacing and
   // a terminal to answer, one record at a time.

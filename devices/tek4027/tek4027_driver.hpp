@@ -21,8 +21,10 @@ namespace lattice {
 
 class Tek4027Driver final : public IndexedSink {
  public:
+  // `orientation` applies to an explicit strategy; Shortest tries each.
   explicit Tek4027Driver(ByteSink& sink, Tek4027Profile profile = {},
-                         Tek4027Strategy strategy = Tek4027Strategy::Shortest);
+                         Tek4027Strategy strategy = Tek4027Strategy::Shortest,
+                         Tek4027Orientation orientation = Tek4027Orientation::Rows);
 
   // A serial line's input: when the profile paces the stream with `!REP`
   // requests, end() waits for one reply after each record. Without one (a
@@ -46,6 +48,7 @@ class Tek4027Driver final : public IndexedSink {
   ByteSink& sink_;
   Tek4027Profile profile_;
   Tek4027Strategy strategy_;
+  Tek4027Orientation orientation_;
   FrameInfo frame_;
   std::vector<PaletteIndex> pixels_;
   int nextRow_ = -1;  // -1: begin() not called

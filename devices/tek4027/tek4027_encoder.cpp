@@ -72,6 +72,12 @@ class Encoder {
  public:
   Encoder(const Tek4027Picture& picture, const Tek4027Profile& profile, Tek4027StreamStats& stats)
       : picture_(picture), frame_(picture.frame), profile_(profile), stats_(stats), w_(out_, profile, stats) {}
+  // Another orientation: `frame` is the picture turned (orientedFrame());
+  // every point is turned back when it is written.
+  Encoder(const Tek4027Picture& picture, const PotFrame& frame, Tek4027Orientation orientation,
+          const Tek4027Profile& profile, Tek4027StreamStats& stats)
+      : picture_(picture), frame_(frame), profile_(profile), stats_(stats), w_(out_, profile, stats),
+        orientation_(orientation) {}
 
   std::string run(Tek4027Strategy strategy) {
     preamble();
@@ -89,8 +95,22 @@ class Encoder {
   }
 
  private:
-  // Terminal coordinates: y counts up from the bottom of the graphics area.
-  long termY(int imageY) const { return static_cast<long>(profile_.height) - 1 - imageY; }
+  // Terminal coordinates of a point of the working frame: y counts up from
+  // the bottom of the graphics area; a turned frame is turned back.
+  struct TermPoint {
+    long x, y;
+  };
+  TermPoint term(FramePoint p) const {
+    int imageX = p.x, imageY = p.y;
+    if (orientation_ == Tek4027Orientation::RowsUp) imageY = picture_.frame.height - 1 - p.y;
+    if (orientation_ == Tek4027Orientation::Columns) std::swap(imageX, imageY);
+    return {imageX, static_cast<long>(profile_.height) - 1 - imageY};
+  }
+  void point(CommandWriter& w, FramePoint p) const {
+    const TermPoint t = term(p);
+    w.arg(t.x);
+    w.arg(t.y);
+  }
 
   void preamble() {
     w_.command("WOR");
@@ -131,10 +151,8 @@ class Encoder {
 
   void vector(const PotRun& r) {
     w_.command("VEC");
-    w_.arg(r.x0);
-    w_.arg(termY(r.y));
-    w_.arg(r.x1);
-    w_.arg(termY(r.y));
+    point(w_, {r.x0, r.y});
+    point(w_, {r.x1, r.y});
     ++stats_.vectorCommands;
   }
 
@@ -170,13 +188,11 @@ class Encoder {
         w.command("VEC");
         inCommand = 0;
         if (i > 0) {
-          w.arg(chain[i - 1].x);
-          w.arg(termY(chain[i - 1].y));
+          point(w, chain[i - 1]);
           ++inCommand;
         }
       }
-      w.arg(chain[i].x);
-      w.arg(termY(chain[i].y));
+      point(w, chain[i]);
       ++inCommand;
     }
     commands = scratch.commands;
@@ -190,15 +206,13 @@ class Encoder {
     Tek4027StreamStats scratch;
     CommandWriter w(text, profile_, scratch);
     w.command("VEC");
-    for (std::size_t i = 0; i < 2; ++i) {
-      w.arg(chain[i].x);
-      w.arg(termY(chain[i].y));
-    }
+    for (std::size_t i = 0; i < 2; ++i) point(w, chain[i]);
     const auto limit = static_cast<std::size_t>(profile_.maxPointsPerCommand);
     for (std::size_t i = 2; i < chain.size(); ++i) {
       if ((i - 2) % limit == 0) w.command("RVE");
-      w.arg(chain[i].x - chain[i - 1].x);
-      w.arg(termY(chain[i].y) - termY(chain[i - 1].y));
+      const TermPoint a = term(chain[i - 1]), b = term(chain[i]);
+      w.arg(b.x - a.x);
+      w.arg(b.y - a.y);
     }
     commands = scratch.commands;
     return text;
@@ -268,32 +282,58 @@ class Encoder {
   Tek4027StreamStats& stats_;
   std::string out_;
   CommandWriter w_;
+  Tek4027Orientation orientation_ = Tek4027Orientation::Rows;
   int currentPot_ = -1;
 };
+
+// The picture as the encoder walks it: its rows bottom first (RowsUp), or
+// its columns left first as rows (Columns).
+PotFrame orientedFrame(const PotFrame& f, Tek4027Orientation orientation) {
+  PotFrame t;
+  const bool columns = orientation == Tek4027Orientation::Columns;
+  t.width = columns ? f.height : f.width;
+  t.height = columns ? f.width : f.height;
+  t.backgroundPot = f.backgroundPot;
+  t.pots.resize(f.pots.size());
+  for (int y = 0; y < f.height; ++y)
+    for (int x = 0; x < f.width; ++x) {
+      const int tx = columns ? y : x, ty = columns ? x : f.height - 1 - y;
+      t.pots[static_cast<std::size_t>(ty) * static_cast<std::size_t>(t.width) + static_cast<std::size_t>(tx)] = f.at(x, y);
+    }
+  return t;
+}
 
 }  // namespace
 
 std::string encodeTek4027(const Tek4027Picture& picture, const Tek4027Profile& profile, Tek4027Strategy strategy,
-                          Tek4027StreamStats* stats) {
+                          Tek4027StreamStats* stats, Tek4027Orientation orientation) {
   if (strategy == Tek4027Strategy::Shortest) {
+    // Every strategy along rows and along columns (the same command forms;
+    // only the runs' direction differs): whichever stream is shortest.
     std::string best;
     Tek4027StreamStats bestStats;
-    for (auto s : {Tek4027Strategy::RowOrder, Tek4027Strategy::ColourOrder, Tek4027Strategy::Chained,
-                   Tek4027Strategy::ChainedRelative, Tek4027Strategy::Layered, Tek4027Strategy::LayeredChained}) {
-      Tek4027StreamStats candidateStats;
-      std::string candidate = encodeTek4027(picture, profile, s, &candidateStats);
-      if (best.empty() || candidate.size() < best.size()) {
-        best = std::move(candidate);
-        bestStats = candidateStats;
+    for (auto o : {Tek4027Orientation::Rows, Tek4027Orientation::RowsUp, Tek4027Orientation::Columns})
+      for (auto s : {Tek4027Strategy::RowOrder, Tek4027Strategy::ColourOrder, Tek4027Strategy::Chained,
+                     Tek4027Strategy::ChainedRelative, Tek4027Strategy::Layered, Tek4027Strategy::LayeredChained}) {
+        Tek4027StreamStats candidateStats;
+        std::string candidate = encodeTek4027(picture, profile, s, &candidateStats, o);
+        if (best.empty() || candidate.size() < best.size()) {
+          best = std::move(candidate);
+          bestStats = candidateStats;
+        }
       }
-    }
     if (stats != nullptr) *stats = bestStats;
     return best;
   }
   Tek4027StreamStats local;
   local.strategy = strategy;
+  local.orientation = orientation;
+  const bool turned = orientation != Tek4027Orientation::Rows;
+  const PotFrame working = turned ? orientedFrame(picture.frame, orientation) : PotFrame{};
+  const std::string plain = turned ? Encoder(picture, working, orientation, profile, local).run(strategy)
+                                   : Encoder(picture, profile, local).run(strategy);
   // Pacing is part of the stream's cost, so Shortest compares paced streams.
-  PacedStream paced = paceWithReports(Encoder(picture, profile, local).run(strategy), profile);
+  PacedStream paced = paceWithReports(plain, profile);
   std::string text = std::move(paced.text);
   local.reportRequests = paced.recordEnds.size();
   local.commands += local.reportRequests;
@@ -302,6 +342,15 @@ std::string encodeTek4027(const Tek4027Picture& picture, const Tek4027Profile& p
   local.terminalSeconds = static_cast<double>(local.bytes) / profile.terminalCharsPerSecond;
   if (stats != nullptr) *stats = local;
   return text;
+}
+
+const char* orientationName(Tek4027Orientation orientation) {
+  switch (orientation) {
+    case Tek4027Orientation::Rows: return "rows";
+    case Tek4027Orientation::RowsUp: return "rows-up";
+    case Tek4027Orientation::Columns: return "columns";
+  }
+  return "?";
 }
 
 }  // namespace lattice

@@ -27,8 +27,17 @@ enum class Tek4027Strategy {
 
 const char* strategyName(Tek4027Strategy strategy);
 
+// How the strategies walk the picture: its rows top first (horizontal
+// vectors, each step to the next row one down), its rows bottom first (each
+// step `0 1`, a byte shorter than `0 -1`), or its columns left first
+// (vertical vectors, steps `1 0`). All use the same command forms; Shortest
+// tries each.
+enum class Tek4027Orientation { Rows, RowsUp, Columns };
+const char* orientationName(Tek4027Orientation orientation);
+
 struct Tek4027StreamStats {
   Tek4027Strategy strategy = Tek4027Strategy::Shortest;  // the one actually used
+  Tek4027Orientation orientation = Tek4027Orientation::Rows;
   std::uint64_t bytes = 0;
   std::uint64_t commands = 0;
   std::uint64_t colourSelects = 0;  // !COL commands
@@ -57,6 +66,7 @@ std::uint8_t levelFromPercent(long percent);
 // The frame is placed at the top-left of the graphics area. Report pacing is
 // applied afterwards (tek4027_pacing.hpp).
 std::string encodeTek4027(const Tek4027Picture& picture, const Tek4027Profile& profile, Tek4027Strategy strategy,
-                          Tek4027StreamStats* stats = nullptr);
+                          Tek4027StreamStats* stats = nullptr,
+                          Tek4027Orientation orientation = Tek4027Orientation::Rows);
 
 }  // namespace lattice

@@ -24,9 +24,9 @@ struct Sent {
 };
 
 Sent send(const IndexedImage& img, Tek4027Strategy strategy = Tek4027Strategy::Shortest,
-          Tek4027Profile profile = {}) {
+          Tek4027Profile profile = {}, Tek4027Orientation orientation = Tek4027Orientation::Rows) {
   MemorySink sink;
-  Tek4027Driver driver(sink, profile, strategy);
+  Tek4027Driver driver(sink, profile, strategy, orientation);
   feedFrame(driver, img);
   Sent s;
   s.bytes = sink.data();
@@ -67,22 +67,45 @@ constexpr Tek4027Strategy kAll[] = {Tek4027Strategy::RowOrder, Tek4027Strategy::
 
 }  // namespace
 
-TEST_CASE("every strategy reproduces random 8-colour noise") {
+constexpr Tek4027Orientation kBoth[] = {Tek4027Orientation::Rows, Tek4027Orientation::RowsUp,
+                                        Tek4027Orientation::Columns};
+
+TEST_CASE("every strategy reproduces random 8-colour noise in every orientation") {
   auto img = noiseImage(97, 61, 8, 1);
-  for (auto s : kAll) {
-    INFO(strategyName(s));
-    checkReproduces(img, send(img, s));
+  for (auto o : kBoth)
+    for (auto s : kAll) {
+      INFO(strategyName(s) << " along " << orientationName(o));
+      checkReproduces(img, send(img, s, {}, o));
+    }
+}
+
+TEST_CASE("every strategy reproduces gradients, rings and few-colour noise in every orientation") {
+  for (const auto& img : {gradientImage(200, 150), ringsImage(160, 120), noiseImage(50, 40, 2, 7),
+                          noiseImage(64, 64, 3, 9)}) {
+    for (auto o : kBoth)
+      for (auto s : kAll) {
+        INFO(strategyName(s) << " along " << orientationName(o) << " on " << img.width << "x" << img.height);
+        checkReproduces(img, send(img, s, {}, o));
+      }
   }
 }
 
-TEST_CASE("every strategy reproduces gradients, rings and few-colour noise") {
-  for (const auto& img : {gradientImage(200, 150), ringsImage(160, 120), noiseImage(50, 40, 2, 7),
-                          noiseImage(64, 64, 3, 9)}) {
-    for (auto s : kAll) {
-      INFO(strategyName(s) << " on " << img.width << "x" << img.height);
-      checkReproduces(img, send(img, s));
-    }
-  }
+TEST_CASE("shortest takes columns when the picture's runs are vertical") {
+  // Vertical stripes: one run per column, one per pixel along rows.
+  IndexedImage stripes(60, 40, 3);
+  stripes.colormap = {{0, 0, 0}, {255, 0, 0}, {0, 0, 255}};
+  for (int y = 0; y < stripes.height; ++y)
+    for (int x = 0; x < stripes.width; ++x) stripes.at(x, y) = static_cast<PaletteIndex>(x % 3);
+  const Sent best = send(stripes);
+  CHECK(best.stats.orientation == Tek4027Orientation::Columns);
+  CHECK(best.bytes.size() < send(stripes, Tek4027Strategy::LayeredChained).bytes.size() / 4);
+  checkReproduces(stripes, best);
+  // Its transpose goes along rows.
+  IndexedImage bands(40, 60, 3);
+  bands.colormap = stripes.colormap;
+  for (int y = 0; y < bands.height; ++y)
+    for (int x = 0; x < bands.width; ++x) bands.at(x, y) = stripes.at(y, x);
+  CHECK(send(bands).stats.orientation != Tek4027Orientation::Columns);
 }
 
 TEST_CASE("a single-colour frame is just an erase, and 1x1 frames work") {
@@ -239,13 +262,17 @@ TEST_CASE("stream sizes of the 512x512 test images") {
                                   std::pair{"noise", noiseImage(512, 512, 8, 11)}}) {
     std::size_t best = SIZE_MAX, shortest = 0;
     for (auto s : kAll) {
+      if (s != Tek4027Strategy::Shortest)  // Shortest also tries each strategy in the other orientations
+        for (auto o : {Tek4027Orientation::RowsUp, Tek4027Orientation::Columns})
+          best = std::min(best, send(img, s, profile, o).bytes.size());
       auto sent = send(img, s, profile);
       if (s == Tek4027Strategy::Shortest)
         shortest = sent.bytes.size();
       else
         best = std::min(best, sent.bytes.size());
       if (print != nullptr)
-        WARN(name << " " << strategyName(sent.stats.strategy) << (s == Tek4027Strategy::Shortest ? " (picked)" : "")
+        WARN(name << " " << strategyName(sent.stats.strategy) << " along " << orientationName(sent.stats.orientation)
+                  << (s == Tek4027Strategy::Shortest ? " (picked)" : "")
                   << ": " << sent.bytes.size() << " bytes, " << sent.stats.commands << " commands, "
                   << sent.stats.colourSelects << " !COL, " << sent.stats.lineSeconds / 60 << " min at "
                   << profile.line.baud << " baud, " << sent.stats.terminalSeconds / 60 << " min at "
