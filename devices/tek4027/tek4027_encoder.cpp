@@ -305,43 +305,52 @@ PotFrame orientedFrame(const PotFrame& f, Tek4027Orientation orientation) {
 
 }  // namespace
 
+namespace {
+
+// One strategy in one orientation, unpaced; the stats count the stream as
+// the profile would pace it.
+std::string encodeUnpaced(const Tek4027Picture& picture, const Tek4027Profile& profile, Tek4027Strategy strategy,
+                          Tek4027Orientation orientation, Tek4027StreamStats& stats) {
+  stats = {};
+  stats.strategy = strategy;
+  stats.orientation = orientation;
+  const bool turned = orientation != Tek4027Orientation::Rows;
+  const PotFrame working = turned ? orientedFrame(picture.frame, orientation) : PotFrame{};
+  std::string text = turned ? Encoder(picture, working, orientation, profile, stats).run(strategy)
+                            : Encoder(picture, profile, stats).run(strategy);
+  const std::vector<std::size_t> cuts = recordCuts(text, profile);
+  stats.reportRequests = cuts.size();
+  stats.commands += stats.reportRequests;
+  stats.bytes = pacedSize(text, cuts, profile);
+  stats.lineSeconds = transmitSeconds(stats.bytes, profile.line);
+  stats.terminalSeconds = static_cast<double>(stats.bytes) / profile.terminalCharsPerSecond;
+  return text;
+}
+
+}  // namespace
+
 std::string encodeTek4027(const Tek4027Picture& picture, const Tek4027Profile& profile, Tek4027Strategy strategy,
                           Tek4027StreamStats* stats, Tek4027Orientation orientation) {
+  Tek4027StreamStats bestStats;
+  std::string best;
   if (strategy == Tek4027Strategy::Shortest) {
-    // Every strategy along rows and along columns (the same command forms;
-    // only the runs' direction differs): whichever stream is shortest.
-    std::string best;
-    Tek4027StreamStats bestStats;
+    // Every strategy in every orientation (the same command forms; only the
+    // runs' direction differs), compared by paced length: the shortest wins.
     for (auto o : {Tek4027Orientation::Rows, Tek4027Orientation::RowsUp, Tek4027Orientation::Columns})
       for (auto s : {Tek4027Strategy::RowOrder, Tek4027Strategy::ColourOrder, Tek4027Strategy::Chained,
                      Tek4027Strategy::ChainedRelative, Tek4027Strategy::Layered, Tek4027Strategy::LayeredChained}) {
         Tek4027StreamStats candidateStats;
-        std::string candidate = encodeTek4027(picture, profile, s, &candidateStats, o);
-        if (best.empty() || candidate.size() < best.size()) {
+        std::string candidate = encodeUnpaced(picture, profile, s, o, candidateStats);
+        if (best.empty() || candidateStats.bytes < bestStats.bytes) {
           best = std::move(candidate);
           bestStats = candidateStats;
         }
       }
-    if (stats != nullptr) *stats = bestStats;
-    return best;
+  } else {
+    best = encodeUnpaced(picture, profile, strategy, orientation, bestStats);
   }
-  Tek4027StreamStats local;
-  local.strategy = strategy;
-  local.orientation = orientation;
-  const bool turned = orientation != Tek4027Orientation::Rows;
-  const PotFrame working = turned ? orientedFrame(picture.frame, orientation) : PotFrame{};
-  const std::string plain = turned ? Encoder(picture, working, orientation, profile, local).run(strategy)
-                                   : Encoder(picture, profile, local).run(strategy);
-  // Pacing is part of the stream's cost, so Shortest compares paced streams.
-  PacedStream paced = paceWithReports(plain, profile);
-  std::string text = std::move(paced.text);
-  local.reportRequests = paced.recordEnds.size();
-  local.commands += local.reportRequests;
-  local.bytes = text.size();
-  local.lineSeconds = transmitSeconds(local.bytes, profile.line);
-  local.terminalSeconds = static_cast<double>(local.bytes) / profile.terminalCharsPerSecond;
-  if (stats != nullptr) *stats = local;
-  return text;
+  if (stats != nullptr) *stats = bestStats;
+  return paceWithReports(std::move(best), profile);
 }
 
 const char* orientationName(Tek4027Orientation orientation) {

@@ -66,34 +66,46 @@ std::vector<std::size_t> reportRecordEnds(const std::string& paced, const Tek402
   return ends;
 }
 
-PacedStream paceWithReports(const std::string& text, const Tek4027Profile& profile) {
-  PacedStream out;
-  if (!paced(text, profile)) {
-    out.text = text;
-    return out;
-  }
-  const std::string request = requestText(profile);
-  const std::size_t budget = static_cast<std::size_t>(profile.recordBytes) - request.size();
-  // The stream's own final terminator belongs to its last command.
-  std::string body = text;
-  if (!body.empty() && body.back() == profile.terminator) body.pop_back();
-
+std::vector<std::size_t> recordCuts(const std::string& text, const Tek4027Profile& profile) {
+  std::vector<std::size_t> cuts;
+  if (!paced(text, profile)) return cuts;
+  const std::size_t budget = static_cast<std::size_t>(profile.recordBytes) - requestText(profile).size();
+  // The stream's own final terminator belongs to its last command; the last
+  // request's CR takes its place.
+  std::size_t end = text.size();
+  if (end > 0 && text.back() == profile.terminator) --end;
   std::size_t recordStart = 0;
-  std::size_t at = 0;
-  auto closeRecord = [&](std::size_t end) {
-    out.text.append(body, recordStart, end - recordStart);
-    out.text += request;  // its CR also ends the command before it
-    out.recordEnds.push_back(out.text.size());
-    recordStart = end;
-  };
-  while (at < body.size()) {
-    std::size_t next = body.find(profile.commandChar, at + 1);
-    if (next == std::string::npos) next = body.size();
+  for (std::size_t at = 0; at < end;) {
+    std::size_t next = text.find(profile.commandChar, at + 1);
+    if (next == std::string::npos || next > end) next = end;
     // Close the record before a command that would overflow it (never empty).
-    if (next - recordStart > budget && at > recordStart) closeRecord(at);
+    if (next - recordStart > budget && at > recordStart) {
+      cuts.push_back(at);
+      recordStart = at;
+    }
     at = next;
   }
-  if (recordStart < body.size()) closeRecord(body.size());
+  if (recordStart < end) cuts.push_back(end);
+  return cuts;
+}
+
+std::size_t pacedSize(const std::string& text, const std::vector<std::size_t>& cuts, const Tek4027Profile& profile) {
+  if (cuts.empty()) return text.size();
+  return cuts.back() + cuts.size() * requestText(profile).size();
+}
+
+std::string paceWithReports(std::string text, const Tek4027Profile& profile) {
+  const std::vector<std::size_t> cuts = recordCuts(text, profile);
+  if (cuts.empty()) return text;
+  const std::string request = requestText(profile);
+  std::string out;
+  out.reserve(pacedSize(text, cuts, profile));
+  std::size_t from = 0;
+  for (std::size_t cut : cuts) {
+    out.append(text, from, cut - from);
+    out += request;  // its CR also ends the command before it
+    from = cut;
+  }
   return out;
 }
 

@@ -45,16 +45,19 @@ class Tek4027FdReplies final : public Tek4027Replies {
   std::size_t seen_ = 0;
 };
 
-struct PacedStream {
-  std::string text;
-  std::vector<std::size_t> recordEnds;  // offset just past each `!REP 00` CR
-};
+// Where the records of an unpaced stream end: offsets into `text` at which
+// a request goes. Empty when the profile does not pace the stream.
+std::vector<std::size_t> recordCuts(const std::string& text, const Tek4027Profile& profile);
+
+// The stream's length once paced, without building it (Shortest compares
+// paced lengths but keeps only one unpaced candidate besides the best).
+std::size_t pacedSize(const std::string& text, const std::vector<std::size_t>& cuts, const Tek4027Profile& profile);
 
 // Where the records of a paced stream end (just past each request's CR).
 std::vector<std::size_t> reportRecordEnds(const std::string& paced, const Tek4027Profile& profile);
 
 // `text` is a finished stream (commands introduced by profile.commandChar).
-// Returns it unchanged (no records) when the profile does not pace it.
-PacedStream paceWithReports(const std::string& text, const Tek4027Profile& profile);
+// Returns it unchanged when the profile does not pace it.
+std::string paceWithReports(std::string text, const Tek4027Profile& profile);
 
 }  // namespace lattice
