@@ -1,9 +1,16 @@
 // Report pacing: the stream cut into records that each end with `!REP 00`,
 // and a driver that waits for the terminal's answer after each record, over
-// a real pty (tests/io/pty_peer.hpp) standing in for the serial line.
+// a real pty (tests/io/pty_peer.hpp) standing in for the serial line: the
+// driver on its own, and the `lattice render --port` command.
 #include <catch2/catch.hpp>
 
+#include <fmt/format.h>
+#include <unistd.h>
+
 #include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <thread>
 
@@ -14,6 +21,8 @@
 #include "io/serial_port.hpp"
 #include "io/serial_sink.hpp"
 #include "tests/devices/tek4027/drive_frame.hpp"
+#include "tests/support/golden.hpp"
+#include "tests/support/run_lattice.hpp"
 #include "tests/devices/tek4027/synthetic_images.hpp"
 #include "tests/io/pty_peer.hpp"
 #include "util/error.hpp"
@@ -131,4 +140,43 @@ TEST_CASE("a terminal that never answers stops the paced driver with Stalled", "
   const std::string expected = drive(testing::ringsImage(160, 120), line.profile);
   line.peer.settle(0.05);
   CHECK(line.peer.received() == reportRecordEnds(expected, line.profile).front());
+}
+
+TEST_CASE("lattice render --port waits for each answer and sends the bytes --stream writes", "[serial]") {
+  // Built with test_devices_tek4027 (tests/CMakeLists.txt): a missing binary
+  // is a broken build, not a reason to skip.
+  INFO("binary " << testing::latticeBinary().string() << " (build the `lattice` target, or set LATTICE_EXE)");
+  REQUIRE(std::filesystem::exists(testing::latticeBinary()));
+  const std::string scene = testing::sourcePath("scenes/torus-floor.toml").string();
+  const std::string common = fmt::format("render '{}' --device tek4027 --width 120 --height 90", scene);
+  const auto file = std::filesystem::temp_directory_path() / fmt::format("paced-{}.t27", ::getpid());
+  const testing::CommandRun toFile = testing::runLattice(fmt::format("{} --stream '{}'", common, file.string()));
+  INFO("--stream run: " << toFile.stderrText);
+  REQUIRE(toFile.exitCode == 0);
+  std::ifstream in(file, std::ios::binary);
+  const std::string expected((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::filesystem::remove(file);
+  const std::vector<std::size_t> ends = reportRecordEnds(expected, Tek4027Profile{});
+  REQUIRE(ends.size() > 3);  // strict paces a stream longer than one record
+
+  PtyPair pty;
+  testing::PtyPeer peer(pty);
+  testing::CommandRun toPort;
+  std::thread sender([&] {
+    toPort = testing::runLattice(fmt::format("{} --port {} --baud 38400 --stall-timeout 10", common, pty.slavePath()));
+  });
+  std::size_t overran = 0;
+  for (std::size_t end : ends) {
+    if (!peer.waitFor(end, 20.0)) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (peer.received() != end) ++overran;
+    for (char c : std::string("!DAT 00\r")) peer.send(static_cast<std::uint8_t>(c));
+  }
+  sender.join();
+  INFO("--port run: " << toPort.stderrText);
+  CHECK(toPort.exitCode == 0);
+  peer.settle(0.05);
+  CHECK(overran == 0);
+  const auto got = peer.data();
+  CHECK(std::string(got.begin(), got.end()) == expected);
 }
