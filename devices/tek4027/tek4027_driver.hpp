@@ -1,9 +1,9 @@
 #pragma once
 // The 4027 driver: an IndexedSink of at most 8 colours writing the terminal's
-// command language to a ByteSink. The whole frame is kept (640x480 bytes at
-// most) because the stream starts with the erase colour, which is the most
-// frequent colour of the frame, and because drawing one pot at a time needs
-// every row before the first vector.
+// command language to a ByteSink. The whole frame is kept (at most the
+// profile's area, 640x350 bytes in strict) because the stream starts with the
+// erase colour, the most frequent colour of the frame, and because drawing
+// one pot at a time needs every row before the first vector.
 //
 // Palette indices are renumbered to paint pots: the most frequent index
 // becomes the profile's background pot, the others take the remaining pots
