@@ -12,7 +12,7 @@
 #include "app/commands.hpp"
 #include "app/pipeline_args.hpp"
 #include "app/render_job.hpp"
-#include "app/serial_options.hpp"
+#include "app/serial_args.hpp"
 #include "devices/apollo_sim/apollo_profile.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/resident_memory.hpp"

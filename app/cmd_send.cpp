@@ -7,7 +7,7 @@
 #include <string>
 
 #include "app/commands.hpp"
-#include "app/serial_options.hpp"
+#include "app/serial_args.hpp"
 #include "foundation/atomic_file.hpp"
 #include "io/serial_sink.hpp"
 #include "io/stream_sender.hpp"
