@@ -24,14 +24,14 @@
 #include <vector>
 
 #include "devices/tek4027/tek4027_driver.hpp"
-#include "io/byte_sink.hpp"
-#include "io/line_timing.hpp"
+#include "foundation/byte_sink.hpp"
+#include "foundation/line_timing.hpp"
 #include "io/png.hpp"
 #include "lht/lattice_scene.hpp"
-#include "pipeline/indexed_image.hpp"
-#include "pipeline/run_pipeline.hpp"
+#include "foundation/indexed_image.hpp"
+#include "quantize/run_pipeline.hpp"
 #include "render/renderer.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 

@@ -7,7 +7,7 @@
 #include <cerrno>
 #include <chrono>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

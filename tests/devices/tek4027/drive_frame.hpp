@@ -5,8 +5,8 @@
 #include <string>
 
 #include "devices/tek4027/tek4027_driver.hpp"
-#include "io/byte_sink.hpp"
-#include "pipeline/indexed_image.hpp"
+#include "foundation/byte_sink.hpp"
+#include "foundation/indexed_image.hpp"
 
 namespace lattice::testing {
 

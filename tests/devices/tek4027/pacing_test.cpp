@@ -16,7 +16,7 @@
 
 #include "devices/tek4027/tek4027_decoder.hpp"
 #include "devices/tek4027/tek4027_driver.hpp"
-#include "io/byte_sink.hpp"
+#include "foundation/byte_sink.hpp"
 #include "io/pty.hpp"
 #include "io/serial_port.hpp"
 #include "io/serial_sink.hpp"
@@ -25,7 +25,7 @@
 #include "tests/support/run_lattice.hpp"
 #include "tests/devices/tek4027/synthetic_images.hpp"
 #include "tests/io/pty_peer.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 

@@ -13,14 +13,14 @@
 #include <string>
 #include <vector>
 
-#include "app/stream_devices.hpp"
+#include "devices/device_table.hpp"
 #include "devices/tek4027/tek4027_hls.hpp"
 #include "devices/tek4027/tek4027_profile.hpp"
-#include "io/byte_sink.hpp"
+#include "foundation/byte_sink.hpp"
 #include "io/png.hpp"
 #include "lht/lattice_scene.hpp"
-#include "pipeline/indexed_image.hpp"
-#include "pipeline/run_pipeline.hpp"
+#include "foundation/indexed_image.hpp"
+#include "quantize/run_pipeline.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_loader.hpp"
 #include "tests/support/example_scene.hpp"
@@ -51,7 +51,7 @@ void runSceneCase(const SceneCase& c, const std::string& profileName) {
   Renderer<double> renderer = testing::makeTestRenderer(scene, c.width, c.height);
 
   // The device table with the one --set a user would type.
-  const app::StreamDevice device = app::streamDevice("tek4027", {"profile=" + profileName});
+  const devices::Device device = devices::makeDevice("tek4027", {"profile=" + profileName});
   const Tek4027Profile profile = tek4027Preset(profileName);
 
   PipelineOptions options;
@@ -71,7 +71,7 @@ void runSceneCase(const SceneCase& c, const std::string& profileName) {
   REQUIRE(driver->stats().bytes == stream.data().size());
 
   // One byte at a time: the 4027 parser must not depend on the chunking.
-  auto decoder = device.makeDecoder();
+  auto decoder = device.makeEmulator();
   for (std::uint8_t b : stream.data()) decoder->feed(std::span<const std::uint8_t>(&b, 1));
   decoder->finish();
   CHECK(decoder->report().malformed == 0);
