@@ -50,8 +50,8 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   // orders one after another, holding the shortest so far beside the next
   // (strings that grow by doubling): measured up to 16.3 B a pixel of working
   // set on the example scenes (docs/memory.md, "Calibration"), before the
-  // orientations added a turned copy of the frame (1 B a pixel) and pacing a
-  // final copy of the stream.
+  // orientations added a turned copy of the frame (1 B a pixel); the paced
+  // copy of the winner takes the place of the candidate, so pacing adds none.
   d.driverMemory = [](int w, int h) { return 20 * pixels(w, h); };
   d.emulatorMemory = 3 * pixels(profile.width, profile.height);  // the screen, and its RGB copy for the PNG
   d.line = profile.line;
