@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <iterator>
+#include <string_view>
 
 namespace lattice {
 
@@ -29,6 +31,16 @@ bool isTerminator(std::uint8_t b) { return b == '\r' || b == ';'; }
 // terminators, NUL/DEL padding and XON/XOFF flow control.
 bool isFiller(std::uint8_t b) {
   return isSeparator(b) || isTerminator(b) || b == 0 || b == 0x7F || b == 0x11 || b == 0x13;
+}
+
+// Commands for the text workspace, the keyboard and the line that the
+// ncurses terminfo entries (tek4024/4025/4027, tek4025a, tek4025-cr) and a
+// real program (a TIG font tool) send: known, any arguments, nothing drawn.
+bool isTextCommand(const std::string& key) {
+  static constexpr std::string_view kText[] = {"ATT", "BAC", "BUF", "DCH", "DEL", "DIS", "DLI", "DOW", "DUP",
+                                               "ECH", "ENA", "EOL", "FOR", "ICH", "ILI", "INK", "JUM", "LEA",
+                                               "LEF", "PAD", "RIG", "RSS", "RUP", "SNO", "STO", "UP"};
+  return std::find(std::begin(kText), std::end(kText), key) != std::end(kText);
 }
 
 }  // namespace
@@ -97,6 +109,14 @@ void Tek4027Decoder::consume(std::uint8_t b) {
       if (isTerminator(b)) {
         endCommand();
         state_ = State::Text;
+      } else if (b == 0 || b == 0x7F || b == 0x11 || b == 0x13) {
+        // Padding and flow control are not part of the command.
+      } else if (b < 0x20 && !isSeparator(b)) {
+        // No argument holds a control character: it ends the command, and
+        // after `!COM n` it may be the new command character (terminfo's
+        // tek4025a reset string sends `!com 29` then GS at once).
+        endCommand();
+        if (b == static_cast<std::uint8_t>(commandChar_)) startCommand();
       } else if (isSeparator(b)) {
         endToken();
       } else if (token_.size() < kMaxTokenLength) {
@@ -158,6 +178,8 @@ bool Tek4027Decoder::execute() {
     long style = 0;
     ok = args_.size() == 1 && number(0, style) && style >= 0 && style <= 255;
     if (ok) lineStyle_ = static_cast<int>(style);  // recorded; vectors are drawn solid
+  } else if (isTextCommand(key)) {
+    ok = true;
   } else {
     ++report_.unknownCommands;
     if (report_.unknownByName.size() < kMaxUnknownNames || report_.unknownByName.count(name_) != 0)

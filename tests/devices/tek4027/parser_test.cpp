@@ -134,10 +134,10 @@ TEST_CASE("large but legal coordinates are clipped, not wrapped") {
 }
 
 TEST_CASE("unknown commands are skipped, counted by name, and resynchronise") {
-  auto d = decode("!FOO 1 2 3;!JUMP 5!FOO;!COL C2;!VEC 0 0 1 0;");
+  auto d = decode("!FOO 1 2 3;!ZAPP 5!FOO;!COL C2;!VEC 0 0 1 0;");
   CHECK(d.report().unknownCommands == 3);
   CHECK(d.report().unknownByName.at("FOO") == 2);
-  CHECK(d.report().unknownByName.at("JUMP") == 1);
+  CHECK(d.report().unknownByName.at("ZAPP") == 1);
   CHECK(d.report().commands == 2);
   CHECK(potAt(d, 1, 0) == 2);
 }
@@ -223,4 +223,24 @@ TEST_CASE("real producers' drawing forms draw: padded !MIX, trailing commas, !rv
   for (int x = 36; x <= 40; ++x) CHECK(potAt(d, x, 16) == 4);
   CHECK(d.beamX() == 36);
   CHECK(d.beamY() == 10);
+}
+
+TEST_CASE("terminfo's text and set-up commands are known and draw nothing") {
+  // ncurses tek4025a reset string: !COM 29 switches to GS, then commands end
+  // only where the next one starts, the last at `;`.
+  const std::string rs2 = "!com 29\x1d" "del 0\x1drss t\x1d" "buf\x1d" "buf n\x1d" "cle\x1d" "dis\x1d" "dup\x1d"
+                          "ech r\x1d" "eol\x1d" "era g\x1d" "for n\x1dpad 203\x1dpad 209\x1dsno n"
+                          "\x1dsto 9 17 25 33 41 49 57 65 73\x1dwor 0;";
+  auto d = decode(rs2);
+  CHECK(d.report().unknownCommands == 0);
+  CHECK(d.report().malformed == 0);
+  CHECK(d.report().commands == 17);
+  CHECK(d.commandChar() == '\x1d');
+  // Cursor motion from the tek4025-cr entry and the tek4024 entry.
+  d = decode("!jum5,10;!lef 3\r!rig\r!up 2\r!dow 4\r!dli 2\r!ili\r!dch\r!att e\r");
+  CHECK(d.report().unknownCommands == 0);
+  CHECK(d.report().malformed == 0);
+  CHECK(d.report().commands == 9);
+  for (PaletteIndex p : d.image().pixels) CHECK(p == 0);  // nothing drawn
+  CHECK(decode("!XYZ 1\r").report().unknownCommands == 1);  // an unknown name is still counted
 }
