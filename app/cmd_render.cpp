@@ -242,13 +242,16 @@ void renderWith(const lattice::lht::SceneWithLattices& loaded, const RenderComma
   }
   const lattice::RenderSettings settings = renderSettings(o, scene, deviceWidth, deviceHeight);
   std::optional<lattice::app::MemoryPlanRequest> budget;
+  std::optional<lattice::lht::SceneWithLattices> bound;  // the scene with tables packed to fit the budget
   if (!o.memoryBudget.empty()) {
     budget = lattice::app::renderBudgetRequest(
         lattice::parseByteCount(o.memoryBudget, "--memory-budget"), settings.width, settings.height, pipeline,
         cmd.count("--mode") > 0 || cmd.count("--sample") > 0, {o.device, !o.output.empty(), deviceWidth, deviceHeight});
-    lattice::app::packLatticesWithin(*budget, loaded.lattices);
+    lattice::lht::TableSettings tables = loaded.tables;
+    tables.packing = lattice::app::tablePackingWithin(*budget);
+    bound = lattice::lht::withTableSettings(loaded, tables);
   }
-  lattice::Renderer<T> renderer(scene, settings);
+  lattice::Renderer<T> renderer(bound ? bound->scene : scene, settings);
   if (budget) pipeline.mode = lattice::app::planBuiltRender(*budget).mode;
 
   if (device) {
@@ -276,12 +279,11 @@ void runRender(const RenderCommandOptions& o, const CLI::App& cmd) {
   std::optional<lattice::lht::LhtPrecision> precision;
   if (!o.lhtPrecision.empty()) precision = lattice::lht::parseLhtPrecision(o.lhtPrecision, "--lht-precision");
   // Scenes may hold [[lattices]]; their tables are built when the renderer
-  // is, so the override below is in time.
-  lattice::lht::SceneWithLattices loaded = lattice::lht::loadSceneWithLattices(o.scene);
-  for (const lattice::lht::LatticeDefinitionPtr& lattice : loaded.lattices) {
-    if (precision) lattice->precision = *precision;
-    lattice->rasterThreads = static_cast<unsigned>(o.threads);  // --threads 1 means one thread throughout
-  }
+  // is, under these settings.
+  lattice::lht::TableSettings tables;
+  tables.precision = precision;
+  tables.threads = static_cast<unsigned>(o.threads);  // --threads 1 means one thread throughout
+  const lattice::lht::SceneWithLattices loaded = lattice::lht::loadSceneWithLattices(o.scene, tables);
   if (o.arith == "float")
     renderWith<float>(loaded, o, cmd);
   else if (o.arith == "fixed")

@@ -8,6 +8,7 @@
 
 #include "foundation/transform_condition.hpp"
 #include "foundation/error.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice::lht {
 
@@ -156,9 +157,9 @@ PrimitivePtr<T> makeLatticeLeaf(std::shared_ptr<const LhtFile> table, const Mat4
   return std::make_unique<LatticeLeaf<T>>(std::move(table), objectToWorld, material, castsShadows);
 }
 
-template PrimitivePtr<float> makeLatticeLeaf<float>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId, bool);
-template PrimitivePtr<double> makeLatticeLeaf<double>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId, bool);
-template PrimitivePtr<Fixed32> makeLatticeLeaf<Fixed32>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId,
-                                                        bool);
+#define LATTICE_INSTANTIATE(T) \
+  template PrimitivePtr<T> makeLatticeLeaf<T>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId, bool);
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_INSTANTIATE)
+#undef LATTICE_INSTANTIATE
 
 }  // namespace lattice::lht

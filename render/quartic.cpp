@@ -15,6 +15,7 @@
 #include "render/roots.hpp"
 #include "foundation/transform_condition.hpp"
 #include "foundation/error.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice {
 
@@ -538,11 +539,9 @@ PrimitivePtr<T> makeQuarticLeaf(const QuarticPolynomial& original, const Bounds<
   return std::make_unique<QuarticLeaf<T>>(f, leaf.bounds, objectToWorld, material);
 }
 
-template PrimitivePtr<float> makeQuarticLeaf<float>(const QuarticPolynomial&, const Bounds<double>&, const Mat4d&,
-                                                    MaterialId);
-template PrimitivePtr<double> makeQuarticLeaf<double>(const QuarticPolynomial&, const Bounds<double>&, const Mat4d&,
-                                                      MaterialId);
-template PrimitivePtr<Fixed32> makeQuarticLeaf<Fixed32>(const QuarticPolynomial&, const Bounds<double>&, const Mat4d&,
-                                                        MaterialId);
+#define LATTICE_INSTANTIATE(T) \
+  template PrimitivePtr<T> makeQuarticLeaf<T>(const QuarticPolynomial&, const Bounds<double>&, const Mat4d&, MaterialId);
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_INSTANTIATE)
+#undef LATTICE_INSTANTIATE
 
 }  // namespace lattice
