@@ -64,8 +64,9 @@ template <typename T>
 PrimitivePtr<T> makeQuarticLeaf(const QuarticPolynomial& f, const Bounds<double>& objectBounds,
                                 const Mat4d& objectToWorld, MaterialId material);
 
-#define LATTICE_DECLARE(T) \
-  extern template PrimitivePtr<T> makeQuarticLeaf<T>(const QuarticPolynomial&, const Bounds<double>&, const Mat4d&, MaterialId);
+#define LATTICE_DECLARE(T)                                                                                        \
+  extern template PrimitivePtr<T> makeQuarticLeaf<T>(const QuarticPolynomial&, const Bounds<double>&, const Mat4d&, \
+                                                     MaterialId);
 LATTICE_FOR_EACH_ARITHMETIC(LATTICE_DECLARE)
 #undef LATTICE_DECLARE
 
