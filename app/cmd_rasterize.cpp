@@ -4,7 +4,7 @@
 
 #include <optional>
 
-#include "app/command_registry.hpp"
+#include "app/commands.hpp"
 #include "foundation/error.hpp"
 #include "lht/table_build.hpp"
 
@@ -34,6 +34,10 @@ void runRasterize(const RasterizeArgs& args, bool oversampleGiven) {
                lhtPrecisionName(built.lht.table.precision()), built.stats.buildMs);
 }
 
+}  // namespace
+
+namespace lattice::app {
+
 void addRasterize(CLI::App& root) {
   auto args = std::make_shared<RasterizeArgs>();
   auto* cmd = root.add_subcommand(
@@ -61,6 +65,4 @@ void addRasterize(CLI::App& root) {
   cmd->callback([args, oversample] { runRasterize(*args, oversample->count() > 0); });
 }
 
-}  // namespace
-
-LATTICE_COMMAND(addRasterize);
+}  // namespace lattice::app

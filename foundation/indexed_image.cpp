@@ -1,7 +1,10 @@
 #include "foundation/indexed_image.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
-#include <stdexcept>
+
+#include "foundation/error.hpp"
 
 namespace lattice {
 
@@ -24,7 +27,8 @@ void IndexedImageSink::begin(const FrameInfo& frame) {
 
 void IndexedImageSink::row(int y, std::span<const PaletteIndex> indices) {
   if (y < 0 || y >= image_.height || indices.size() != static_cast<std::size_t>(image_.width))
-    throw std::logic_error("IndexedImageSink: row out of range");
+    throw Error(ErrorKind::Internal, fmt::format("IndexedImageSink: row {} of {} pixels for a {}x{} frame", y,
+                                                 indices.size(), image_.width, image_.height));
   std::copy(indices.begin(), indices.end(),
             image_.pixels.begin() + static_cast<std::ptrdiff_t>(y) * image_.width);
 }

@@ -43,8 +43,6 @@
 
 namespace lattice::lht {
 
-class LatticeTables;
-
 // A loaded scene, its [[lattices]] definitions (in file order), and the
 // settings its lattice leaves build their tables under.
 struct SceneWithLattices {

@@ -6,7 +6,7 @@
 #include "foundation/indexed_image.hpp"
 #include "quantize/run_pipeline.hpp"
 
-namespace lattice {
+namespace lattice::apollo {
 
 struct ApolloScreen {
   IndexedImage screen;  // the whole screen, colour map included
@@ -16,4 +16,4 @@ struct ApolloScreen {
 // Draws the source on a simulated display of the given profile.
 ApolloScreen renderToApollo(RowSource18& source, const ApolloProfile& profile, const PipelineOptions& options);
 
-}  // namespace lattice
+}  // namespace lattice::apollo

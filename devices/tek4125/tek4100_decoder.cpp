@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "devices/tek4125/tek_canvas.hpp"
+#include "devices/canvas.hpp"
 
 namespace lattice {
 
@@ -313,7 +313,7 @@ int Tek4100Decoder::pixelX(int x) const { return x * profile_.width / 4096; }
 int Tek4100Decoder::pixelY(int y) const { return y * profile_.width / 4096; }
 
 void Tek4100Decoder::plot(int px, int py, int index) {
-  PaletteIndex* p = tek::pixelAt(screen_, px, py);
+  PaletteIndex* p = devices::pixelAt(screen_, px, py);
   if (p == nullptr) return;
   const int v = index & mask_;
   *p = static_cast<PaletteIndex>(alu_ == 7 ? (*p ^ v) : v);
@@ -321,7 +321,7 @@ void Tek4100Decoder::plot(int px, int py, int index) {
 
 // Vectors overwrite: the ALU mode belongs to pixel operations.
 void Tek4100Decoder::line(int x0, int y0, int x1, int y1, int index) {
-  tek::drawLine(screen_, pixelX(x0), pixelY(y0), pixelX(x1), pixelY(y1), static_cast<PaletteIndex>(index & mask_));
+  devices::drawLine(screen_, pixelX(x0), pixelY(y0), pixelX(x1), pixelY(y1), static_cast<PaletteIndex>(index & mask_));
 }
 
 // Patterns above 0 are drawn solid in the line index (no pattern bitmaps
@@ -333,7 +333,7 @@ void Tek4100Decoder::fillPanel() {
   const double scale = profile_.width / 4096.0;
   std::vector<double> points(panel_.size());
   for (std::size_t i = 0; i < panel_.size(); ++i) points[i] = panel_[i] * scale;
-  tek::fillPolygon(screen_, points, static_cast<PaletteIndex>(index & mask_));
+  devices::fillPolygon(screen_, points, static_cast<PaletteIndex>(index & mask_));
   if (panelBoundary_ && n >= 2)
     for (std::size_t i = 0, j = n - 1; i < n; j = i++)
       line(panel_[2 * j], panel_[2 * j + 1], panel_[2 * i], panel_[2 * i + 1], lineIndex_);

@@ -7,6 +7,7 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::apollo;
 
 TEST_CASE("profiles have the GPR sizes of the DN660 and DN580") {
   ApolloProfile dn660 = dn660Profile(8);

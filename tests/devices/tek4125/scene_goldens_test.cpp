@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "app/stream_devices.hpp"
+#include "devices/device_table.hpp"
 #include "devices/tek4125/tek4125_driver.hpp"
 #include "devices/tek4125/tek4125_profile.hpp"
 #include "foundation/byte_sink.hpp"
@@ -62,7 +62,7 @@ void runSceneCase(const SceneCase& c) {
   Renderer<double> renderer = testing::makeTestRenderer(scene, c.width, c.height);
 
   const std::vector<std::string> overrides{fmt::format("planes={}", c.planes)};
-  const app::StreamDevice device = app::streamDevice("tek4125", overrides);
+  const devices::Device device = devices::makeDevice("tek4125", overrides);
   Tek4125Profile profile;
   applyOverrides(profile, overrides);
 
@@ -84,7 +84,7 @@ void runSceneCase(const SceneCase& c) {
   runPipeline(renderer, driver->sink(), options);
   REQUIRE(driver->stats().bytes == stream.data().size());
 
-  auto decoder = device.makeDecoder();
+  auto decoder = device.makeEmulator();
   feedChunked(*decoder, stream.data());
   CHECK(decoder->report().malformed == 0);
   CHECK(decoder->report().unknownCommands == 0);

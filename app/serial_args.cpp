@@ -1,21 +1,10 @@
-#pragma once
-// The serial-line flags shared by `lattice send` and `lattice render --port`:
-//
-//   lattice::SerialOptions serial;
-//   lattice::app::addSerialOptions(cmd, serial);
-//   ... auto sink = lattice::openSerialSink(serial);   // io/serial_options.hpp
-//
-// Header-only because app/CMakeLists.txt builds main.cpp and cmd_*.cpp only.
-#include <CLI/CLI.hpp>
+#include "app/serial_args.hpp"
 
 #include <string>
 
-#include "io/serial_options.hpp"
-
 namespace lattice::app {
 
-// portRequired: `send` needs a port; `render` takes --port as one choice of output.
-inline void addSerialOptions(CLI::App* cmd, SerialOptions& options, bool portRequired = true) {
+void addSerialOptions(CLI::App* cmd, SerialOptions& options, bool portRequired) {
   auto* port = cmd->add_option("--port", options.port,
                                "Serial port: a device such as /dev/ttyUSB0, or `auto` for the only USB-serial "
                                "adapter (`lattice ports` lists them)");

@@ -3,13 +3,15 @@
 #include <filesystem>
 
 #include "devices/apollo_sim/apollo_output.hpp"
-#include "devices/apollo_sim/apollo_sink.hpp"
+#include "devices/apollo_sim/apollo_driver.hpp"
+#include "devices/apollo_sim/gpr_display.hpp"
 #include "io/png.hpp"
 #include "tests/quantize/test_sources.hpp"
 #include "tests/support/golden.hpp"
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::apollo;
 using lattice::testing::FunctionSource;
 
 namespace {
@@ -44,7 +46,7 @@ PipelineOptions quiet(Dither dither) {
 TEST_CASE("the Apollo driver centres the picture and clears the border to black") {
   GprDisplay display;
   display.init(GprDisplayMode::Borrow, dn660Profile(8));
-  ApolloSink sink(display);
+  ApolloDriver sink(display);
   CHECK(sink.maxColors() == 256);
   auto source = patternSource(101, 50);
   runPipeline(source, sink, quiet(Dither::None));
@@ -62,7 +64,7 @@ TEST_CASE("the Apollo driver centres the picture and clears the border to black"
 TEST_CASE("the Apollo driver refuses a picture larger than the screen") {
   GprDisplay display;
   display.init(GprDisplayMode::Borrow, dn660Profile(8));
-  ApolloSink sink(display);
+  ApolloDriver sink(display);
   FunctionSource tooWide(1025, 2, [](int, int) { return Color18{0}; });
   CHECK_THROWS_AS(runPipeline(tooWide, sink, quiet(Dither::None)), Error);
 }

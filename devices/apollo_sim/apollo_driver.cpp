@@ -1,18 +1,18 @@
-#include "devices/apollo_sim/apollo_sink.hpp"
+#include "devices/apollo_sim/apollo_driver.hpp"
+
+#include "devices/apollo_sim/gpr_display.hpp"
 
 #include <fmt/format.h>
 
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::apollo {
 
-ApolloSink::ApolloSink(GprDisplay& display) : display_(display) {
-  if (!display.initialized()) throw Error(ErrorKind::Internal, "ApolloSink: the display is not initialised (gpr_$init)");
-}
+ApolloDriver::ApolloDriver(GprCalls& display) : display_(display) {}
 
-int ApolloSink::maxColors() const { return display_.inqDispCharacteristics().colorMapEntries; }
+int ApolloDriver::maxColors() const { return display_.inqDispCharacteristics().colorMapEntries; }
 
-void ApolloSink::begin(const FrameInfo& frame) {
+void ApolloDriver::begin(const FrameInfo& frame) {
   GprDisplayCharacteristics screen = display_.inqDispCharacteristics();
   if (frame.width < 1 || frame.height < 1 || frame.width > screen.xVisibleSize || frame.height > screen.yVisibleSize)
     throw Error(ErrorKind::Usage,
@@ -20,7 +20,7 @@ void ApolloSink::begin(const FrameInfo& frame) {
                             frame.height, screen.model, screen.xVisibleSize, screen.yVisibleSize,
                             screen.xVisibleSize, screen.yVisibleSize));
   if (frame.palette.size() > static_cast<std::size_t>(screen.colorMapEntries))
-    throw Error(ErrorKind::Internal, fmt::format("ApolloSink: {} palette entries for a {}-entry colour map",
+    throw Error(ErrorKind::Internal, fmt::format("ApolloDriver: {} palette entries for a {}-entry colour map",
                                                  frame.palette.size(), screen.colorMapEntries));
   frame_ = frame;
   originX_ = (screen.xVisibleSize - frame.width) / 2;
@@ -50,19 +50,19 @@ void ApolloSink::begin(const FrameInfo& frame) {
   display_.clear(background);
 }
 
-void ApolloSink::row(int y, std::span<const PaletteIndex> indices) {
+void ApolloDriver::row(int y, std::span<const PaletteIndex> indices) {
   if (y < 0 || y >= frame_.height || indices.size() != rowValues_.size())
-    throw Error(ErrorKind::Internal, fmt::format("ApolloSink: row {} of {} pixels for a {}x{} picture", y,
+    throw Error(ErrorKind::Internal, fmt::format("ApolloDriver: row {} of {} pixels for a {}x{} picture", y,
                                                  indices.size(), frame_.width, frame_.height));
   for (std::size_t x = 0; x < indices.size(); ++x) {
     if (indices[x] >= frame_.palette.size())
-      throw Error(ErrorKind::Internal, fmt::format("ApolloSink: index {} beyond the {}-entry palette", indices[x],
+      throw Error(ErrorKind::Internal, fmt::format("ApolloDriver: index {} beyond the {}-entry palette", indices[x],
                                                    frame_.palette.size()));
     rowValues_[x] = indices[x];
   }
   display_.writePixels(rowValues_, GprWindow{originX_, originY_ + y, frame_.width, 1});
 }
 
-void ApolloSink::end() { display_.releaseDisplay(); }
+void ApolloDriver::end() { display_.releaseDisplay(); }
 
-}  // namespace lattice
+}  // namespace lattice::apollo
