@@ -139,12 +139,15 @@ RenderResult renderWith(const lht::SceneWithLattices& loaded, const RenderJob& j
   const RenderSettings settings =
       renderSettings(job, loaded.scene, device ? device->width : 0, device ? device->height : 0);
   std::optional<MemoryPlanRequest> budget;
+  std::optional<lht::SceneWithLattices> bound;  // the scene with its tables packed to fit the budget
   if (job.memoryBudget) {
     budget = renderBudgetRequest(*job.memoryBudget, settings.width, settings.height, pipeline, job.modeChosenByUser,
                                  device ? &*device : nullptr, !job.picture.empty());
-    packLatticesWithin(*budget, loaded.lattices);
+    lht::TableSettings tables = loaded.tables;
+    tables.packing = tablePackingWithin(*budget);
+    bound = lht::withTableSettings(loaded, tables);
   }
-  Renderer<T> renderer(loaded.scene, settings);
+  Renderer<T> renderer(bound ? bound->scene : loaded.scene, settings);
   if (budget) pipeline.mode = planBuiltRender(*budget).mode;
 
   RenderResult result;
@@ -190,12 +193,11 @@ void checkRenderJob(const RenderJob& job) {
 RenderResult renderScene(const RenderJob& job) {
   checkRenderJob(job);
   // Scenes may hold [[lattices]]; their tables are built when the renderer
-  // is, so the settings below are in time.
-  lht::SceneWithLattices loaded = lht::loadSceneWithLattices(job.scene);
-  for (const lht::LatticeDefinitionPtr& lattice : loaded.lattices) {
-    if (job.precision) lattice->precision = *job.precision;
-    lattice->rasterThreads = static_cast<unsigned>(job.threads);  // one thread means one thread throughout
-  }
+  // is, under these settings.
+  lht::TableSettings tables;
+  tables.precision = job.precision;
+  tables.threads = static_cast<unsigned>(job.threads);  // one thread means one thread throughout
+  const lht::SceneWithLattices loaded = lht::loadSceneWithLattices(job.scene, tables);
   switch (job.arithmetic) {
     case Arithmetic::Float:
       return renderWith<float>(loaded, job);
