@@ -6,13 +6,13 @@
 #include <memory>
 #include <string>
 
-#include "app/command_registry.hpp"
-#include "app/serial_options.hpp"
-#include "io/atomic_file.hpp"
+#include "app/commands.hpp"
+#include "app/serial_args.hpp"
+#include "foundation/atomic_file.hpp"
 #include "io/serial_sink.hpp"
 #include "io/stream_sender.hpp"
-#include "util/error.hpp"
-#include "util/progress.hpp"
+#include "foundation/error.hpp"
+#include "foundation/progress.hpp"
 
 namespace {
 
@@ -47,6 +47,10 @@ void runSend(const SendArgs& args) {
   }
 }
 
+}  // namespace
+
+namespace lattice::app {
+
 void addSend(CLI::App& root) {
   auto args = std::make_shared<SendArgs>();
   auto* cmd = root.add_subcommand(
@@ -62,6 +66,4 @@ void addSend(CLI::App& root) {
   cmd->callback([args] { runSend(*args); });
 }
 
-}  // namespace
-
-LATTICE_COMMAND(addSend);
+}  // namespace lattice::app

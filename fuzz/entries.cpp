@@ -28,7 +28,7 @@
 #include "io/png.hpp"
 #include "lht/lattice_scene.hpp"
 #include "lht/lht_file.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::fuzz {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <cstring>
 
-#include "io/atomic_file.hpp"
-#include "util/error.hpp"
+#include "foundation/atomic_file.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 namespace {
@@ -78,14 +78,6 @@ RgbImage readPng(const std::filesystem::path& path) {
   png_color black{0, 0, 0};
   if (!png_image_finish_read(&image, &black, out.rgb.data(), 0, nullptr))
     throw Error(ErrorKind::Input, fmt::format("{}: PNG decoding failed: {}", path.string(), image.message));
-  return out;
-}
-
-RgbImage toRgbImage(const IndexedImage& img) {
-  RgbImage out;
-  out.width = img.width;
-  out.height = img.height;
-  out.rgb = img.toRgb();
   return out;
 }
 

@@ -5,10 +5,10 @@
 #include <cmath>
 
 #include "lht/lht_file.hpp"
-#include "lht/polyline.hpp"
 #include "render/csg_shapes.hpp"
+#include "render/polyline.hpp"
 #include "render/shapes.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::lht {
 

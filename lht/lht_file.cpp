@@ -6,8 +6,8 @@
 #include <cstring>
 #include <string>
 
-#include "io/atomic_file.hpp"
-#include "util/error.hpp"
+#include "foundation/atomic_file.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::lht {
 

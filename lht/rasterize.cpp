@@ -6,7 +6,7 @@
 #include <cmath>
 #include <thread>
 
-#include "util/progress.hpp"
+#include "foundation/progress.hpp"
 
 namespace lattice::lht {
 

@@ -4,29 +4,15 @@
 #include <fmt/ranges.h>
 
 #include <cmath>
-#include <mutex>
 #include <vector>
 
 #include "render/node_types.hpp"
-#include "render/transform_condition.hpp"
-#include "util/error.hpp"
+#include "foundation/transform_condition.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 
 namespace {
-
-// The registries. A mutex because modules may register from several threads
-// in tests; loads copy nothing, they look up under the same lock.
-struct Registry {
-  std::mutex mutex;
-  std::map<std::string, NodeParser> nodeTypes = builtinNodeTypes();
-  std::vector<std::pair<std::string, SectionParser>> sections;
-};
-
-Registry& registry() {
-  static Registry instance;
-  return instance;
-}
 
 // Keys every object table may have, handled by parseNode itself.
 constexpr std::string_view kCommonNodeKeys[] = {"type", "name", "material", "translate", "rotate", "scale", "matrix"};
@@ -104,32 +90,25 @@ Mat4d rotation(const Vec3d& axis, double degrees) {
 
 }  // namespace
 
-void registerNodeType(std::string type, NodeParser parser) {
-  Registry& r = registry();
-  std::lock_guard lock(r.mutex);
-  r.nodeTypes[std::move(type)] = std::move(parser);
+void SceneFormat::addNodeType(std::string type, NodeParser parser) {
+  nodeTypes[std::move(type)] = std::move(parser);
 }
 
-void registerSection(std::string name, SectionParser parser) {
-  Registry& r = registry();
-  std::lock_guard lock(r.mutex);
-  for (auto& [existing, p] : r.sections)
+void SceneFormat::addSection(std::string name, SectionParser parser) {
+  for (auto& [existing, p] : sections)
     if (existing == name) {
       p = std::move(parser);
       return;
     }
-  r.sections.emplace_back(std::move(name), std::move(parser));
+  sections.emplace_back(std::move(name), std::move(parser));
 }
 
-bool isNodeTypeRegistered(const std::string& type) {
-  Registry& r = registry();
-  std::lock_guard lock(r.mutex);
-  return r.nodeTypes.count(type) != 0;
-}
+SceneFormat builtinSceneFormat() { return SceneFormat{builtinNodeTypes(), {}}; }
 
 // ---------------------------------------------------------------- ParseContext
 
-ParseContext::ParseContext(std::filesystem::path file, SceneDesc& scene) : file_(std::move(file)), scene_(scene) {}
+ParseContext::ParseContext(std::filesystem::path file, SceneDesc& scene, const SceneFormat& format)
+    : file_(std::move(file)), scene_(scene), format_(format) {}
 
 std::string ParseContext::where(const toml::node& node) const {
   const auto& begin = node.source().begin;
@@ -321,18 +300,13 @@ NodeDesc ParseContext::parseNode(const toml::node& objectNode) {
   if (!typeString) fail(*typeNode, fmt::format("'type' must be a string, not {}", typeName(*typeNode)));
   const std::string type = typeString->get();
 
-  NodeParser parser;
-  {
-    Registry& r = registry();
-    std::lock_guard lock(r.mutex);
-    auto it = r.nodeTypes.find(type);
-    if (it == r.nodeTypes.end()) {
-      std::vector<std::string> known;
-      for (auto& [name, p] : r.nodeTypes) known.push_back(name);
-      fail(*typeNode, fmt::format("unknown object type '{}'; expected one of: {}", type, fmt::join(known, ", ")));
-    }
-    parser = it->second;
+  const auto found = format_.nodeTypes.find(type);
+  if (found == format_.nodeTypes.end()) {
+    std::vector<std::string> known;
+    for (auto& [name, p] : format_.nodeTypes) known.push_back(name);
+    fail(*typeNode, fmt::format("unknown object type '{}'; expected one of: {}", type, fmt::join(known, ", ")));
   }
+  const NodeParser& parser = found->second;
   (void)string(*table, "name");  // only type-checked: names are for the reader
   const Mat4d local = transform(*table);
   std::optional<MaterialId> materialId;
@@ -444,17 +418,11 @@ const toml::table& requireTable(const toml::node& n, std::string_view name, Pars
   return *t;
 }
 
-SceneDesc parseTable(const toml::table& root, const std::filesystem::path& file) {
+SceneDesc parseTable(const toml::table& root, const std::filesystem::path& file, const SceneFormat& format) {
   SceneDesc scene;
   scene.source = file;
-  ParseContext ctx(file, scene);
-
-  std::vector<std::pair<std::string, SectionParser>> sections;
-  {
-    Registry& r = registry();
-    std::lock_guard lock(r.mutex);
-    sections = r.sections;
-  }
+  ParseContext ctx(file, scene, format);
+  const auto& sections = format.sections;
   for (auto&& [key, value] : root) {
     const std::string_view k = key.str();
     bool known = false;
@@ -491,7 +459,7 @@ SceneDesc parseTable(const toml::table& root, const std::filesystem::path& file)
 
 }  // namespace
 
-SceneDesc parseScene(std::string_view text, const std::filesystem::path& fileName) {
+SceneDesc parseScene(std::string_view text, const std::filesystem::path& fileName, const SceneFormat& format) {
   toml::table root;
   try {
     root = toml::parse(text, fileName.string());
@@ -500,10 +468,10 @@ SceneDesc parseScene(std::string_view text, const std::filesystem::path& fileNam
                                          static_cast<long>(e.source().begin.column),
                                          fmt::format("not valid TOML: {}", e.description())));
   }
-  return parseTable(root, fileName);
+  return parseTable(root, fileName, format);
 }
 
-SceneDesc loadScene(const std::filesystem::path& file) {
+SceneDesc loadScene(const std::filesystem::path& file, const SceneFormat& format) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec))
     throw Error(ErrorKind::Input, fmt::format("{}: cannot read the scene file (no such file, or not a regular file)",
@@ -516,7 +484,7 @@ SceneDesc loadScene(const std::filesystem::path& file) {
                                          static_cast<long>(e.source().begin.column),
                                          fmt::format("not valid TOML: {}", e.description())));
   }
-  return parseTable(root, file);
+  return parseTable(root, file, format);
 }
 
 }  // namespace lattice

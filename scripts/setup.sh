@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
-# Installs the Debian packages Lattice builds with, only those missing, so it is
-# safe to run again and again. `--bench` adds the peers the benchmarks compare
-# against (POV-Ray, Embree, pngquant, GNU time); `--fuzz` adds clang 14, its
-# runtime libraries (libFuzzer, ASan, UBSan: libclang-rt-14-dev) and llvm-14
-# (llvm-symbolizer), for scripts/fuzz.sh and the sanitizer build in CI.
+# Installs the Debian packages Lattice builds and tests with, only those
+# missing, so it is safe to run again and again. gnuplot-nox: the Tek 4125
+# emulator's tests decode the streams its tek410x and tek40xx terminals
+# write. `--bench` adds the peers the benchmarks compare against (POV-Ray,
+# Embree, pngquant, GNU time); `--fuzz` adds clang 14, its runtime libraries
+# (libFuzzer, ASan, UBSan: libclang-rt-14-dev) and llvm-14 (llvm-symbolizer),
+# for scripts/fuzz.sh and the sanitizer build (scripts/test.sh asks for it).
 set -euo pipefail
 
 packages=(cmake g++ make pkg-config git catch2 libglm-dev libpng-dev libusb-1.0-0-dev
-          libtomlplusplus-dev libcli11-dev libfmt-dev)
+          libtomlplusplus-dev libcli11-dev libfmt-dev gnuplot-nox)
 for option in "$@"; do
   case $option in
     --bench) packages+=(povray libembree-dev pngquant time python3) ;;

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# The whole test suite: set-up, build, every test through CTest, the static
-# build, the sanitizer build of every test (clang, ASan + UBSan), and a short
-# run of each fuzzer (scripts/fuzz.sh, 30 s a harness). Each step prints its
-# wall time, so CI's budget can be watched (docs/testing.md).
+# The whole test suite: set-up, the layer check, build, every test through
+# CTest, the static build, the sanitizer build of every test (clang, ASan +
+# UBSan), and a short run of each fuzzer (scripts/fuzz.sh, 30 s a harness).
+# Each step prints its wall time, so CI's budget can be watched
+# (docs/testing.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 step() {
@@ -12,6 +13,7 @@ step() {
   echo "test.sh: step '$name' took $((SECONDS - start)) s"
 }
 bash scripts/setup.sh --fuzz
+step layers bash scripts/check-layers.sh
 step build bash scripts/build.sh
 step ctest bash -c 'cd build && ctest --output-on-failure -j "$(nproc)"'
 step static bash scripts/check-static.sh

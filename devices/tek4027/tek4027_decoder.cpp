@@ -1,8 +1,12 @@
 #include "devices/tek4027/tek4027_decoder.hpp"
 
+#include "devices/canvas.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <iterator>
+#include <string_view>
 
 namespace lattice {
 
@@ -29,11 +33,14 @@ bool isFiller(std::uint8_t b) {
   return isSeparator(b) || isTerminator(b) || b == 0 || b == 0x7F || b == 0x11 || b == 0x13;
 }
 
-// Division rounding towards minus infinity, for either sign (C++ truncates).
-long floorDiv(long a, long b) {
-  long q = a / b;
-  if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
-  return q;
+// Commands for the text workspace, the keyboard and the line that the
+// ncurses terminfo entries (tek4024/4025/4027, tek4025a, tek4025-cr) and a
+// real program (a TIG font tool) send: known, any arguments, nothing drawn.
+bool isTextCommand(const std::string& key) {
+  static constexpr std::string_view kText[] = {"ATT", "BAC", "BUF", "DCH", "DEL", "DIS", "DLI", "DOW", "DUP",
+                                               "ECH", "ENA", "EOL", "FOR", "ICH", "ILI", "INK", "JUM", "LEA",
+                                               "LEF", "PAD", "RIG", "RSS", "RUP", "SNO", "STO", "UP"};
+  return std::find(std::begin(kText), std::end(kText), key) != std::end(kText);
 }
 
 }  // namespace
@@ -102,6 +109,14 @@ void Tek4027Decoder::consume(std::uint8_t b) {
       if (isTerminator(b)) {
         endCommand();
         state_ = State::Text;
+      } else if (b == 0 || b == 0x7F || b == 0x11 || b == 0x13) {
+        // Padding and flow control are not part of the command.
+      } else if (b < 0x20 && !isSeparator(b)) {
+        // No argument holds a control character: it ends the command, and
+        // after `!COM n` it may be the new command character (terminfo's
+        // tek4025a reset string sends `!com 29` then GS at once).
+        endCommand();
+        if (b == static_cast<std::uint8_t>(commandChar_)) startCommand();
       } else if (isSeparator(b)) {
         endToken();
       } else if (token_.size() < kMaxTokenLength) {
@@ -150,17 +165,21 @@ bool Tek4027Decoder::execute() {
   else if (key == "COM")
     ok = setCommandChar();
   else if (key == "GRA")
-    ok = checkOnly(2, 4);  // graphics region in text rows: the framebuffer is fixed
+    ok = checkOnly(2, 4, false);  // graphics region in text rows: the framebuffer is fixed
   else if (key == "WOR")
-    ok = checkOnly(1, 1);  // workspace size: text layout only
+    ok = checkOnly(1, 2, true);  // workspace size [H]: text layout only
   else if (key == "MON")
-    ok = checkOnly(1, 2);  // monitor size [H]: text layout only
+    ok = checkOnly(1, 3, true);  // monitor size [H] [K] (`!MON 12 H K` in a real program): text layout only
+  else if (key == "REP")
+    ok = checkOnly(0, 1, false);  // report request (UGS paces with `!REP 00`): the emulator has no one to answer
   else if (key == "CLE")
     ok = args_.empty();  // clears tab stops: nothing graphic
   else if (key == "LIN") {
     long style = 0;
     ok = args_.size() == 1 && number(0, style) && style >= 0 && style <= 255;
     if (ok) lineStyle_ = static_cast<int>(style);  // recorded; vectors are drawn solid
+  } else if (isTextCommand(key)) {
+    ok = true;
   } else {
     ++report_.unknownCommands;
     if (report_.unknownByName.size() < kMaxUnknownNames || report_.unknownByName.count(name_) != 0)
@@ -202,12 +221,19 @@ bool Tek4027Decoder::potNumber(std::size_t index, int& out) const {
   return out < profile_.colors;
 }
 
-bool Tek4027Decoder::checkOnly(std::size_t minArgs, std::size_t maxArgs) {
+bool Tek4027Decoder::checkOnly(std::size_t minArgs, std::size_t maxArgs, bool letterFlags) {
   if (args_.size() < minArgs || args_.size() > maxArgs) return false;
   long v = 0;
   for (std::size_t i = 0; i < args_.size(); ++i) {
-    // !MON n H: the optional H (hold) flag is a letter.
-    if (i == 1 && name_.rfind("MON", 0) == 0 && (args_[i] == "H" || args_[i] == "h")) continue;
+    const std::string& t = args_[i];
+    // Workspace and monitor take single-letter flags, alone or after the
+    // count: terminfo's `mon h`, `wor 33h`, a real program's `!MON 12 H K`.
+    if (letterFlags && std::isalpha(static_cast<unsigned char>(t.back()))) {
+      if (t.size() == 1) continue;
+      const std::string count = t.substr(0, t.size() - 1);
+      if (count.find_first_not_of("0123456789") == std::string::npos) continue;
+      return false;
+    }
     if (!number(i, v) || v < 0) return false;
   }
   return true;
@@ -321,34 +347,7 @@ void Tek4027Decoder::plot(long x, long y) {
 }
 
 void Tek4027Decoder::line(long x0, long y0, long x1, long y1) {
-  // DDA with round-half-up: point i of n is (x0 + round(i*dx/n), ...). Exact
-  // for the horizontal and vertical vectors the driver sends. Only the steps
-  // that can land on the screen are visited, so a vector 130000 pixels long
-  // costs no more than one across the screen.
-  const long dx = x1 - x0, dy = y1 - y0;
-  const long n = std::max(std::labs(dx), std::labs(dy));
-  if (n == 0) {
-    plot(x0, y0);
-    return;
-  }
-  auto at = [&](long i, long origin, long delta) { return origin + floorDiv(2 * i * delta + n, 2 * n); };
-  // Range of i where a coordinate lies in [lo, hi], widened by one step.
-  long iLo = 0, iHi = n;
-  auto restrict = [&](long origin, long delta, long lo, long hi) {
-    if (delta == 0) {
-      if (origin < lo || origin > hi) iHi = -1;
-      return;
-    }
-    // origin + i*delta/n in [lo-1, hi+1]
-    long a = floorDiv((lo - 1 - origin) * n, delta);
-    long b = floorDiv((hi + 1 - origin) * n, delta);
-    if (a > b) std::swap(a, b);
-    iLo = std::max(iLo, a - 1);
-    iHi = std::min(iHi, b + 1);
-  };
-  restrict(x0, dx, 0, profile_.width - 1);
-  restrict(y0, dy, 0, profile_.height - 1);
-  for (long i = iLo; i <= iHi; ++i) plot(at(i, x0, dx), at(i, y0, dy));
+  devices::drawLine(image_, x0, y0, x1, y1, static_cast<PaletteIndex>(pot_));
 }
 
 }  // namespace lattice

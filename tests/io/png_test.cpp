@@ -3,9 +3,9 @@
 #include <filesystem>
 #include <unistd.h>
 
-#include "io/atomic_file.hpp"
+#include "foundation/atomic_file.hpp"
 #include "io/png.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 namespace fs = std::filesystem;

@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <string>
 
-#include "io/atomic_file.hpp"
+#include "foundation/atomic_file.hpp"
 #include "lht/lattice_object.hpp"
 #include "lht/lht_file.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;

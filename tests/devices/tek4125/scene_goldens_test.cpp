@@ -12,14 +12,14 @@
 #include <string>
 #include <vector>
 
-#include "app/stream_devices.hpp"
+#include "devices/device_table.hpp"
 #include "devices/tek4125/tek4125_driver.hpp"
 #include "devices/tek4125/tek4125_profile.hpp"
-#include "io/byte_sink.hpp"
+#include "foundation/byte_sink.hpp"
 #include "io/png.hpp"
 #include "lht/lattice_scene.hpp"
-#include "pipeline/indexed_image.hpp"
-#include "pipeline/run_pipeline.hpp"
+#include "foundation/indexed_image.hpp"
+#include "quantize/run_pipeline.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_loader.hpp"
 #include "tests/support/example_scene.hpp"
@@ -34,13 +34,15 @@ struct SceneCase {
   int width, height;
   int planes;
   Dither dither;
+  const char* forms = "strict";
 };
 
 std::string stemOf(const SceneCase& c) {
   std::string name = c.scene;
   name = name.substr(0, name.find('.'));
-  return fmt::format("tek4125/scenes/{}_{}x{}_{}planes{}", name, c.width, c.height, c.planes,
-                     c.dither == Dither::FloydSteinberg ? "_fs" : "");
+  return fmt::format("tek4125/scenes/{}_{}x{}_{}planes{}{}", name, c.width, c.height, c.planes,
+                     c.dither == Dither::FloydSteinberg ? "_fs" : "",
+                     std::string(c.forms) == "strict" ? "" : std::string("_") + c.forms);
 }
 
 // Feeds the stream in uneven chunks: a terminal gets it in whatever pieces
@@ -57,12 +59,12 @@ void feedChunked(StreamDecoder& decoder, const std::vector<std::uint8_t>& bytes)
 }
 
 void runSceneCase(const SceneCase& c) {
-  INFO("scene " << c.scene << " " << c.width << "x" << c.height << " planes " << c.planes);
+  INFO("scene " << c.scene << " " << c.width << "x" << c.height << " planes " << c.planes << " " << c.forms);
   const SceneDesc scene = testing::loadExampleScene(c.scene);
   Renderer<double> renderer = testing::makeTestRenderer(scene, c.width, c.height);
 
-  const std::vector<std::string> overrides{fmt::format("planes={}", c.planes)};
-  const app::StreamDevice device = app::streamDevice("tek4125", overrides);
+  const std::vector<std::string> overrides{fmt::format("planes={}", c.planes), fmt::format("profile={}", c.forms)};
+  const devices::Device device = devices::makeDevice("tek4125", overrides);
   Tek4125Profile profile;
   applyOverrides(profile, overrides);
 
@@ -84,7 +86,7 @@ void runSceneCase(const SceneCase& c) {
   runPipeline(renderer, driver->sink(), options);
   REQUIRE(driver->stats().bytes == stream.data().size());
 
-  auto decoder = device.makeDecoder();
+  auto decoder = device.makeEmulator();
   feedChunked(*decoder, stream.data());
   CHECK(decoder->report().malformed == 0);
   CHECK(decoder->report().unknownCommands == 0);
@@ -139,27 +141,33 @@ void runSceneCase(const SceneCase& c) {
 }  // namespace
 
 TEST_CASE("scene goldens: the example scenes at 8 planes") {
-  const SceneCase cases[] = {
-      {"sphere-hole.toml", 64, 64, 8, Dither::None},
-      {"torus-floor.toml", 80, 60, 8, Dither::None},
-      {"thesis-camera.toml", 64, 64, 8, Dither::None},
-      {"hook.toml", 64, 64, 8, Dither::None},
-  };
-  for (const SceneCase& c : cases) runSceneCase(c);
+  for (const char* forms : {"strict", "compact"}) {
+    const SceneCase cases[] = {
+        {"sphere-hole.toml", 64, 64, 8, Dither::None, forms},
+        {"torus-floor.toml", 80, 60, 8, Dither::None, forms},
+        {"thesis-camera.toml", 64, 64, 8, Dither::None, forms},
+        {"hook.toml", 64, 64, 8, Dither::None, forms},
+    };
+    for (const SceneCase& c : cases) runSceneCase(c);
+  }
 }
 
 TEST_CASE("scene goldens: 4 planes gives 16 colours through the same chain") {
-  const SceneCase cases[] = {
-      {"sphere-hole.toml", 64, 64, 4, Dither::None},
-      {"torus-floor.toml", 80, 60, 4, Dither::None},
-  };
-  for (const SceneCase& c : cases) runSceneCase(c);
+  for (const char* forms : {"strict", "compact"}) {
+    const SceneCase cases[] = {
+        {"sphere-hole.toml", 64, 64, 4, Dither::None, forms},
+        {"torus-floor.toml", 80, 60, 4, Dither::None, forms},
+    };
+    for (const SceneCase& c : cases) runSceneCase(c);
+  }
 }
 
 TEST_CASE("scene goldens: Floyd-Steinberg dithered frames survive the stream") {
-  const SceneCase cases[] = {
-      {"torus-floor.toml", 80, 60, 4, Dither::FloydSteinberg},
-      {"torus-floor.toml", 80, 60, 8, Dither::FloydSteinberg},
-  };
-  for (const SceneCase& c : cases) runSceneCase(c);
+  for (const char* forms : {"strict", "compact"}) {
+    const SceneCase cases[] = {
+        {"torus-floor.toml", 80, 60, 4, Dither::FloydSteinberg, forms},
+        {"torus-floor.toml", 80, 60, 8, Dither::FloydSteinberg, forms},
+    };
+    for (const SceneCase& c : cases) runSceneCase(c);
+  }
 }

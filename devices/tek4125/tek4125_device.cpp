@@ -1,0 +1,53 @@
+#include "devices/tek4125/tek4125_device.hpp"
+
+#include <fmt/format.h>
+
+#include "devices/tek4125/tek4100_decoder.hpp"
+#include "devices/tek4125/tek4125_driver.hpp"
+
+namespace lattice::tek4125 {
+namespace {
+
+class StreamDriver final : public devices::Driver {
+ public:
+  StreamDriver(ByteSink& out, const Tek4125Profile& profile) : driver_(out, profile), forms_(profile.forms) {}
+  IndexedSink& sink() override { return driver_; }
+  devices::DriverStats stats() const override {
+    const Tek4125StreamStats& s = driver_.stats();
+    return {s.bytes, s.seconds,
+            fmt::format("profile {}, {} bits a pixel, {} raster writes, {} run-length writes, {} rectangle fills, "
+                        "{} background pixels skipped ({})",
+                        forms_, s.rasterBits, s.rasterWrites, s.runLengthWrites, s.rectangleFills, s.skippedPixels,
+                        s.candidate)};
+  }
+
+ private:
+  Tek4125Driver driver_;
+  std::string forms_;
+};
+
+}  // namespace
+
+devices::Device makeDevice(const std::vector<std::string>& settings) {
+  Tek4125Profile profile;
+  applyOverrides(profile, settings);
+  devices::Device d;
+  d.name = "tek4125";
+  d.title = "Tektronix 4125";
+  d.width = profile.width;
+  d.height = profile.height;
+  d.makeDriver = [profile](ByteSink& out) { return std::make_unique<StreamDriver>(out, profile); };
+  d.makeEmulator = [profile] { return std::unique_ptr<StreamDecoder>(makeTek4100Decoder(profile)); };
+  // The driver keeps the frame (a byte a pixel) and encodes up to three
+  // candidate streams, holding the shortest beside the one being written
+  // (growing by doubling, then copied once to escape DEL): 8 B a pixel
+  // covers the example scenes (docs/memory.md, "Calibration").
+  d.driverMemory = [](int w, int h) { return 8 * static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h); };
+  // The screen a byte a pixel, and its RGB copy for the PNG.
+  d.emulatorMemory = 3 * static_cast<std::uint64_t>(profile.width) * static_cast<std::uint64_t>(profile.height);
+  d.line = profile.line();
+  d.profileText = describe(profile);
+  return d;
+}
+
+}  // namespace lattice::tek4125

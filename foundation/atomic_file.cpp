@@ -1,0 +1,99 @@
+#include "foundation/atomic_file.hpp"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+
+#include "foundation/error.hpp"
+
+namespace lattice {
+namespace {
+
+std::atomic<unsigned> tempCounter{0};
+constexpr std::size_t kBufferSize = 1 << 16;
+
+[[noreturn]] void failOutput(const std::filesystem::path& path, const std::string& what) {
+  throw Error(ErrorKind::Output, fmt::format("{}: cannot {}: {}", path.string(), what, std::strerror(errno)));
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
+  temp_ = target_;
+  temp_ += fmt::format(".tmp-{}-{}", ::getpid(), tempCounter.fetch_add(1));
+  fd_ = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd_ < 0) failOutput(target_, "create (is the directory there and writable?)");
+  buffer_.reserve(kBufferSize);
+}
+
+AtomicFile::~AtomicFile() {
+  if (fd_ >= 0) {
+    ::close(fd_);
+    ::unlink(temp_.c_str());
+  }
+}
+
+void AtomicFile::write(std::span<const std::uint8_t> bytes) {
+  if (fd_ < 0) throw Error(ErrorKind::Internal, "AtomicFile: write after close");
+  buffer_.insert(buffer_.end(), bytes.begin(), bytes.end());
+  written_ += bytes.size();
+  if (buffer_.size() >= kBufferSize) flushBuffer();
+}
+
+void AtomicFile::flushBuffer() {
+  const std::uint8_t* p = buffer_.data();
+  std::size_t left = buffer_.size();
+  while (left > 0) {
+    ssize_t n = ::write(fd_, p, left);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      failOutput(target_, "write");
+    }
+    p += n;
+    left -= static_cast<std::size_t>(n);
+  }
+  buffer_.clear();
+}
+
+void AtomicFile::flush() {
+  if (fd_ >= 0) flushBuffer();
+}
+
+void AtomicFile::close() {
+  if (fd_ < 0) return;
+  flushBuffer();
+  if (::fsync(fd_) != 0 && errno != EINVAL) failOutput(target_, "sync");
+  if (::close(fd_) != 0) {
+    fd_ = -1;
+    ::unlink(temp_.c_str());
+    failOutput(target_, "close");
+  }
+  fd_ = -1;
+  if (::rename(temp_.c_str(), target_.c_str()) != 0) {
+    int saved = errno;
+    ::unlink(temp_.c_str());
+    errno = saved;
+    failOutput(target_, "rename the finished file into place");
+  }
+}
+
+void writeFileAtomically(const std::filesystem::path& target, std::span<const std::uint8_t> bytes) {
+  AtomicFile file(target);
+  file.write(bytes);
+  file.close();
+}
+
+std::vector<std::uint8_t> readWholeFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(ErrorKind::Input, fmt::format("{}: cannot open: {}", path.string(), std::strerror(errno)));
+  std::vector<std::uint8_t> data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw Error(ErrorKind::Input, fmt::format("{}: read error", path.string()));
+  return data;
+}
+
+}  // namespace lattice

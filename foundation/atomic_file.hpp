@@ -1,0 +1,42 @@
+#pragma once
+// Files are written atomically: into "<path>.tmp-<pid>-<n>" beside the target,
+// fsync'd, then renamed over it. A crash or an error leaves either the old file
+// or the new one, never half of one.
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+
+#include "foundation/byte_sink.hpp"
+
+namespace lattice {
+
+class AtomicFile final : public ByteSink {
+ public:
+  explicit AtomicFile(std::filesystem::path target);
+  ~AtomicFile() override;  // discards the temporary if close() was not reached
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  using ByteSink::write;
+  void write(std::span<const std::uint8_t> bytes) override;
+  void flush() override;
+  void close() override;  // fsync + rename; throws lattice::Error(Output) on failure
+  std::uint64_t bytesWritten() const override { return written_; }
+  const std::filesystem::path& target() const { return target_; }
+
+ private:
+  void flushBuffer();
+
+  std::filesystem::path target_;
+  std::filesystem::path temp_;
+  int fd_ = -1;
+  std::uint64_t written_ = 0;
+  std::vector<std::uint8_t> buffer_;
+};
+
+// Whole-file helpers.
+void writeFileAtomically(const std::filesystem::path& target, std::span<const std::uint8_t> bytes);
+std::vector<std::uint8_t> readWholeFile(const std::filesystem::path& path);  // Error(Input) if unreadable
+
+}  // namespace lattice
