@@ -6,7 +6,9 @@
 //   lattice::Error.
 // * Decoders are fed in chunks whose size follows from the input's length
 //   (1..8 bytes), so chunk boundaries fall everywhere across a run without
-//   spending input bytes on them; a seed is still a valid stream.
+//   spending input bytes on them; a seed is still a valid stream. The next
+//   two bits of the length choose the Tek 4125 emulator's unsettled readings
+//   (RR from the viewport, RH from the screen: tek4125_profile.hpp).
 // * The .lht entry parses the bytes as they are and again with the trailing
 //   FNV-1a checksum recomputed, so mutations also reach the checks behind it
 //   (a random flip almost never survives a 64-bit checksum). A table that
@@ -78,7 +80,10 @@ void lhtReader(std::span<const std::uint8_t> bytes) {
 }
 
 void tek4125Decoder(std::span<const std::uint8_t> bytes) {
-  const auto decoder = makeTek4100Decoder(Tek4125Profile{});
+  Tek4125Profile profile;
+  profile.rrFromViewport = (bytes.size() / 8) % 2 == 1;
+  profile.rhFromScreen = (bytes.size() / 16) % 2 == 1;
+  const auto decoder = makeTek4100Decoder(profile);
   decode(*decoder, bytes);
 }
 
