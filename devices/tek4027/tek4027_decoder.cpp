@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cstdlib>
 
+#include "devices/work_budget.hpp"
+
 namespace lattice {
 
 namespace {
@@ -292,7 +294,8 @@ bool Tek4027Decoder::erase() {
   if (args_.empty()) return true;  // the workspace text: nothing graphic
   const std::string& what = args_[0];
   if (what == "G" || what == "g") {
-    std::fill(image_.pixels.begin(), image_.pixels.end(), static_cast<PaletteIndex>(profile_.backgroundPot));
+    if (chargePixelWork(report_, image_.pixels.size()))
+      std::fill(image_.pixels.begin(), image_.pixels.end(), static_cast<PaletteIndex>(profile_.backgroundPot));
     return true;
   }
   return what == "W" || what == "w" || what == "M" || what == "m";
@@ -348,6 +351,7 @@ void Tek4027Decoder::line(long x0, long y0, long x1, long y1) {
   };
   restrict(x0, dx, 0, profile_.width - 1);
   restrict(y0, dy, 0, profile_.height - 1);
+  if (iHi < iLo || !chargePixelWork(report_, static_cast<std::uint64_t>(iHi - iLo + 1))) return;
   for (long i = iLo; i <= iHi; ++i) plot(at(i, x0, dx), at(i, y0, dy));
 }
 

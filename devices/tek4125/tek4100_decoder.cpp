@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "devices/tek4125/tek_canvas.hpp"
+#include "devices/work_budget.hpp"
 
 namespace lattice {
 
@@ -198,7 +199,8 @@ void Tek4100Decoder::escape(std::uint8_t c) {
     return;
   }
   if (c == kFF) {  // page clear, back to alpha mode
-    std::fill(screen_.pixels.begin(), screen_.pixels.end(), PaletteIndex{0});
+    if (chargePixelWork(report_, screen_.pixels.size()))
+      std::fill(screen_.pixels.begin(), screen_.pixels.end(), PaletteIndex{0});
     graphMode_ = false;
     ++report_.commands;
     state_ = State::Ground;
@@ -321,7 +323,10 @@ void Tek4100Decoder::plot(int px, int py, int index) {
 
 // Vectors overwrite: the ALU mode belongs to pixel operations.
 void Tek4100Decoder::line(int x0, int y0, int x1, int y1, int index) {
-  tek::drawLine(screen_, pixelX(x0), pixelY(y0), pixelX(x1), pixelY(y1), static_cast<PaletteIndex>(index & mask_));
+  const int px0 = pixelX(x0), py0 = pixelY(y0), px1 = pixelX(x1), py1 = pixelY(y1);
+  const auto steps = static_cast<std::uint64_t>(std::max(std::abs(px1 - px0), std::abs(py1 - py0))) + 1;
+  if (!chargePixelWork(report_, steps)) return;
+  tek::drawLine(screen_, px0, py0, px1, py1, static_cast<PaletteIndex>(index & mask_));
 }
 
 // Patterns above 0 are drawn solid in the line index (no pattern bitmaps
@@ -333,7 +338,8 @@ void Tek4100Decoder::fillPanel() {
   const double scale = profile_.width / 4096.0;
   std::vector<double> points(panel_.size());
   for (std::size_t i = 0; i < panel_.size(); ++i) points[i] = panel_[i] * scale;
-  tek::fillPolygon(screen_, points, static_cast<PaletteIndex>(index & mask_));
+  if (chargePixelWork(report_, tek::fillPolygonWork(screen_, points)))
+    tek::fillPolygon(screen_, points, static_cast<PaletteIndex>(index & mask_));
   if (panelBoundary_ && n >= 2)
     for (std::size_t i = 0, j = n - 1; i < n; j = i++)
       line(panel_[2 * j], panel_[2 * j + 1], panel_[2 * i], panel_[2 * i + 1], lineIndex_);
@@ -411,8 +417,19 @@ void Tek4100Decoder::execute() {
     case Action::RR: {
       const int x0 = std::max(std::min(xy(0), xy(1)), 0), x1 = std::min(std::max(xy(0), xy(1)), profile_.width - 1);
       const int y0 = std::max(std::min(xyY(0), xyY(1)), 0), y1 = std::min(std::max(xyY(0), xyY(1)), profile_.height - 1);
-      for (int y = y0; y <= y1; ++y)
-        for (int x = x0; x <= x1; ++x) plot(x, y, intAt(0, 0));
+      if (x0 > x1 || y0 > y1) break;
+      // Row by row, as plot() would set each pixel (mask, then XOR or copy):
+      // a fill costs what copying its rows costs.
+      const std::size_t width = static_cast<std::size_t>(x1 - x0 + 1);
+      if (!chargePixelWork(report_, width * static_cast<std::size_t>(y1 - y0 + 1))) break;
+      const auto value = static_cast<PaletteIndex>(intAt(0, 0) & mask_);
+      for (int y = y0; y <= y1; ++y) {
+        PaletteIndex* row = tek::pixelAt(screen_, x0, y);
+        if (alu_ == 7)
+          for (std::size_t i = 0; i < width; ++i) row[i] = static_cast<PaletteIndex>(row[i] ^ value);
+        else
+          std::fill_n(row, width, value);
+      }
       break;
     }
     case Action::LF:

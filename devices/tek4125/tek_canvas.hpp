@@ -3,6 +3,7 @@
 // bottom row, as the terminal counts) while the framebuffer, like every
 // IndexedImage, stores the top row first. Everything is clipped: streams
 // can ask for any coordinate.
+#include <cstdint>
 #include <span>
 
 #include "pipeline/indexed_image.hpp"
@@ -21,5 +22,8 @@ void drawLine(IndexedImage& screen, int px0, int py0, int px1, int py1, PaletteI
 // Even-odd fill of a polygon (x, y pairs in pixels, fractions allowed): a
 // pixel is inside when its centre is. Work is O(rows * points).
 void fillPolygon(IndexedImage& screen, std::span<const double> xy, PaletteIndex index);
+// What fillPolygon will cost, in pixel units (devices/work_budget.hpp): per
+// row it crosses, one unit per edge tested and one per pixel it may fill.
+std::uint64_t fillPolygonWork(const IndexedImage& screen, std::span<const double> xy);
 
 }  // namespace lattice::tek
