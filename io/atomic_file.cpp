@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fstream>
 
+#include "io/temp_file_registry.hpp"
 #include "util/error.hpp"
 
 namespace lattice {
@@ -26,8 +27,14 @@ constexpr std::size_t kBufferSize = 1 << 16;
 AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
   temp_ = target_;
   temp_ += fmt::format(".tmp-{}-{}", ::getpid(), tempCounter.fetch_add(1));
+  registrySlot_ = TempFileRegistry::add(temp_.c_str());  // before the file exists: a signal never misses it
   fd_ = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd_ < 0) failOutput(target_, "create (is the directory there and writable?)");
+  if (fd_ < 0) {
+    const int saved = errno;
+    TempFileRegistry::remove(registrySlot_);
+    errno = saved;
+    failOutput(target_, "create (is the directory there and writable?)");
+  }
   buffer_.reserve(kBufferSize);
 }
 
@@ -36,6 +43,7 @@ AtomicFile::~AtomicFile() {
     ::close(fd_);
     ::unlink(temp_.c_str());
   }
+  TempFileRegistry::remove(registrySlot_);
 }
 
 void AtomicFile::write(std::span<const std::uint8_t> bytes) {
@@ -70,16 +78,19 @@ void AtomicFile::close() {
   if (::fsync(fd_) != 0 && errno != EINVAL) failOutput(target_, "sync");
   if (::close(fd_) != 0) {
     fd_ = -1;
-    ::unlink(temp_.c_str());
-    failOutput(target_, "close");
-  }
-  fd_ = -1;
-  if (::rename(temp_.c_str(), target_.c_str()) != 0) {
-    int saved = errno;
+    const int saved = errno;
     ::unlink(temp_.c_str());
     errno = saved;
-    failOutput(target_, "rename the finished file into place");
+    failOutput(target_, "close");  // the destructor releases the registry slot
   }
+  fd_ = -1;
+  const int renamed = ::rename(temp_.c_str(), target_.c_str());
+  const int saved = errno;
+  if (renamed != 0) ::unlink(temp_.c_str());
+  TempFileRegistry::remove(registrySlot_);
+  registrySlot_ = -1;
+  errno = saved;
+  if (renamed != 0) failOutput(target_, "rename the finished file into place");
 }
 
 void writeFileAtomically(const std::filesystem::path& target, std::span<const std::uint8_t> bytes) {

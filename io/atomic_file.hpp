@@ -1,7 +1,8 @@
 #pragma once
 // Files are written atomically: into "<path>.tmp-<pid>-<n>" beside the target,
 // fsync'd, then renamed over it. A crash or an error leaves either the old file
-// or the new one, never half of one.
+// or the new one, never half of one; SIGINT, SIGTERM and SIGHUP unlink the
+// temporary before the process dies (io/temp_file_registry.hpp).
 #include <cstdint>
 #include <filesystem>
 #include <span>
@@ -31,6 +32,7 @@ class AtomicFile final : public ByteSink {
   std::filesystem::path target_;
   std::filesystem::path temp_;
   int fd_ = -1;
+  int registrySlot_ = -1;
   std::uint64_t written_ = 0;
   std::vector<std::uint8_t> buffer_;
 };
