@@ -7,10 +7,10 @@
 #include <map>
 #include <numbers>
 #include <random>
-#include <sstream>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "lht/canonical_toml.hpp"
 #include "lht/lattice_leaf.hpp"
 #include "lht/lattice_object.hpp"
 #include "lht/polyline.hpp"
@@ -106,9 +106,7 @@ void parseLatticeSection(const toml::node& section, ParseContext& context) {
     if (!object || !object->is_table())
       context.fail(*table, "a [[lattices]] entry needs `object = { type = ..., ... }`, the solid to rasterize");
     def->object = context.parseNode(*object);
-    std::ostringstream text;
-    text << toml::toml_formatter(*object->as_table());
-    def->objectText = text.str();
+    def->objectText = canonicalToml(*object);
     DefinitionMap& known = definitions(context);
     if (known.count(def->name)) context.fail(*table->get("name"), fmt::format("lattice '{}' is defined twice", def->name));
     known[def->name] = def;
@@ -151,8 +149,10 @@ NodeDesc parseScatterNode(const toml::table& table, ParseContext& context) {
   context.checkKeys(table, {"lattice", "count", "radius", "seed"}, true);
   const LatticeDefinitionPtr def = findDefinition(table, context);
   const long long count = context.integer(table, "count").value_or(0);
-  if (count < 1 || count > 1000000)
-    context.fail(table, "`count` must be an integer between 1 and 1000000 (how many instances to scatter)");
+  if (count < 1 || count > kMaxScatterCount)
+    context.fail(table, fmt::format("`count` must be an integer between 1 and {} (how many instances to scatter; "
+                                    "the limit is kMaxScatterCount, docs/limits.md)",
+                                    kMaxScatterCount));
   const double radius = context.positiveNumber(table, "radius");
   const auto seed = static_cast<std::uint64_t>(context.integer(table, "seed").value_or(1));
   std::mt19937_64 random(seed);
@@ -173,12 +173,16 @@ NodeDesc parseScatterNode(const toml::table& table, ParseContext& context) {
 }  // namespace
 
 std::uint64_t LatticeDefinition::hashFor(LhtPrecision form) const {
-  // The thesis's precision adds nothing, so caches written before the
-  // precision existed (all of them thesis) keep their hash.
+  // From our canonical form of the values (lht/canonical_toml.hpp), never a
+  // formatter's output (toml++ 3.3.0's formatter overflowed a float-to-int
+  // cast on small numbers in nested arrays: issue 15). "lattice2" marks the
+  // key's second form: caches keyed by the formatter's text are refused as
+  // rasterized from another definition (docs/lattices.md). The thesis's
+  // precision adds nothing to the key.
   const std::string formText =
       form == LhtPrecision::Thesis ? "" : fmt::format(" precision={}", lhtPrecisionName(form));
-  return fnv1a64(fmt::format("lattice spacing={:.17g} oversample={:.17g}{} object={}", lambda, oversample, formText,
-                             objectText));
+  return fnv1a64(fmt::format("lattice2 spacing={} oversample={}{} object={}", canonicalDouble(lambda),
+                             canonicalDouble(oversample), formText, objectText));
 }
 
 LhtFile LatticeDefinition::rasterizeNow(bool progress, RasterStats* stats, unsigned threads) const {

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "io/image_metrics.hpp"
+#include "lht/canonical_toml.hpp"
 #include "lht/lattice_scene.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_loader.hpp"
@@ -276,9 +277,10 @@ TEST_CASE("lattice scene: the precision key picks the entry form and the thesis'
   const LatticeDefinitionPtr plain = definition("");
   CHECK(plain->precision == LhtPrecision::Thesis);
   CHECK(definition("precision = \"thesis\"")->hash() == plain->hash());
-  // Caches written before the knob existed hold this hash and must stay valid.
-  CHECK(plain->hash() == fnv1a64(fmt::format("lattice spacing={:.17g} oversample={:.17g} object={}", plain->lambda,
-                                             plain->oversample, plain->objectText)));
+  // The key of a thesis-precision lattice names no precision.
+  CHECK(plain->hash() == fnv1a64(fmt::format("lattice2 spacing={} oversample={} object={}",
+                                             canonicalDouble(plain->lambda), canonicalDouble(plain->oversample),
+                                             plain->objectText)));
   for (const char* name : {"wide", "compact"}) {
     const LatticeDefinitionPtr d = definition(fmt::format("precision = \"{}\"", name));
     CHECK(lhtPrecisionName(d->precision) == name);
@@ -341,4 +343,15 @@ TEST_CASE("lattice scene: mistakes are located errors") {
       "[[lattices]]\nname = \"a\"\nspacing = 1\nprecision = 16\nobject = { type = \"sphere\", radius = 1 }\n");
   CHECK(notAString.find("bad.toml:4:") != std::string::npos);
   CHECK(notAString.find("precision") != std::string::npos);
+}
+
+TEST_CASE("lattice scene: lattice_scatter's count is capped at kMaxScatterCount with a located error") {
+  registerLatticeSceneTypes();
+  std::string over = fuzzyScene(static_cast<int>(kMaxScatterCount) + 1);
+  const std::string message = loadError(over);
+  CHECK_THAT(message, Catch::Contains("bad.toml:") && Catch::Contains("between 1 and 100000") &&
+                          Catch::Contains("docs/limits.md"));
+  // The limit itself loads (placing is linear; nothing is rendered here).
+  const SceneDesc scene = parseScene(fuzzyScene(static_cast<int>(kMaxScatterCount)), "limit.toml");
+  CHECK(scene.root.children.size() == 3);
 }
