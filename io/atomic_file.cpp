@@ -107,4 +107,29 @@ std::vector<std::uint8_t> readWholeFile(const std::filesystem::path& path) {
   return data;
 }
 
+std::vector<std::uint8_t> readFileUpTo(const std::filesystem::path& path, std::uint64_t maxBytes,
+                                       const std::string& what) {
+  const auto tooLarge = [&](const std::string& size) {
+    return Error(ErrorKind::Input, fmt::format("{}: {}more than the {}-byte limit for {} (docs/limits.md)",
+                                               path.string(), size, maxBytes, what));
+  };
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(path, ec)) {
+    const std::uint64_t size = std::filesystem::file_size(path, ec);
+    if (!ec && size > maxBytes) throw tooLarge(fmt::format("{} bytes, ", size));
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(ErrorKind::Input, fmt::format("{}: cannot open: {}", path.string(), std::strerror(errno)));
+  std::vector<std::uint8_t> data;
+  std::vector<char> chunk(1 << 16);
+  while (in) {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    const auto got = static_cast<std::size_t>(in.gcount());
+    if (data.size() + got > maxBytes) throw tooLarge("");
+    data.insert(data.end(), chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(got));
+  }
+  if (in.bad()) throw Error(ErrorKind::Input, fmt::format("{}: read error", path.string()));
+  return data;
+}
+
 }  // namespace lattice

@@ -40,5 +40,11 @@ class AtomicFile final : public ByteSink {
 // Whole-file helpers.
 void writeFileAtomically(const std::filesystem::path& target, std::span<const std::uint8_t> bytes);
 std::vector<std::uint8_t> readWholeFile(const std::filesystem::path& path);  // Error(Input) if unreadable
+// The same for a file from outside, refused (Error(Input), naming `what` and
+// docs/limits.md) when it holds more than maxBytes: a regular file by its
+// size before anything is read, anything else (a pipe, /dev/zero) once
+// maxBytes + 1 bytes have arrived.
+std::vector<std::uint8_t> readFileUpTo(const std::filesystem::path& path, std::uint64_t maxBytes,
+                                       const std::string& what);
 
 }  // namespace lattice
