@@ -8,10 +8,10 @@
 #include <memory>
 #include <string>
 
-#include "app/command_registry.hpp"
+#include "app/commands.hpp"
 #include "io/image_metrics.hpp"
 #include "io/png.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace {
 
@@ -47,6 +47,10 @@ void runDiff(const DiffOptions& o) {
   }
 }
 
+}  // namespace
+
+namespace lattice::app {
+
 void addDiff(CLI::App& root) {
   auto o = std::make_shared<DiffOptions>();
   auto* cmd = root.add_subcommand(
@@ -68,6 +72,4 @@ void addDiff(CLI::App& root) {
   cmd->callback([o] { runDiff(*o); });
 }
 
-}  // namespace
-
-LATTICE_COMMAND(addDiff);
+}  // namespace lattice::app

@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "app/command_registry.hpp"
-#include "app/stream_devices.hpp"
+#include "app/commands.hpp"
+#include "devices/device_table.hpp"
 #include "devices/work_budget.hpp"
 #include "io/png.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace {
 
@@ -31,8 +31,8 @@ struct EmulateOptions {
 void runEmulate(const EmulateOptions& o) {
   using lattice::Error;
   using lattice::ErrorKind;
-  const lattice::app::StreamDevice device = lattice::app::streamDevice(o.device, o.settings);
-  std::unique_ptr<lattice::StreamDecoder> decoder = device.makeDecoder();
+  const lattice::devices::Device device = lattice::devices::makeDevice(o.device, o.settings);
+  std::unique_ptr<lattice::StreamDecoder> decoder = device.makeEmulator();
   // Read in pieces (a stream may be large, and the decoder takes any
   // chunking), within the stream-size limit and the drawing budget.
   std::FILE* in = o.input == "-" ? stdin : std::fopen(o.input.c_str(), "rb");
@@ -56,12 +56,16 @@ void runEmulate(const EmulateOptions& o) {
   }
 }
 
+}  // namespace
+
+namespace lattice::app {
+
 void addEmulate(CLI::App& root) {
   auto o = std::make_shared<EmulateOptions>();
-  auto* cmd = root.add_subcommand("emulate", "Decode a Tektronix command stream into the PNG the terminal would show");
-  cmd->add_option("--device", o->device, "tek4125 (4100-series commands) or tek4027 (!-commands)")
+  auto* cmd = root.add_subcommand("emulate", "Decode a device's command stream into the PNG its screen would show");
+  cmd->add_option("--device", o->device, "The device whose stream it is: tek4125 (4100-series commands), tek4027 (!-commands) or apollo (GPR journal)")
       ->required()
-      ->check(CLI::IsMember(lattice::app::streamDeviceNames()));
+      ->check(CLI::IsMember(lattice::devices::deviceNames()));
   cmd->add_option("stream", o->input, "Command stream file, or - for standard input")->required();
   cmd->add_option("-o,--output", o->output, "PNG of the screen to write (atomically)")->required();
   cmd->add_option("--set", o->settings, "Override a profile assumption, key=value (repeatable), e.g. --set planes=4");
@@ -75,6 +79,4 @@ void addEmulate(CLI::App& root) {
   cmd->callback([o] { runEmulate(*o); });
 }
 
-}  // namespace
-
-LATTICE_COMMAND(addEmulate);
+}  // namespace lattice::app

@@ -2,7 +2,7 @@
 // hash, the thesis's N_lp / N_iz, and how well the hash table is packed.
 #include <fmt/format.h>
 
-#include "app/command_registry.hpp"
+#include "app/commands.hpp"
 #include "lht/lht_file.hpp"
 
 namespace {
@@ -34,6 +34,10 @@ void runLhtInfo(const std::string& path) {
     fmt::print("  length {:>3}: {} buckets\n", k, chains.chainLengthHistogram[k]);
 }
 
+}  // namespace
+
+namespace lattice::app {
+
 void addLhtInfo(CLI::App& root) {
   auto* cmd = root.add_subcommand("lht-info",
                                   "Print the header and statistics of a .lht lattice hash table file: lattice size,\n"
@@ -44,6 +48,4 @@ void addLhtInfo(CLI::App& root) {
   cmd->callback([=] { runLhtInfo(*path); });
 }
 
-}  // namespace
-
-LATTICE_COMMAND(addLhtInfo);
+}  // namespace lattice::app

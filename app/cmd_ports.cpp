@@ -5,10 +5,10 @@
 #include <memory>
 #include <string>
 
-#include "app/command_registry.hpp"
+#include "app/commands.hpp"
 #include "io/port_discovery.hpp"
 #include "io/usb_hotplug.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace {
 
@@ -86,6 +86,10 @@ void runPorts(const PortsArgs& args) {
   for (const auto& p : ports) fmt::print("{}\n", p.describe());
 }
 
+}  // namespace
+
+namespace lattice::app {
+
 void addPorts(CLI::App& root) {
   auto args = std::make_shared<PortsArgs>();
   auto* cmd = root.add_subcommand(
@@ -101,6 +105,4 @@ void addPorts(CLI::App& root) {
   cmd->callback([args] { runPorts(*args); });
 }
 
-}  // namespace
-
-LATTICE_COMMAND(addPorts);
+}  // namespace lattice::app

@@ -7,13 +7,13 @@
 #include <memory>
 #include <string>
 
-#include "app/command_registry.hpp"
+#include "app/commands.hpp"
 #include "app/pipeline_args.hpp"
 #include "io/png.hpp"
-#include "pipeline/indexed_image.hpp"
-#include "pipeline/rgb_image_source.hpp"
-#include "pipeline/run_pipeline.hpp"
-#include "util/error.hpp"
+#include "foundation/indexed_image.hpp"
+#include "foundation/rgb_image_source.hpp"
+#include "quantize/run_pipeline.hpp"
+#include "foundation/error.hpp"
 
 namespace {
 
@@ -43,6 +43,10 @@ void runQuantize(const QuantizeArgs& args, const CLI::App& cmd) {
                lattice::pipelineModeName(options.mode), report.rowsRendered, (report.totalBytes() + 1023) / 1024);
 }
 
+}  // namespace
+
+namespace lattice::app {
+
 void addQuantize(CLI::App& root) {
   auto args = std::make_shared<QuantizeArgs>();
   CLI::App* cmd = root.add_subcommand(
@@ -56,6 +60,4 @@ void addQuantize(CLI::App& root) {
   cmd->callback([args, cmd] { runQuantize(*args, *cmd); });
 }
 
-}  // namespace
-
-LATTICE_COMMAND(addQuantize);
+}  // namespace lattice::app

@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <optional>
 
-#include "app/command_registry.hpp"
+#include "app/commands.hpp"
 #include "lht/lattice_object.hpp"
 #include "lht/lattice_scene.hpp"
 #include "lht/lht_file.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace {
 
@@ -74,6 +74,10 @@ void runRasterize(const RasterizeArgs& args) {
   if (args.stats) printStats(lht, stats);
 }
 
+}  // namespace
+
+namespace lattice::app {
+
 void addRasterize(CLI::App& root) {
   auto args = std::make_shared<RasterizeArgs>();
   auto* cmd = root.add_subcommand(
@@ -111,6 +115,4 @@ const bool latticeSceneTypesRegistered = [] {
   return true;
 }();
 
-}  // namespace
-
-LATTICE_COMMAND(addRasterize);
+}  // namespace lattice::app

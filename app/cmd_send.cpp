@@ -6,14 +6,14 @@
 #include <memory>
 #include <string>
 
-#include "app/command_registry.hpp"
-#include "app/serial_options.hpp"
+#include "app/commands.hpp"
+#include "app/serial_args.hpp"
 #include "devices/work_budget.hpp"
-#include "io/atomic_file.hpp"
+#include "foundation/atomic_file.hpp"
 #include "io/serial_sink.hpp"
 #include "io/stream_sender.hpp"
-#include "util/error.hpp"
-#include "util/progress.hpp"
+#include "foundation/error.hpp"
+#include "foundation/progress.hpp"
 
 namespace {
 
@@ -49,6 +49,10 @@ void runSend(const SendArgs& args) {
   }
 }
 
+}  // namespace
+
+namespace lattice::app {
+
 void addSend(CLI::App& root) {
   auto args = std::make_shared<SendArgs>();
   auto* cmd = root.add_subcommand(
@@ -64,6 +68,4 @@ void addSend(CLI::App& root) {
   cmd->callback([args] { runSend(*args); });
 }
 
-}  // namespace
-
-LATTICE_COMMAND(addSend);
+}  // namespace lattice::app

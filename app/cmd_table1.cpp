@@ -2,7 +2,7 @@
 // intersections found) and prints it beside the published numbers.
 #include <fmt/format.h>
 
-#include "app/command_registry.hpp"
+#include "app/commands.hpp"
 #include "lht/table1.hpp"
 
 namespace {
@@ -29,6 +29,10 @@ void runTable1(bool quick, unsigned threads) {
   }
 }
 
+}  // namespace
+
+namespace lattice::app {
+
 void addTable1(CLI::App& root) {
   auto* cmd = root.add_subcommand(
       "table1",
@@ -42,6 +46,4 @@ void addTable1(CLI::App& root) {
   cmd->callback([=] { runTable1(*quick, *threads); });
 }
 
-}  // namespace
-
-LATTICE_COMMAND(addTable1);
+}  // namespace lattice::app

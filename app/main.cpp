@@ -7,8 +7,8 @@
 #include <exception>
 #include <new>
 
-#include "app/command_registry.hpp"
-#include "util/error.hpp"
+#include "app/commands.hpp"
+#include "foundation/error.hpp"
 
 int main(int argc, char** argv) {
   CLI::App root{"lattice: three-dimensional texturing using lattices (Lewis 1988), rendered to\n"
@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
   root.set_version_flag("--version", LATTICE_VERSION);
   root.require_subcommand(1);
   root.footer("Run `lattice COMMAND --help` for a command's options. Exit codes: docs/cli.md.");
-  for (auto adder : lattice::app::commandAdders()) adder(root);
+  for (auto adder : lattice::app::kCommands) adder(root);
 
   try {
     root.parse(argc, argv);

@@ -5,8 +5,8 @@
 #include <algorithm>
 
 #include "lht/table.hpp"
-#include "util/error.hpp"
-#include "util/resident_memory.hpp"
+#include "foundation/error.hpp"
+#include "foundation/resident_memory.hpp"
 
 namespace lattice::app {
 

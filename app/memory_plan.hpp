@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "lht/lht_precision.hpp"
-#include "pipeline/run_pipeline.hpp"
+#include "quantize/run_pipeline.hpp"
 
 namespace lattice::app {
 

@@ -4,7 +4,7 @@
 
 #include <map>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::app {
 

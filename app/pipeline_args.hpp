@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "pipeline/run_pipeline.hpp"
+#include "quantize/run_pipeline.hpp"
 
 namespace lattice::app {
 

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 #include <malloc.h>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::app {
 
@@ -22,30 +22,23 @@ std::uint64_t pixels(int w, int h) { return static_cast<std::uint64_t>(w) * stat
 }  // namespace
 
 MemoryPlanRequest renderBudgetRequest(std::uint64_t budget, int width, int height, const PipelineOptions& pipeline,
-                                      bool modeChosenByUser, const RenderOutputs& outputs) {
+                                      bool modeChosenByUser, const devices::Device* device, bool writesPng) {
   MemoryPlanRequest request;
   request.budget = budget;
   request.width = width;
   request.height = height;
   request.pipeline = pipeline;
   request.modeChosenByUser = modeChosenByUser;
-  const bool stream = outputs.device == "tek4125" || outputs.device == "tek4027";
-  request.quantized = stream || outputs.device == "apollo";
-  if (!request.quantized) request.deviceItems.push_back({"truecolour picture", 3 * pixels(width, height)});
-  if (outputs.device == "apollo")  // a byte a pixel of bitmap, then the screen as RGB for the PNG
-    request.deviceItems.push_back(
-        {"Apollo bitmap and picture", 4 * pixels(outputs.deviceWidth, outputs.deviceHeight)});
-  // The 4027 driver keeps the frame and its pot map, then encodes its six
-  // stream orders one after another, holding the shortest so far beside the
-  // next (strings that grow by doubling): measured up to 16.3 B a pixel of
-  // working set on the example scenes (docs/memory.md, "Calibration").
-  if (outputs.device == "tek4027")
-    request.deviceItems.push_back({"Tek 4027 frame and candidate streams", 20 * pixels(width, height)});
-  if (stream && outputs.writesPng)
-    request.deviceItems.push_back({"emulator screen", 3 * pixels(outputs.deviceWidth, outputs.deviceHeight)});
+  request.quantized = device != nullptr;
+  if (!device) request.deviceItems.push_back({"truecolour picture", 3 * pixels(width, height)});
+  if (device) {
+    if (const std::uint64_t driver = device->driverMemory(width, height); driver > 0)
+      request.deviceItems.push_back({fmt::format("{} driver", device->title), driver});
+    if (writesPng) request.deviceItems.push_back({"emulator screen", device->emulatorMemory});
+  }
   // libpng's zlib deflate state (two 128 KiB windows at the default levels)
   // and its row buffers: measured 200-310 KiB beyond the picture itself.
-  if (outputs.writesPng) request.deviceItems.push_back({"PNG encoder", 384 * 1024});
+  if (writesPng) request.deviceItems.push_back({"PNG encoder", 384 * 1024});
   return request;
 }
 

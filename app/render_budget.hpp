@@ -8,22 +8,17 @@
 #include <vector>
 
 #include "app/memory_plan.hpp"
+#include "devices/device.hpp"
 #include "lht/lattice_scene.hpp"
-#include "util/resident_memory.hpp"
+#include "foundation/resident_memory.hpp"
 
 namespace lattice::app {
 
-// Where the render's picture goes, as far as memory is concerned.
-struct RenderOutputs {
-  std::string device;     // png, apollo, tek4125, tek4027
-  bool writesPng = false;  // -o
-  int deviceWidth = 0;     // the device's screen (Apollo, the Tek emulator)
-  int deviceHeight = 0;
-};
-
 // The request for a width x height picture, before anything is measured.
+// `device` is the device table's entry (its driver's and emulator's memory),
+// or nullptr for a truecolour picture; `writesPng`: a picture is saved (-o).
 MemoryPlanRequest renderBudgetRequest(std::uint64_t budget, int width, int height, const PipelineOptions& pipeline,
-                                      bool modeChosenByUser, const RenderOutputs& outputs);
+                                      bool modeChosenByUser, const devices::Device* device, bool writesPng);
 
 // Lattices rasterized in this run are packed in the form the budget can
 // hold, decided when their entry count is known (chooseTablePacking).

@@ -14,7 +14,7 @@
 #include "lht/table1.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_loader.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;

@@ -31,8 +31,8 @@
 #include <vector>
 
 #include "io/png.hpp"
-#include "pipeline/rgb_image_source.hpp"
-#include "pipeline/run_pipeline.hpp"
+#include "foundation/rgb_image_source.hpp"
+#include "quantize/run_pipeline.hpp"
 
 extern char** environ;
 

@@ -34,7 +34,7 @@
 #include "lht/lattice_scene.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_loader.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 

@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "io/png.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace {
 

@@ -12,7 +12,7 @@
 #include <span>
 #include <string>
 
-#include "pipeline/indexed_image.hpp"
+#include "foundation/indexed_image.hpp"
 
 namespace lattice {
 

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

@@ -8,7 +8,7 @@
 #include <limits>
 #include <vector>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

@@ -5,8 +5,8 @@
 
 #include <cstring>
 
-#include "io/atomic_file.hpp"
-#include "util/error.hpp"
+#include "foundation/atomic_file.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 namespace {
@@ -59,14 +59,6 @@ void writePng(const std::filesystem::path& path, const IndexedImage& img) {
   for (auto& p : pixels)
     if (p >= img.colormap.size()) p = 0;
   encodeAndWrite(path, image, pixels.data(), cmap.data());
-}
-
-RgbImage toRgbImage(const IndexedImage& img) {
-  RgbImage out;
-  out.width = img.width;
-  out.height = img.height;
-  out.rgb = img.toRgb();
-  return out;
 }
 
 }  // namespace lattice

@@ -10,21 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/indexed_image.hpp"
+#include "foundation/indexed_image.hpp"
+#include "foundation/rgb_image.hpp"
 
 namespace lattice {
-
-// 8 bits a channel, RGB, row-major, top row first.
-struct RgbImage {
-  int width = 0;
-  int height = 0;
-  std::vector<std::uint8_t> rgb;  // 3 * width * height
-
-  RgbImage() = default;
-  RgbImage(int w, int h) : width(w), height(h), rgb(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 3, 0) {}
-  std::uint8_t* pixel(int x, int y) { return &rgb[(static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 3]; }
-  const std::uint8_t* pixel(int x, int y) const { return &rgb[(static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 3]; }
-};
 
 void writePng(const std::filesystem::path& path, const RgbImage& image);
 // Writes a palette PNG (colour type 3) when the map has <= 256 entries.
@@ -42,6 +31,5 @@ RgbImage readPng(const std::filesystem::path& path);
 // used in messages) and from bytes in memory: what a fuzzer drives.
 RgbImage readPng(std::FILE* stream, const std::string& name);
 RgbImage readPngBytes(std::span<const std::uint8_t> bytes, const std::string& name);
-RgbImage toRgbImage(const IndexedImage& image);
 
 }  // namespace lattice

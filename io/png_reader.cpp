@@ -24,7 +24,7 @@
 #include <png.h>
 
 #include "io/png.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 namespace {

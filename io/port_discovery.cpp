@@ -6,7 +6,7 @@
 #include <fstream>
 #include <system_error>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 namespace fs = std::filesystem;

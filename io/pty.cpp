@@ -9,7 +9,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

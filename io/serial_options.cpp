@@ -7,7 +7,7 @@
 #include "io/port_discovery.hpp"
 #include "io/serial_port.hpp"
 #include "io/serial_sink.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

@@ -1,14 +1,14 @@
 #pragma once
 // How to reach a terminal over a serial line: the port and its line settings.
 // `lattice send` and `lattice render --port` take the same flags
-// (app/serial_options.hpp) and open the line with openSerialSink().
+// (app/serial_args.hpp) and open the line with openSerialSink().
 #include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <string_view>
 
-#include "io/line_timing.hpp"
+#include "foundation/line_timing.hpp"
 
 namespace lattice {
 

@@ -18,7 +18,7 @@
 #include <utility>
 
 #include "io/serial_termios2.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 namespace {

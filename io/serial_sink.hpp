@@ -14,11 +14,11 @@
 #include <optional>
 #include <span>
 
-#include "io/byte_sink.hpp"
+#include "foundation/byte_sink.hpp"
 #include "io/rate_limiter.hpp"
 #include "io/serial_options.hpp"
 #include "io/serial_port.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

@@ -6,7 +6,7 @@
 #include <cstring>
 #include <string>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

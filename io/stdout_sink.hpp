@@ -1,7 +1,7 @@
 #pragma once
 // Writes a stream to standard output (`--stream -`), e.g. to pipe into a
 // terminal emulator or `tee`.
-#include "io/byte_sink.hpp"
+#include "foundation/byte_sink.hpp"
 
 namespace lattice {
 

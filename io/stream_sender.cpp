@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <chrono>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 namespace {

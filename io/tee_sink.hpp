@@ -5,7 +5,7 @@
 // so the PNG shows exactly the bytes that were sent.
 #include <functional>
 
-#include "io/byte_sink.hpp"
+#include "foundation/byte_sink.hpp"
 
 namespace lattice {
 

@@ -5,7 +5,7 @@
 #include <bit>
 #include <cmath>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::lht {
 

@@ -9,8 +9,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "render/bounds.hpp"
-#include "render/vec.hpp"
+#include "foundation/bounds.hpp"
+#include "foundation/vec.hpp"
 
 namespace lattice::lht {
 

@@ -6,8 +6,8 @@
 #include <bit>
 #include <cmath>
 
-#include "render/transform_condition.hpp"
-#include "util/error.hpp"
+#include "foundation/transform_condition.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::lht {
 

@@ -8,7 +8,7 @@
 #include "lht/polyline.hpp"
 #include "render/csg_shapes.hpp"
 #include "render/shapes.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::lht {
 

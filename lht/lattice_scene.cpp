@@ -15,7 +15,7 @@
 #include "lht/lattice_object.hpp"
 #include "lht/polyline.hpp"
 #include "render/scene_loader.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::lht {
 

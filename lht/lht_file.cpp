@@ -8,8 +8,8 @@
 #include <fstream>
 #include <string>
 
-#include "io/atomic_file.hpp"
-#include "util/error.hpp"
+#include "foundation/atomic_file.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::lht {
 

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::lht {
 

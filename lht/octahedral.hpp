@@ -17,7 +17,7 @@
 #include <array>
 #include <cstdint>
 
-#include "render/vec.hpp"
+#include "foundation/vec.hpp"
 
 namespace lattice::lht {
 

@@ -6,7 +6,7 @@
 
 #include "render/csg.hpp"
 #include "render/csg_shapes.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::lht {
 

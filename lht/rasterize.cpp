@@ -8,7 +8,7 @@
 #include <mutex>
 #include <thread>
 
-#include "util/progress.hpp"
+#include "foundation/progress.hpp"
 
 namespace lattice::lht {
 

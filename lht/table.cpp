@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::lht {
 

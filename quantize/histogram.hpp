@@ -13,7 +13,7 @@
 #include <span>
 #include <vector>
 
-#include "pipeline/scanline.hpp"
+#include "foundation/scanline.hpp"
 
 namespace lattice {
 

@@ -7,7 +7,7 @@
 #include <climits>
 
 #include "quantize/median_cut.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

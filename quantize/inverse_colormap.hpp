@@ -17,7 +17,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "pipeline/scanline.hpp"
+#include "foundation/scanline.hpp"
 
 namespace lattice {
 

@@ -6,7 +6,7 @@
 #include <array>
 #include <cmath>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 namespace {

@@ -11,7 +11,7 @@
 // Optional k-means refinement then moves each entry to the mean of the cells
 // nearest to it (Lloyd iterations; Heckbert 1982 sec. 4 calls this iterative
 // improvement).
-#include "pipeline/scanline.hpp"
+#include "foundation/scanline.hpp"
 #include "quantize/histogram.hpp"
 #include "quantize/quantize_options.hpp"
 

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "quantize/median_cut.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 namespace {

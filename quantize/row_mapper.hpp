@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-#include "pipeline/scanline.hpp"
+#include "foundation/scanline.hpp"
 #include "quantize/inverse_colormap.hpp"
 #include "quantize/quantize_options.hpp"
 

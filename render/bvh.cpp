@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "render/bounds.hpp"
+#include "foundation/bounds.hpp"
 
 namespace lattice {
 

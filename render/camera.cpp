@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

@@ -19,8 +19,8 @@
 // Camera set-up is done in double; rays come out in T.
 #include <string>
 
-#include "render/ray.hpp"
-#include "render/vec.hpp"
+#include "foundation/ray.hpp"
+#include "foundation/vec.hpp"
 
 namespace lattice {
 

@@ -6,7 +6,7 @@
 
 #include "render/bvh.hpp"
 #include "render/span_ops.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

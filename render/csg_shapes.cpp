@@ -8,7 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

@@ -5,7 +5,7 @@
 // inverse law (thesis sec. 2.4). So I_inc is the intensity a point at
 // distance 1 - K would receive; with K = 0 a light of intensity 10 at
 // distance 10 delivers 1.
-#include "render/vec.hpp"
+#include "foundation/vec.hpp"
 
 namespace lattice {
 

@@ -4,7 +4,7 @@
 // per wavelength: k_amb, k_diff, k_spec and even n_spec may differ by channel.
 #include <string>
 
-#include "render/vec.hpp"
+#include "foundation/vec.hpp"
 
 namespace lattice {
 

@@ -12,7 +12,7 @@
 #include "render/csg_shapes.hpp"
 #include "render/quartic.hpp"
 #include "render/shapes.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

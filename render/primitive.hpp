@@ -12,8 +12,8 @@
 #include <limits>
 #include <memory>
 
-#include "render/bounds.hpp"
-#include "render/ray.hpp"
+#include "foundation/bounds.hpp"
+#include "foundation/ray.hpp"
 #include "render/span_list.hpp"
 
 namespace lattice {

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "render/roots.hpp"
-#include "render/transform_condition.hpp"
-#include "util/error.hpp"
+#include "foundation/transform_condition.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

@@ -9,7 +9,7 @@
 #include <array>
 
 #include "render/primitive.hpp"
-#include "render/vec.hpp"
+#include "foundation/vec.hpp"
 
 namespace lattice {
 

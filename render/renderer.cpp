@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <thread>
 
-#include "util/error.hpp"
-#include "util/progress.hpp"
+#include "foundation/error.hpp"
+#include "foundation/progress.hpp"
 
 namespace lattice {
 

@@ -18,8 +18,8 @@
 #include <span>
 #include <vector>
 
-#include "io/png.hpp"
-#include "pipeline/scanline.hpp"
+#include "foundation/rgb_image.hpp"
+#include "foundation/scanline.hpp"
 #include "render/camera.hpp"
 #include "render/scene.hpp"
 #include "render/shading.hpp"

@@ -34,7 +34,7 @@
 #include <fmt/format.h>
 
 #include "render/roots_fixed.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::roots_detail {
 // How many solves needed the isolation fallback since start-up; read by the

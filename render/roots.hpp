@@ -17,7 +17,7 @@
 //   roots (returns 0). NaN or infinite coefficients give 0 roots.
 #include <span>
 
-#include "render/fixed.hpp"
+#include "foundation/fixed.hpp"
 
 namespace lattice {
 

@@ -5,7 +5,7 @@
 // its limits.
 #include <span>
 
-#include "render/fixed.hpp"
+#include "foundation/fixed.hpp"
 
 namespace lattice::fixed_roots {
 

@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 #include "render/csg.hpp"
-#include "render/transform_condition.hpp"
-#include "util/error.hpp"
+#include "foundation/transform_condition.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

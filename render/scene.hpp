@@ -14,12 +14,12 @@
 #include <string>
 #include <vector>
 
-#include "render/bounds.hpp"
+#include "foundation/bounds.hpp"
 #include "render/camera.hpp"
 #include "render/light.hpp"
 #include "render/material.hpp"
 #include "render/primitive.hpp"
-#include "render/vec.hpp"
+#include "foundation/vec.hpp"
 
 namespace lattice {
 

@@ -9,8 +9,8 @@
 
 #include "render/node_types.hpp"
 #include "render/scene_text.hpp"
-#include "render/transform_condition.hpp"
-#include "util/error.hpp"
+#include "foundation/transform_condition.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 namespace {

@@ -25,7 +25,7 @@
 #include "render/light.hpp"
 #include "render/material.hpp"
 #include "render/primitive.hpp"
-#include "render/vec.hpp"
+#include "foundation/vec.hpp"
 
 namespace lattice {
 

@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 #include <limits>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

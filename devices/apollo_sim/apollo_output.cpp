@@ -1,15 +1,14 @@
 #include "devices/apollo_sim/apollo_output.hpp"
 
-#include "devices/apollo_sim/apollo_sink.hpp"
+#include "devices/apollo_sim/apollo_driver.hpp"
 #include "devices/apollo_sim/gpr_display.hpp"
-#include "io/png.hpp"
 
-namespace lattice {
+namespace lattice::apollo {
 
 ApolloScreen renderToApollo(RowSource18& source, const ApolloProfile& profile, const PipelineOptions& options) {
   GprDisplay display;
   display.init(GprDisplayMode::Borrow, profile);
-  ApolloSink sink(display);
+  ApolloDriver sink(display);
   ApolloScreen result;
   result.report = runPipeline(source, sink, options);
   result.screen = display.snapshot();
@@ -17,11 +16,4 @@ ApolloScreen renderToApollo(RowSource18& source, const ApolloProfile& profile, c
   return result;
 }
 
-PipelineReport renderToApolloPng(RowSource18& source, const ApolloProfile& profile, const PipelineOptions& options,
-                                 const std::filesystem::path& png) {
-  ApolloScreen result = renderToApollo(source, profile, options);
-  writePng(png, result.screen);
-  return result.report;
-}
-
-}  // namespace lattice
+}  // namespace lattice::apollo

@@ -2,9 +2,9 @@
 
 #include <fmt/format.h>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::apollo {
 
 ApolloProfile dn660Profile(int planes) {
   if (planes != 4 && planes != 8)
@@ -38,4 +38,4 @@ ApolloProfile apolloProfileByName(std::string_view name) {
               fmt::format("unknown Apollo model '{}': use one of {}", name, fmt::join(apolloProfileNames(), ", ")));
 }
 
-}  // namespace lattice
+}  // namespace lattice::apollo

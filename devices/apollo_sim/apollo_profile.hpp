@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-namespace lattice {
+namespace lattice::apollo {
 
 struct ApolloProfile {
   std::string name;     // "dn660", "dn660-4", "dn580"
@@ -29,4 +29,4 @@ ApolloProfile dn580Profile();
 ApolloProfile apolloProfileByName(std::string_view name);
 std::vector<std::string> apolloProfileNames();
 
-}  // namespace lattice
+}  // namespace lattice::apollo

@@ -4,9 +4,9 @@
 
 #include <algorithm>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::apollo {
 namespace {
 
 [[noreturn]] void misuse(const std::string& message) {
@@ -32,8 +32,12 @@ void GprDisplay::init(GprDisplayMode mode, const ApolloProfile& profile) {
 
 GprDisplayCharacteristics GprDisplay::inqDispCharacteristics() const {
   if (!initialized_) misuse("gpr_$inq_disp_characteristics before gpr_$init");
-  return GprDisplayCharacteristics{profile_.model, profile_.width, profile_.height, profile_.planes,
-                                   profile_.gunBits, profile_.colorMapEntries()};
+  return characteristicsOf(profile_);
+}
+
+GprDisplayCharacteristics characteristicsOf(const ApolloProfile& profile) {
+  return GprDisplayCharacteristics{profile.model, profile.width, profile.height, profile.planes, profile.gunBits,
+                                   profile.colorMapEntries()};
 }
 
 void GprDisplay::acquireDisplay() {
@@ -119,4 +123,4 @@ IndexedImage GprDisplay::snapshot() const {
   return image;
 }
 
-}  // namespace lattice
+}  // namespace lattice::apollo

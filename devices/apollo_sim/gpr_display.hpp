@@ -12,40 +12,28 @@
 #include <vector>
 
 #include "devices/apollo_sim/apollo_profile.hpp"
-#include "pipeline/indexed_image.hpp"
+#include "devices/apollo_sim/gpr_calls.hpp"
+#include "foundation/indexed_image.hpp"
 
-namespace lattice {
+namespace lattice::apollo {
 
 // gpr_$display_mode_t. The simulator draws into the same framebuffer in every
 // mode; the mode only decides whether acquire/release is required (borrow and
 // direct share the screen with the window manager, frame and no_display do not).
 enum class GprDisplayMode { Borrow, Direct, Frame, NoDisplay };
 
-struct GprDisplayCharacteristics {  // the fields of gpr_$disp_char_t we model
-  std::string model;
-  int xVisibleSize = 0;
-  int yVisibleSize = 0;
-  int nPlanes = 0;
-  int lutWidthPerPrimary = 0;  // bits per gun in the colour map
-  int colorMapEntries = 0;
-};
-
-struct GprWindow {  // gpr_$window_t: origin and size in pixels
-  int x = 0, y = 0, width = 0, height = 0;
-};
-
-class GprDisplay {
+class GprDisplay final : public GprCalls {
  public:
   void init(GprDisplayMode mode, const ApolloProfile& profile);
-  GprDisplayCharacteristics inqDispCharacteristics() const;
-  void acquireDisplay();
-  void releaseDisplay();
+  GprDisplayCharacteristics inqDispCharacteristics() const override;
+  void acquireDisplay() override;
+  void releaseDisplay() override;
   // Entries start .. start+values.size()-1 take the packed 0xRRGGBB values.
-  void setColorMap(int start, std::span<const std::uint32_t> values);
+  void setColorMap(int start, std::span<const std::uint32_t> values) override;
   // A window of pixel values, row-major; each value keeps its low `planes`
   // bits, as the bit planes would. The window must lie inside the screen.
-  void writePixels(std::span<const std::uint32_t> values, const GprWindow& window);
-  void clear(std::uint32_t index);
+  void writePixels(std::span<const std::uint32_t> values, const GprWindow& window) override;
+  void clear(std::uint32_t index) override;
   void terminate();
 
   bool initialized() const { return initialized_; }
@@ -67,9 +55,12 @@ class GprDisplay {
   std::vector<std::uint32_t> colorMap_;
 };
 
+// What gpr_$inq_disp_characteristics reports for a display of this profile.
+GprDisplayCharacteristics characteristicsOf(const ApolloProfile& profile);
+
 constexpr std::uint32_t packRgb(Rgb8 c) { return std::uint32_t{c.r} << 16 | std::uint32_t{c.g} << 8 | c.b; }
 constexpr Rgb8 unpackRgb(std::uint32_t v) {
   return Rgb8{static_cast<std::uint8_t>(v >> 16), static_cast<std::uint8_t>(v >> 8), static_cast<std::uint8_t>(v)};
 }
 
-}  // namespace lattice
+}  // namespace lattice::apollo

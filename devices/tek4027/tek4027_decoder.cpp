@@ -1,10 +1,11 @@
 #include "devices/tek4027/tek4027_decoder.hpp"
 
+#include "devices/canvas.hpp"
+#include "devices/work_budget.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
-
-#include "devices/work_budget.hpp"
 
 namespace lattice {
 
@@ -29,13 +30,6 @@ bool isTerminator(std::uint8_t b) { return b == '\r' || b == ';'; }
 // terminators, NUL/DEL padding and XON/XOFF flow control.
 bool isFiller(std::uint8_t b) {
   return isSeparator(b) || isTerminator(b) || b == 0 || b == 0x7F || b == 0x11 || b == 0x13;
-}
-
-// Division rounding towards minus infinity, for either sign (C++ truncates).
-long floorDiv(long a, long b) {
-  long q = a / b;
-  if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
-  return q;
 }
 
 }  // namespace
@@ -324,35 +318,8 @@ void Tek4027Decoder::plot(long x, long y) {
 }
 
 void Tek4027Decoder::line(long x0, long y0, long x1, long y1) {
-  // DDA with round-half-up: point i of n is (x0 + round(i*dx/n), ...). Exact
-  // for the horizontal and vertical vectors the driver sends. Only the steps
-  // that can land on the screen are visited, so a vector 130000 pixels long
-  // costs no more than one across the screen.
-  const long dx = x1 - x0, dy = y1 - y0;
-  const long n = std::max(std::labs(dx), std::labs(dy));
-  if (n == 0) {
-    plot(x0, y0);
-    return;
-  }
-  auto at = [&](long i, long origin, long delta) { return origin + floorDiv(2 * i * delta + n, 2 * n); };
-  // Range of i where a coordinate lies in [lo, hi], widened by one step.
-  long iLo = 0, iHi = n;
-  auto restrict = [&](long origin, long delta, long lo, long hi) {
-    if (delta == 0) {
-      if (origin < lo || origin > hi) iHi = -1;
-      return;
-    }
-    // origin + i*delta/n in [lo-1, hi+1]
-    long a = floorDiv((lo - 1 - origin) * n, delta);
-    long b = floorDiv((hi + 1 - origin) * n, delta);
-    if (a > b) std::swap(a, b);
-    iLo = std::max(iLo, a - 1);
-    iHi = std::min(iHi, b + 1);
-  };
-  restrict(x0, dx, 0, profile_.width - 1);
-  restrict(y0, dy, 0, profile_.height - 1);
-  if (iHi < iLo || !chargePixelWork(report_, static_cast<std::uint64_t>(iHi - iLo + 1))) return;
-  for (long i = iLo; i <= iHi; ++i) plot(at(i, x0, dx), at(i, y0, dy));
+  if (!chargePixelWork(report_, devices::lineWork(image_, x0, y0, x1, y1))) return;
+  devices::drawLine(image_, x0, y0, x1, y1, static_cast<PaletteIndex>(pot_));
 }
 
 }  // namespace lattice

@@ -13,8 +13,8 @@
 
 #include "devices/tek4027/tek4027_encoder.hpp"
 #include "devices/tek4027/tek4027_profile.hpp"
-#include "io/byte_sink.hpp"
-#include "pipeline/scanline.hpp"
+#include "foundation/byte_sink.hpp"
+#include "foundation/scanline.hpp"
 
 namespace lattice {
 

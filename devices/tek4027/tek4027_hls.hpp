@@ -10,7 +10,7 @@
 // HLS -> RGB (the emulator, and what the terminal would show) rounds each gun
 // to the nearest of 0..255. The round trip is therefore not exact; the bound
 // is measured in tests/devices/tek4027/hls_test.cpp and given in docs/tek4027.md.
-#include "pipeline/scanline.hpp"
+#include "foundation/scanline.hpp"
 
 namespace lattice {
 

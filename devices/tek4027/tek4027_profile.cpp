@@ -4,8 +4,8 @@
 
 #include <cctype>
 
-#include "util/error.hpp"
-#include "util/key_value.hpp"
+#include "foundation/error.hpp"
+#include "foundation/key_value.hpp"
 
 namespace lattice {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "devices/tek4125/tek_canvas.hpp"
+#include "devices/canvas.hpp"
 #include "devices/work_budget.hpp"
 
 namespace lattice {
@@ -315,7 +315,7 @@ int Tek4100Decoder::pixelX(int x) const { return x * profile_.width / 4096; }
 int Tek4100Decoder::pixelY(int y) const { return y * profile_.width / 4096; }
 
 void Tek4100Decoder::plot(int px, int py, int index) {
-  PaletteIndex* p = tek::pixelAt(screen_, px, py);
+  PaletteIndex* p = devices::pixelAt(screen_, px, py);
   if (p == nullptr) return;
   const int v = index & mask_;
   *p = static_cast<PaletteIndex>(alu_ == 7 ? (*p ^ v) : v);
@@ -324,9 +324,8 @@ void Tek4100Decoder::plot(int px, int py, int index) {
 // Vectors overwrite: the ALU mode belongs to pixel operations.
 void Tek4100Decoder::line(int x0, int y0, int x1, int y1, int index) {
   const int px0 = pixelX(x0), py0 = pixelY(y0), px1 = pixelX(x1), py1 = pixelY(y1);
-  const auto steps = static_cast<std::uint64_t>(std::max(std::abs(px1 - px0), std::abs(py1 - py0))) + 1;
-  if (!chargePixelWork(report_, steps)) return;
-  tek::drawLine(screen_, px0, py0, px1, py1, static_cast<PaletteIndex>(index & mask_));
+  if (!chargePixelWork(report_, devices::lineWork(screen_, px0, py0, px1, py1))) return;
+  devices::drawLine(screen_, px0, py0, px1, py1, static_cast<PaletteIndex>(index & mask_));
 }
 
 // Patterns above 0 are drawn solid in the line index (no pattern bitmaps
@@ -338,8 +337,8 @@ void Tek4100Decoder::fillPanel() {
   const double scale = profile_.width / 4096.0;
   std::vector<double> points(panel_.size());
   for (std::size_t i = 0; i < panel_.size(); ++i) points[i] = panel_[i] * scale;
-  if (chargePixelWork(report_, tek::fillPolygonWork(screen_, points)))
-    tek::fillPolygon(screen_, points, static_cast<PaletteIndex>(index & mask_));
+  if (chargePixelWork(report_, devices::fillPolygonWork(screen_, points)))
+    devices::fillPolygon(screen_, points, static_cast<PaletteIndex>(index & mask_));
   if (panelBoundary_ && n >= 2)
     for (std::size_t i = 0, j = n - 1; i < n; j = i++)
       line(panel_[2 * j], panel_[2 * j + 1], panel_[2 * i], panel_[2 * i + 1], lineIndex_);
@@ -424,7 +423,7 @@ void Tek4100Decoder::execute() {
       if (!chargePixelWork(report_, width * static_cast<std::size_t>(y1 - y0 + 1))) break;
       const auto value = static_cast<PaletteIndex>(intAt(0, 0) & mask_);
       for (int y = y0; y <= y1; ++y) {
-        PaletteIndex* row = tek::pixelAt(screen_, x0, y);
+        PaletteIndex* row = devices::pixelAt(screen_, x0, y);
         if (alu_ == 7)
           for (std::size_t i = 0; i < width; ++i) row[i] = static_cast<PaletteIndex>(row[i] ^ value);
         else

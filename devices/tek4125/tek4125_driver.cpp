@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice {
 

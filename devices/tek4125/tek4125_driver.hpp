@@ -20,8 +20,8 @@
 
 #include "devices/tek4125/tek4125_profile.hpp"
 #include "devices/tek4125/tek_encoding.hpp"
-#include "io/byte_sink.hpp"
-#include "pipeline/scanline.hpp"
+#include "foundation/byte_sink.hpp"
+#include "foundation/scanline.hpp"
 
 namespace lattice {
 

@@ -2,8 +2,8 @@
 
 #include <fmt/format.h>
 
-#include "util/error.hpp"
-#include "util/key_value.hpp"
+#include "foundation/error.hpp"
+#include "foundation/key_value.hpp"
 
 namespace lattice {
 

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "io/line_timing.hpp"
+#include "foundation/line_timing.hpp"
 
 namespace lattice {
 

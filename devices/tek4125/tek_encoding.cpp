@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::tek {
 

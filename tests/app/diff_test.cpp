@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <string>
 
-#include "io/atomic_file.hpp"
+#include "foundation/atomic_file.hpp"
 #include "io/image_metrics.hpp"
 #include "io/png.hpp"
 #include "tests/support/temp_dir.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace {
 

@@ -4,7 +4,7 @@
 
 #include "app/memory_plan.hpp"
 #include "lht/table.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using lattice::PipelineMode;
 using lattice::app::kUntouchedAllowance;

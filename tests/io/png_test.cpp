@@ -11,12 +11,12 @@
 #include <filesystem>
 #include <utility>
 
-#include "io/atomic_file.hpp"
+#include "foundation/atomic_file.hpp"
 #include "io/image_metrics.hpp"
 #include "io/png.hpp"
 #include "tests/support/run_lattice.hpp"
 #include "tests/support/temp_dir.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 namespace fs = std::filesystem;

@@ -3,7 +3,7 @@
 
 #include "fake_sysfs.hpp"
 #include "io/port_discovery.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 using lattice::testing::FakeSysfs;

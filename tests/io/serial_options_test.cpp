@@ -3,7 +3,7 @@
 
 #include "io/serial_options.hpp"
 #include "io/stream_sender.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 

@@ -11,7 +11,7 @@
 #include "io/pty.hpp"
 #include "io/serial_port.hpp"
 #include "io/serial_termios2.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 

@@ -25,14 +25,14 @@
 #include <thread>
 #include <vector>
 
-#include "app/stream_devices.hpp"
-#include "io/atomic_file.hpp"
+#include "devices/device_table.hpp"
+#include "foundation/atomic_file.hpp"
 #include "io/png.hpp"
 #include "io/pty.hpp"
 #include "tests/support/run_lattice.hpp"
 #include "io/serial_options.hpp"
 #include "io/serial_sink.hpp"
-#include "pipeline/run_pipeline.hpp"
+#include "quantize/run_pipeline.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_loader.hpp"
 #include "tests/support/golden.hpp"
@@ -46,7 +46,7 @@ namespace {
 // than hanging it.
 class PtyTerminal {
  public:
-  PtyTerminal(PtyPair& pty, const app::StreamDevice& device) : pty_(pty), decoder_(device.makeDecoder()) {
+  PtyTerminal(PtyPair& pty, const devices::Device& device) : pty_(pty), decoder_(device.makeEmulator()) {
     ::fcntl(pty_.masterFd(), F_SETFL, ::fcntl(pty_.masterFd(), F_GETFL) | O_NONBLOCK);
     reader_ = std::thread([this] { readLoop(); });
   }
@@ -113,9 +113,9 @@ std::filesystem::path tempPath(const std::string& name) {
   return std::filesystem::temp_directory_path() / fmt::format("lattice-serial-render-{}-{}", ::getpid(), name);
 }
 
-std::vector<std::uint8_t> decodeToPngBytes(const app::StreamDevice& device, std::span<const std::uint8_t> stream,
+std::vector<std::uint8_t> decodeToPngBytes(const devices::Device& device, std::span<const std::uint8_t> stream,
                                            const std::filesystem::path& png) {
-  auto decoder = device.makeDecoder();
+  auto decoder = device.makeEmulator();
   decoder->feed(stream);
   decoder->finish();
   writePng(png, toRgbImage(decoder->image()));
@@ -125,7 +125,7 @@ std::vector<std::uint8_t> decodeToPngBytes(const app::StreamDevice& device, std:
 }  // namespace
 
 TEST_CASE("serial render: a scene through a pty equals the file path", "[serial]") {
-  const app::StreamDevice device = app::streamDevice("tek4125");
+  const devices::Device device = devices::makeDevice("tek4125");
   const SceneDesc scene = loadScene(testing::sourcePath("scenes/sphere-hole.toml"));
   RenderSettings settings;
   settings.width = 64;
@@ -191,7 +191,7 @@ TEST_CASE("serial render: lattice render --port into a pty equals --stream", "[s
   // binary is a broken build, not a reason to skip.
   INFO("binary " << lattice::testing::latticeBinary().string() << " (build the `lattice` target, or set LATTICE_EXE)");
   REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
-  const app::StreamDevice device = app::streamDevice("tek4125");
+  const devices::Device device = devices::makeDevice("tek4125");
   const std::string scene = testing::sourcePath("scenes/torus-floor.toml").string();
   const std::string common = fmt::format("render '{}' --device tek4125 --width 80 --height 60", scene);
 

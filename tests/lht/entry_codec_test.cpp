@@ -14,7 +14,7 @@
 #include "lht/entry_codec.hpp"
 #include "lht/lattice_scene.hpp"
 #include "lht/octahedral.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;

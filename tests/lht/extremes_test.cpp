@@ -27,7 +27,7 @@
 #include "render/shapes.hpp"
 #include "tests/lht/raster_support.hpp"
 #include "tests/render/extremes_support.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;

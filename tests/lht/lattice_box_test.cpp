@@ -4,7 +4,7 @@
 #include <tuple>
 
 #include "lht/lattice_box.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;

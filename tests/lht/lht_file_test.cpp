@@ -6,12 +6,12 @@
 #include <filesystem>
 #include <string>
 
-#include "io/atomic_file.hpp"
+#include "foundation/atomic_file.hpp"
 #include "lht/lattice_object.hpp"
 #include "lht/lht_file.hpp"
 #include "tests/support/temp_dir.hpp"
-#include "util/error.hpp"
-#include "util/resident_memory.hpp"
+#include "foundation/error.hpp"
+#include "foundation/resident_memory.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;

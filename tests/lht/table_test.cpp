@@ -7,7 +7,7 @@
 
 #include "lht/lattice_object.hpp"
 #include "lht/table.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;

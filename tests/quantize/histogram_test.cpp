@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "quantize/histogram.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 

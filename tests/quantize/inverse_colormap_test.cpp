@@ -6,7 +6,7 @@
 #include "quantize/inverse_colormap.hpp"
 #include "quantize/median_cut.hpp"
 #include "tests/quantize/test_sources.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 using lattice::testing::hash2;

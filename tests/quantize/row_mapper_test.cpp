@@ -4,7 +4,7 @@
 
 #include "quantize/inverse_colormap.hpp"
 #include "quantize/row_mapper.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 

@@ -6,7 +6,7 @@
 #include <functional>
 #include <span>
 
-#include "pipeline/scanline.hpp"
+#include "foundation/scanline.hpp"
 
 namespace lattice::testing {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "render/camera.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 

@@ -9,7 +9,7 @@
 #include "render/csg.hpp"
 #include "render/shapes.hpp"
 #include "render/span_ops.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 using namespace lattice::testing;

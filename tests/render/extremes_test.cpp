@@ -22,11 +22,11 @@
 #include "render/renderer.hpp"
 #include "render/scene_loader.hpp"
 #include "render/shapes.hpp"
-#include "render/transform_condition.hpp"
+#include "foundation/transform_condition.hpp"
 #include "tests/render/extremes_support.hpp"
 #include "tests/render/fixed_support.hpp"
 #include "tests/render/scene_test_util.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 using namespace lattice::testing;

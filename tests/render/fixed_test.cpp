@@ -4,7 +4,7 @@
 #include <limits>
 #include <random>
 
-#include "render/fixed.hpp"
+#include "foundation/fixed.hpp"
 
 using lattice::Fixed32;
 using Lim = std::numeric_limits<Fixed32>;

@@ -8,7 +8,7 @@
 #include "geometry_checks.hpp"
 #include "render/quartic.hpp"
 #include "render/shapes.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 using namespace lattice::testing;

@@ -8,7 +8,7 @@
 #include "render/renderer.hpp"
 #include "render/scene_loader.hpp"
 #include "tests/support/golden.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 

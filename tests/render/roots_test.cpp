@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "render/roots.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::roots_detail {
 std::uint64_t fallbackCount() noexcept;  // defined in render/roots.cpp (diagnostic)

@@ -4,7 +4,7 @@
 
 #include "render/scene_loader.hpp"
 #include "tests/render/scene_test_util.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 using lattice::testing::TempScene;

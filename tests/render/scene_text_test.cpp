@@ -8,7 +8,7 @@
 #include "render/scene_loader.hpp"
 #include "render/scene_text.hpp"
 #include "tests/support/temp_dir.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 

@@ -4,9 +4,10 @@
 
 #include "devices/apollo_sim/apollo_profile.hpp"
 #include "devices/apollo_sim/gpr_display.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::apollo;
 
 TEST_CASE("profiles have the GPR sizes of the DN660 and DN580") {
   ApolloProfile dn660 = dn660Profile(8);

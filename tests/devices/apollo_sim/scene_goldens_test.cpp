@@ -1,5 +1,5 @@
 // The example scenes through the simulated Apollo display: renderer ->
-// pipeline -> ApolloSink -> GPR framebuffer. The picture in the middle of the
+// pipeline -> ApolloDriver -> GPR framebuffer. The picture in the middle of the
 // screen must be the quantized image exactly (the colour map takes 0xRRGGBB,
 // 8 bits a gun, so no rounding), the rest of the screen one background index,
 // and the picture is kept as a golden (docs/testing.md). Pipeline modes that
@@ -13,14 +13,15 @@
 #include "devices/apollo_sim/apollo_profile.hpp"
 #include "io/png.hpp"
 #include "lht/lattice_scene.hpp"
-#include "pipeline/indexed_image.hpp"
-#include "pipeline/run_pipeline.hpp"
+#include "foundation/indexed_image.hpp"
+#include "quantize/run_pipeline.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_loader.hpp"
 #include "tests/support/example_scene.hpp"
 #include "tests/support/golden.hpp"
 
 using namespace lattice;
+using namespace lattice::apollo;
 
 namespace {
 
@@ -65,7 +66,7 @@ void runSceneCase(const SceneCase& c) {
   REQUIRE(screen.width == profile.width);
   REQUIRE(screen.height == profile.height);
 
-  // Centred, odd leftovers to the right and bottom (ApolloSink::begin).
+  // Centred, odd leftovers to the right and bottom (ApolloDriver::begin).
   const int left = (profile.width - c.width) / 2, top = (profile.height - c.height) / 2;
   const PaletteIndex background = screen.at(0, 0);
   RgbImage picture(c.width, c.height);

@@ -7,7 +7,7 @@
 
 #include "devices/tek4027/tek4027_decoder.hpp"
 #include "devices/tek4027/tek4027_driver.hpp"
-#include "io/byte_sink.hpp"
+#include "foundation/byte_sink.hpp"
 #include "io/png.hpp"
 #include "tests/devices/tek4027/synthetic_images.hpp"
 #include "tests/support/golden.hpp"

@@ -7,8 +7,8 @@
 
 #include "devices/tek4027/tek4027_decoder.hpp"
 #include "devices/tek4027/tek4027_driver.hpp"
-#include "io/byte_sink.hpp"
-#include "util/error.hpp"
+#include "foundation/byte_sink.hpp"
+#include "foundation/error.hpp"
 #include "tests/devices/tek4027/synthetic_images.hpp"
 
 using namespace lattice;

@@ -13,14 +13,14 @@
 #include <string>
 #include <vector>
 
-#include "app/stream_devices.hpp"
+#include "devices/device_table.hpp"
 #include "devices/tek4027/tek4027_hls.hpp"
 #include "devices/tek4027/tek4027_profile.hpp"
-#include "io/byte_sink.hpp"
+#include "foundation/byte_sink.hpp"
 #include "io/png.hpp"
 #include "lht/lattice_scene.hpp"
-#include "pipeline/indexed_image.hpp"
-#include "pipeline/run_pipeline.hpp"
+#include "foundation/indexed_image.hpp"
+#include "quantize/run_pipeline.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_loader.hpp"
 #include "tests/support/example_scene.hpp"
@@ -48,7 +48,7 @@ void runSceneCase(const SceneCase& c) {
   const SceneDesc scene = testing::loadExampleScene(c.scene);
   Renderer<double> renderer = testing::makeTestRenderer(scene, c.width, c.height);
 
-  const app::StreamDevice device = app::streamDevice("tek4027");
+  const devices::Device device = devices::makeDevice("tek4027");
   const Tek4027Profile profile;  // the device table's defaults (no --set)
 
   PipelineOptions options;
@@ -68,7 +68,7 @@ void runSceneCase(const SceneCase& c) {
   REQUIRE(driver->stats().bytes == stream.data().size());
 
   // One byte at a time: the 4027 parser must not depend on the chunking.
-  auto decoder = device.makeDecoder();
+  auto decoder = device.makeEmulator();
   for (std::uint8_t b : stream.data()) decoder->feed(std::span<const std::uint8_t>(&b, 1));
   decoder->finish();
   CHECK(decoder->report().malformed == 0);

@@ -5,7 +5,7 @@
 #include <random>
 #include <vector>
 
-#include "pipeline/indexed_image.hpp"
+#include "foundation/indexed_image.hpp"
 
 namespace lattice::testing {
 

@@ -6,7 +6,7 @@
 
 #include "devices/tek4027/tek4027_decoder.hpp"
 #include "devices/work_budget.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 

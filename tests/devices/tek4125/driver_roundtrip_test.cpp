@@ -5,7 +5,7 @@
 #include <random>
 
 #include "tests/devices/tek4125/tek_test_support.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 using namespace lattice::tektest;

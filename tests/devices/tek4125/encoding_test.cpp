@@ -7,7 +7,7 @@
 
 #include "devices/tek4125/tek_encoding.hpp"
 #include "devices/tek4125/tek_params.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 using namespace lattice::tek;

@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "devices/tek4125/tek4125_profile.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 

@@ -12,14 +12,14 @@
 #include <string>
 #include <vector>
 
-#include "app/stream_devices.hpp"
+#include "devices/device_table.hpp"
 #include "devices/tek4125/tek4125_driver.hpp"
 #include "devices/tek4125/tek4125_profile.hpp"
-#include "io/byte_sink.hpp"
+#include "foundation/byte_sink.hpp"
 #include "io/png.hpp"
 #include "lht/lattice_scene.hpp"
-#include "pipeline/indexed_image.hpp"
-#include "pipeline/run_pipeline.hpp"
+#include "foundation/indexed_image.hpp"
+#include "quantize/run_pipeline.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_loader.hpp"
 #include "tests/support/example_scene.hpp"
@@ -62,7 +62,7 @@ void runSceneCase(const SceneCase& c) {
   Renderer<double> renderer = testing::makeTestRenderer(scene, c.width, c.height);
 
   const std::vector<std::string> overrides{fmt::format("planes={}", c.planes)};
-  const app::StreamDevice device = app::streamDevice("tek4125", overrides);
+  const devices::Device device = devices::makeDevice("tek4125", overrides);
   Tek4125Profile profile;
   applyOverrides(profile, overrides);
 
@@ -84,7 +84,7 @@ void runSceneCase(const SceneCase& c) {
   runPipeline(renderer, driver->sink(), options);
   REQUIRE(driver->stats().bytes == stream.data().size());
 
-  auto decoder = device.makeDecoder();
+  auto decoder = device.makeEmulator();
   feedChunked(*decoder, stream.data());
   CHECK(decoder->report().malformed == 0);
   CHECK(decoder->report().unknownCommands == 0);

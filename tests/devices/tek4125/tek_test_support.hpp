@@ -8,8 +8,8 @@
 
 #include "devices/tek4125/tek4100_decoder.hpp"
 #include "devices/tek4125/tek4125_driver.hpp"
-#include "io/byte_sink.hpp"
-#include "pipeline/indexed_image.hpp"
+#include "foundation/byte_sink.hpp"
+#include "foundation/indexed_image.hpp"
 
 namespace lattice::tektest {
 

@@ -9,7 +9,7 @@
 #include "devices/tek4125/tek4100_decoder.hpp"
 #include "devices/tek4125/tek_encoding.hpp"
 #include "devices/work_budget.hpp"
-#include "util/error.hpp"
+#include "foundation/error.hpp"
 
 using namespace lattice;
 using namespace lattice::tek;

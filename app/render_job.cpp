@@ -1,0 +1,204 @@
+#include "app/render_job.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <memory>
+
+#include "app/render_budget.hpp"
+#include "devices/device_table.hpp"
+#include "foundation/atomic_file.hpp"
+#include "foundation/error.hpp"
+#include "foundation/progress.hpp"
+#include "io/png.hpp"
+#include "io/serial_sink.hpp"
+#include "io/stdout_sink.hpp"
+#include "io/tee_sink.hpp"
+#include "lht/lattice_scene.hpp"
+#include "render/renderer.hpp"
+
+namespace lattice::app {
+namespace {
+
+void requireDirectoryFor(const std::string& path, const char* flag) {
+  const std::filesystem::path parent = std::filesystem::absolute(path).parent_path();
+  std::error_code ec;
+  if (!std::filesystem::is_directory(parent, ec))
+    throw Error(ErrorKind::Output, fmt::format("{} {}: the directory {} does not exist; create it or choose another "
+                                               "path",
+                                               flag, path, parent.string()));
+}
+
+// The picture size: what the job asks for, else the scene's own, shrunk
+// (keeping its shape) to fit the device's screen.
+RenderSettings renderSettings(const RenderJob& job, const SceneDesc& scene, int deviceWidth, int deviceHeight) {
+  RenderSettings s;
+  s.threads = job.threads;
+  s.build.fullRayTrace = job.fullRayTrace;
+  s.build.latticeShadows = job.latticeShadows;
+  s.width = job.width > 0 ? job.width : scene.options.width;
+  s.height = job.height > 0 ? job.height : scene.options.height;
+  if (deviceWidth > 0 && (s.width > deviceWidth || s.height > deviceHeight)) {
+    if (job.width > 0 || job.height > 0)
+      throw Error(ErrorKind::Usage,
+                  fmt::format("{}x{} does not fit the device's {}x{} drawable area; choose a smaller --width/--height "
+                              "or change the profile with --set width=... --set height=...",
+                              s.width, s.height, deviceWidth, deviceHeight));
+    const double scale = std::min(double(deviceWidth) / s.width, double(deviceHeight) / s.height);
+    const int w = std::max(1, int(s.width * scale)), h = std::max(1, int(s.height * scale));
+    fmt::print(stderr, "lattice render: the scene's {}x{} is larger than the device's {}x{}: rendering {}x{}\n",
+               s.width, s.height, deviceWidth, deviceHeight, w, h);
+    s.width = w;
+    s.height = h;
+  }
+  return s;
+}
+
+template <typename T>
+void renderTruecolour(Renderer<T>& renderer, const RenderJob& job) {
+  RgbImage image;
+  {
+    Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
+    progress.setEnabled(progress.enabled() && !job.quiet);
+    image = renderImage(renderer, &progress);
+    progress.finish();
+  }
+  writePng(job.picture, image);
+}
+
+// The transport the job names, and where it goes in words; none when only
+// the emulator's picture is wanted.
+std::unique_ptr<ByteSink> openTransport(const RenderJob& job, const devices::Device& device, std::string& where) {
+  if (job.port) {
+    SerialOptions serial = *job.port;
+    if (job.baudFromProfile && device.line) serial.baud = device.line->baud;
+    auto sink = openSerialSink(serial);
+    where = serial.port;
+    return sink;
+  }
+  if (job.stream == "-") {
+    where = "standard output";
+    return std::make_unique<StdoutSink>();
+  }
+  if (!job.stream.empty()) {
+    where = job.stream;
+    return std::make_unique<AtomicFile>(job.stream);
+  }
+  where = "the emulator only";
+  return nullptr;
+}
+
+// Renders into the device's driver row by row; the bytes go to the transport
+// and, when a picture is asked for, through the emulator on their way.
+template <typename T>
+devices::DriverStats renderToDevice(Renderer<T>& renderer, const RenderJob& job, const devices::Device& device,
+                                    const PipelineOptions& pipeline, std::string& where) {
+  std::unique_ptr<ByteSink> transport = openTransport(job, device, where);
+  std::unique_ptr<StreamDecoder> emulator;
+  if (!job.picture.empty()) emulator = device.makeEmulator();
+  TeeSink tee(transport.get(), [&emulator](std::span<const std::uint8_t> bytes) {
+    if (emulator) emulator->feed(bytes);
+  });
+  auto driver = device.makeDriver(tee);
+  runPipeline(renderer, driver->sink(), pipeline);
+  tee.close();  // renames the stream file into place, or drains the serial line
+  const devices::DriverStats stats = driver->stats();
+  if (device.line)
+    fmt::print(stderr, "lattice render: {} stream {} bytes -> {}; {:.1f} s on a {} at {} baud ({})\n", device.name,
+               stats.bytes, where, stats.seconds, device.title, device.line->baud, stats.detail);
+  else
+    fmt::print(stderr, "lattice render: {} stream {} bytes -> {} ({}, {})\n", device.name, stats.bytes, where,
+               device.title, stats.detail);
+  if (emulator) {
+    emulator->finish();
+    writePng(job.picture, emulator->image());
+    const DecodeReport& report = emulator->report();
+    if (report.unknownCommands + report.malformed > 0)
+      throw Error(ErrorKind::Internal,
+                  fmt::format("the emulator found {} unknown and {} malformed commands in our own stream:\n{}",
+                              report.unknownCommands, report.malformed, report.summary()));
+  }
+  return stats;
+}
+
+template <typename T>
+RenderResult renderWith(const lht::SceneWithLattices& loaded, const RenderJob& job) {
+  const auto start = std::chrono::steady_clock::now();
+  PipelineOptions pipeline = job.pipeline;
+  std::optional<devices::Device> device;
+  if (!job.device.empty()) device = devices::makeDevice(job.device, job.settings);
+  const RenderSettings settings =
+      renderSettings(job, loaded.scene, device ? device->width : 0, device ? device->height : 0);
+  std::optional<MemoryPlanRequest> budget;
+  if (job.memoryBudget) {
+    budget = renderBudgetRequest(*job.memoryBudget, settings.width, settings.height, pipeline, job.modeChosenByUser,
+                                 device ? &*device : nullptr, !job.picture.empty());
+    packLatticesWithin(*budget, loaded.lattices);
+  }
+  Renderer<T> renderer(loaded.scene, settings);
+  if (budget) pipeline.mode = planBuiltRender(*budget).mode;
+
+  RenderResult result;
+  if (device)
+    result.stream = renderToDevice(renderer, job, *device, pipeline, result.destination);
+  else
+    renderTruecolour(renderer, job);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.width = renderer.width();
+  result.height = renderer.height();
+  result.rays = renderer.raysTraced();
+  result.threads = renderer.threads();
+  if (budget) checkPeakAgainst(budget->budget);
+  return result;
+}
+
+}  // namespace
+
+void checkRenderJob(const RenderJob& job) {
+  if (job.device.empty()) {
+    if (job.picture.empty()) throw Error(ErrorKind::Usage, "a truecolour render writes a PNG: give -o OUT.png");
+    if (!job.stream.empty() || job.port)
+      throw Error(ErrorKind::Usage,
+                  fmt::format("--stream and --port take a device's command stream; choose one with --device ({})",
+                              fmt::join(devices::deviceNames(), ", ")));
+    if (!job.settings.empty())
+      throw Error(ErrorKind::Usage, "--set overrides a device profile; use it with --device");
+  } else {
+    devices::deviceEntry(job.device);  // an unknown name fails now
+    if (job.picture.empty() && job.stream.empty() && !job.port)
+      throw Error(ErrorKind::Usage,
+                  fmt::format("--device {} needs somewhere to send the stream: --stream FILE, --stream -, --port "
+                              "PORT, and/or -o OUT.png for the emulated picture",
+                              job.device));
+    if (!job.stream.empty() && job.port)
+      throw Error(ErrorKind::Usage, "give either --stream or --port, not both (record a stream with --stream, then "
+                                    "`lattice send` it)");
+  }
+  if (!job.picture.empty()) requireDirectoryFor(job.picture, "-o");
+  if (!job.stream.empty() && job.stream != "-") requireDirectoryFor(job.stream, "--stream");
+}
+
+RenderResult renderScene(const RenderJob& job) {
+  checkRenderJob(job);
+  // Scenes may hold [[lattices]]; their tables are built when the renderer
+  // is, so the settings below are in time.
+  lht::SceneWithLattices loaded = lht::loadSceneWithLattices(job.scene);
+  for (const lht::LatticeDefinitionPtr& lattice : loaded.lattices) {
+    if (job.precision) lattice->precision = *job.precision;
+    lattice->rasterThreads = static_cast<unsigned>(job.threads);  // one thread means one thread throughout
+  }
+  switch (job.arithmetic) {
+    case Arithmetic::Float:
+      return renderWith<float>(loaded, job);
+    case Arithmetic::Fixed:
+      return renderWith<Fixed32>(loaded, job);
+    case Arithmetic::Double:
+      break;
+  }
+  return renderWith<double>(loaded, job);
+}
+
+}  // namespace lattice::app

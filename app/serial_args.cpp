@@ -1,0 +1,37 @@
+#include "app/serial_args.hpp"
+
+#include <string>
+
+namespace lattice::app {
+
+void addSerialOptions(CLI::App* cmd, SerialOptions& options, bool portRequired) {
+  auto* port = cmd->add_option("--port", options.port,
+                               "Serial port: a device such as /dev/ttyUSB0, or `auto` for the only USB-serial "
+                               "adapter (`lattice ports` lists them)");
+  if (portRequired) port->required();
+  cmd->add_option("--baud", options.baud, "Line speed; match the terminal's setup (9600, 19200, 38400...)")
+      ->capture_default_str()
+      ->check(CLI::Range(50, 4000000));
+  cmd->add_option_function<std::string>(
+         "--flow", [&options](const std::string& text) { options.flow = parseFlowControl(text); },
+         "Flow control: xonxoff (DC1/DC3, the Tektronix default), rtscts (hardware) or none [xonxoff]")
+      ->check(CLI::IsMember({"xonxoff", "rtscts", "none"}));
+  cmd->add_option("--data-bits", options.dataBits, "Data bits per character: 7 or 8")
+      ->capture_default_str()
+      ->check(CLI::IsMember({7, 8}));
+  cmd->add_option_function<std::string>(
+         "--parity", [&options](const std::string& text) { options.parity = parseParity(text); },
+         "Parity: none, even or odd [none]")
+      ->check(CLI::IsMember({"none", "even", "odd"}));
+  cmd->add_option("--stop-bits", options.stopBits, "Stop bits: 1 or 2")
+      ->capture_default_str()
+      ->check(CLI::IsMember({1, 2}));
+  cmd->add_option("--stall-timeout", options.stallTimeoutSeconds,
+                  "Give up (exit 6, resumable) when flow control holds the line this many seconds")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--pace", options.pace,
+                "Limit the rate to the baud rate ourselves, for lines that do not (a pty, a network bridge)");
+}
+
+}  // namespace lattice::app

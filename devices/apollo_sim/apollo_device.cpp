@@ -1,0 +1,59 @@
+#include "devices/apollo_sim/apollo_device.hpp"
+
+#include <fmt/format.h>
+
+#include "devices/apollo_sim/apollo_driver.hpp"
+#include "devices/apollo_sim/apollo_profile.hpp"
+#include "devices/apollo_sim/gpr_journal.hpp"
+#include "foundation/error.hpp"
+#include "foundation/key_value.hpp"
+
+namespace lattice::apollo {
+namespace {
+
+// The driver draws through GPR calls that the journal turns into bytes.
+class JournalDriver final : public devices::Driver {
+ public:
+  JournalDriver(ByteSink& out, const ApolloProfile& profile) : out_(out), journal_(out, profile), driver_(journal_) {}
+  IndexedSink& sink() override { return driver_; }
+  devices::DriverStats stats() const override {
+    return {out_.bytesWritten(), 0.0, "GPR calls to the simulated display"};
+  }
+
+ private:
+  ByteSink& out_;
+  GprJournalWriter journal_;
+  ApolloDriver driver_;
+};
+
+ApolloProfile profileFrom(const std::vector<std::string>& settings) {
+  constexpr std::string_view kContext = "apollo profile", kKeys = "profile";
+  ApolloProfile profile = dn660Profile();
+  for (const std::string& setting : settings) {
+    const KeyValue kv = splitKeyValue(kContext, setting, kKeys);
+    if (kv.key != "profile") unknownSetting(kContext, kv, kKeys);
+    profile = apolloProfileByName(kv.value);
+  }
+  return profile;
+}
+
+}  // namespace
+
+devices::Device makeDevice(const std::vector<std::string>& settings) {
+  const ApolloProfile profile = profileFrom(settings);
+  devices::Device d;
+  d.name = "apollo";
+  d.title = profile.model;
+  d.width = profile.width;
+  d.height = profile.height;
+  d.makeDriver = [profile](ByteSink& out) { return std::make_unique<JournalDriver>(out, profile); };
+  d.makeEmulator = [profile] { return std::unique_ptr<StreamDecoder>(std::make_unique<GprJournalDecoder>(profile)); };
+  d.driverMemory = [](int, int) { return std::uint64_t{0}; };  // a row of pixel values at a time
+  // The display's bitmap, a byte a pixel, then the screen as RGB for the PNG.
+  d.emulatorMemory = 4 * static_cast<std::uint64_t>(profile.width) * static_cast<std::uint64_t>(profile.height);
+  d.profileText = fmt::format("profile={}\nmodel={}\nwidth={}\nheight={}\nplanes={}\n", profile.name, profile.model,
+                              profile.width, profile.height, profile.planes);
+  return d;
+}
+
+}  // namespace lattice::apollo

@@ -1,0 +1,55 @@
+#pragma once
+// What a device is to the rest of Lattice: one entry of the device table
+// (device_table.hpp), made from the device's profile. Like gnuplot's terminal
+// table (term_api.h) it has required entries every device fills and optional
+// ones a device may leave empty; like u8g2, a driver writes bytes to a
+// ByteSink and never learns whether they go to a file, a serial line, or
+// straight into the emulator.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "devices/stream_decoder.hpp"
+#include "foundation/byte_sink.hpp"
+#include "foundation/line_timing.hpp"
+#include "foundation/scanline.hpp"
+
+namespace lattice::devices {
+
+// What a driver reports once its stream is finished.
+struct DriverStats {
+  std::uint64_t bytes = 0;
+  double seconds = 0;  // the time the real device takes: line rate, or drawing rate if slower
+  std::string detail;  // device-specific, one line
+};
+
+// A device driver: quantized rows in (sink()), the device's bytes out.
+class Driver {
+ public:
+  virtual ~Driver() = default;
+  virtual IndexedSink& sink() = 0;
+  virtual DriverStats stats() const = 0;  // after sink().end()
+};
+
+struct Device {
+  // Required.
+  std::string name;   // as the CLI names it: "tek4125"
+  std::string title;  // "Tektronix 4125"
+  int width = 0;      // the screen (drawable area), pixels
+  int height = 0;
+  std::function<std::unique_ptr<Driver>(ByteSink&)> makeDriver;
+  std::function<std::unique_ptr<StreamDecoder>()> makeEmulator;
+  // Memory the driver holds for a width x height picture beyond a row, and
+  // what its emulator holds to decode a stream and save the screen as a PNG
+  // (docs/memory.md, "Calibration", measured these).
+  std::function<std::uint64_t(int width, int height)> driverMemory;
+  std::uint64_t emulatorMemory = 0;
+
+  // Optional.
+  std::optional<LineFormat> line;  // the serial line it expects; none for a workstation display
+  std::string profileText;         // its profile, one key=value per line
+};
+
+}  // namespace lattice::devices

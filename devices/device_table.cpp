@@ -1,0 +1,41 @@
+#include "devices/device_table.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "devices/apollo_sim/apollo_device.hpp"
+#include "devices/tek4027/tek4027_device.hpp"
+#include "devices/tek4125/tek4125_device.hpp"
+#include "foundation/error.hpp"
+
+namespace lattice::devices {
+namespace {
+
+const DeviceEntry kDevices[] = {
+    {"tek4125", "Tektronix 4125: a 4100-series command stream", &tek4125::makeDevice},
+    {"tek4027", "Tektronix 4027: a !-command stream, eight paint pots", &tek4027::makeDevice},
+    {"apollo", "simulated Apollo DN660/DN580: its GPR calls as a journal (--set profile=dn660|dn660-4|dn580)",
+     &apollo::makeDevice},
+};
+
+}  // namespace
+
+std::span<const DeviceEntry> deviceTable() { return kDevices; }
+
+std::vector<std::string> deviceNames() {
+  std::vector<std::string> names;
+  for (const DeviceEntry& e : kDevices) names.emplace_back(e.name);
+  return names;
+}
+
+const DeviceEntry& deviceEntry(std::string_view name) {
+  for (const DeviceEntry& e : kDevices)
+    if (e.name == name) return e;
+  throw Error(ErrorKind::Usage, fmt::format("unknown device '{}'; choose {}", name, fmt::join(deviceNames(), ", ")));
+}
+
+Device makeDevice(std::string_view name, const std::vector<std::string>& settings) {
+  return deviceEntry(name).make(settings);
+}
+
+}  // namespace lattice::devices

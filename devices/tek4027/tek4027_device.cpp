@@ -1,0 +1,54 @@
+#include "devices/tek4027/tek4027_device.hpp"
+
+#include <fmt/format.h>
+
+#include "devices/tek4027/tek4027_decoder.hpp"
+#include "devices/tek4027/tek4027_driver.hpp"
+#include "devices/tek4027/tek4027_encoder.hpp"
+
+namespace lattice::tek4027 {
+namespace {
+
+class StreamDriver final : public devices::Driver {
+ public:
+  StreamDriver(ByteSink& out, const Tek4027Profile& profile) : driver_(out, profile) {}
+  IndexedSink& sink() override { return driver_; }
+  devices::DriverStats stats() const override {
+    const Tek4027StreamStats& s = driver_.stats();
+    return {s.bytes, s.seconds(),
+            fmt::format("strategy {}, {} commands ({} colour changes, {} vector commands), line {:.0f} s, "
+                        "drawing {:.0f} s",
+                        strategyName(s.strategy), s.commands, s.colourSelects, s.vectorCommands, s.lineSeconds,
+                        s.terminalSeconds)};
+  }
+
+ private:
+  Tek4027Driver driver_;
+};
+
+std::uint64_t pixels(int w, int h) { return static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h); }
+
+}  // namespace
+
+devices::Device makeDevice(const std::vector<std::string>& settings) {
+  Tek4027Profile profile;
+  applyOverrides(profile, settings);
+  devices::Device d;
+  d.name = "tek4027";
+  d.title = "Tektronix 4027";
+  d.width = profile.width;
+  d.height = profile.height;
+  d.makeDriver = [profile](ByteSink& out) { return std::make_unique<StreamDriver>(out, profile); };
+  d.makeEmulator = [profile] { return std::unique_ptr<StreamDecoder>(std::make_unique<Tek4027Decoder>(profile)); };
+  // The driver keeps the frame and its pot map, then encodes its stream
+  // orders one after another, holding the shortest so far beside the next
+  // (strings that grow by doubling): measured up to 16.3 B a pixel of working
+  // set on the example scenes (docs/memory.md, "Calibration").
+  d.driverMemory = [](int w, int h) { return 20 * pixels(w, h); };
+  d.emulatorMemory = 3 * pixels(profile.width, profile.height);  // the screen, and its RGB copy for the PNG
+  d.line = profile.line;
+  d.profileText = describe(profile);
+  return d;
+}
+
+}  // namespace lattice::tek4027
