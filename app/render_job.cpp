@@ -70,13 +70,17 @@ void renderTruecolour(Renderer<T>& renderer, const RenderJob& job) {
 }
 
 // The transport the job names, and where it goes in words; none when only
-// the emulator's picture is wanted.
-std::unique_ptr<ByteSink> openTransport(const RenderJob& job, const devices::Device& device, std::string& where) {
+// the emulator's picture is wanted. A serial line also gives the descriptor
+// the terminal answers on (replyFd), for drivers that wait for answers.
+std::unique_ptr<ByteSink> openTransport(const RenderJob& job, const devices::Device& device, std::string& where,
+                                        int& replyFd) {
+  replyFd = -1;
   if (job.port) {
     SerialOptions serial = *job.port;
     if (job.baudFromProfile && device.line) serial.baud = device.line->baud;
     auto sink = openSerialSink(serial);
     where = serial.port;
+    replyFd = sink->fd();
     return sink;
   }
   if (job.stream == "-") {
@@ -96,13 +100,15 @@ std::unique_ptr<ByteSink> openTransport(const RenderJob& job, const devices::Dev
 template <typename T>
 devices::DriverStats renderToDevice(Renderer<T>& renderer, const RenderJob& job, const devices::Device& device,
                                     const PipelineOptions& pipeline, std::string& where) {
-  std::unique_ptr<ByteSink> transport = openTransport(job, device, where);
+  int replyFd = -1;
+  std::unique_ptr<ByteSink> transport = openTransport(job, device, where, replyFd);
   std::unique_ptr<StreamDecoder> emulator;
   if (!job.picture.empty()) emulator = device.makeEmulator();
   TeeSink tee(transport.get(), [&emulator](std::span<const std::uint8_t> bytes) {
     if (emulator) emulator->feed(bytes);
   });
   auto driver = device.makeDriver(tee);
+  if (replyFd >= 0) driver->answerOn(replyFd, job.port->stallTimeoutSeconds);
   runPipeline(renderer, driver->sink(), pipeline);
   tee.close();  // renames the stream file into place, or drains the serial line
   const devices::DriverStats stats = driver->stats();

@@ -31,6 +31,9 @@ class Driver {
   virtual ~Driver() = default;
   virtual IndexedSink& sink() = 0;
   virtual DriverStats stats() const = 0;  // after sink().end()
+  // A serial line the terminal answers on (its descriptor), for drivers that
+  // wait for answers (the 4027's `!REP` pacing); the others ignore it.
+  virtual void answerOn(int /*fd*/, double /*timeoutSeconds*/) {}
 };
 
 struct Device {

@@ -57,6 +57,9 @@ class SerialSink final : public ByteSink {
   // starts at --resume N); errors report offsets in the whole stream.
   void setStreamOffset(std::uint64_t offset) { base_ = offset; }
   const std::string& path() const { return port_.path(); }
+  // The line's descriptor, for a driver that reads the terminal's answers
+  // (the 4027's report pacing); the sink itself only writes.
+  int fd() const { return port_.fd(); }
 
  private:
   [[noreturn]] void fail(ErrorKind kind, const std::string& why);

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <iterator>
+#include <string_view>
 
 namespace lattice {
 
@@ -30,6 +32,16 @@ bool isTerminator(std::uint8_t b) { return b == '\r' || b == ';'; }
 // terminators, NUL/DEL padding and XON/XOFF flow control.
 bool isFiller(std::uint8_t b) {
   return isSeparator(b) || isTerminator(b) || b == 0 || b == 0x7F || b == 0x11 || b == 0x13;
+}
+
+// Commands for the text workspace, the keyboard and the line that the
+// ncurses terminfo entries (tek4024/4025/4027, tek4025a, tek4025-cr) and a
+// real program (a TIG font tool) send: known, any arguments, nothing drawn.
+bool isTextCommand(const std::string& key) {
+  static constexpr std::string_view kText[] = {"ATT", "BAC", "BUF", "DCH", "DEL", "DIS", "DLI", "DOW", "DUP",
+                                               "ECH", "ENA", "EOL", "FOR", "ICH", "ILI", "INK", "JUM", "LEA",
+                                               "LEF", "PAD", "RIG", "RSS", "RUP", "SNO", "STO", "UP"};
+  return std::find(std::begin(kText), std::end(kText), key) != std::end(kText);
 }
 
 }  // namespace
@@ -98,6 +110,14 @@ void Tek4027Decoder::consume(std::uint8_t b) {
       if (isTerminator(b)) {
         endCommand();
         state_ = State::Text;
+      } else if (b == 0 || b == 0x7F || b == 0x11 || b == 0x13) {
+        // Padding and flow control are not part of the command.
+      } else if (b < 0x20 && !isSeparator(b)) {
+        // No argument holds a control character: it ends the command, and
+        // after `!COM n` it may be the new command character (terminfo's
+        // tek4025a reset string sends `!com 29` then GS at once).
+        endCommand();
+        if (b == static_cast<std::uint8_t>(commandChar_)) startCommand();
       } else if (isSeparator(b)) {
         endToken();
       } else if (token_.size() < kMaxTokenLength) {
@@ -146,17 +166,21 @@ bool Tek4027Decoder::execute() {
   else if (key == "COM")
     ok = setCommandChar();
   else if (key == "GRA")
-    ok = checkOnly(2, 4);  // graphics region in text rows: the framebuffer is fixed
+    ok = checkOnly(2, 4, false);  // graphics region in text rows: the framebuffer is fixed
   else if (key == "WOR")
-    ok = checkOnly(1, 1);  // workspace size: text layout only
+    ok = checkOnly(1, 2, true);  // workspace size [H]: text layout only
   else if (key == "MON")
-    ok = checkOnly(1, 2);  // monitor size [H]: text layout only
+    ok = checkOnly(1, 3, true);  // monitor size [H] [K] (`!MON 12 H K` in a real program): text layout only
+  else if (key == "REP")
+    ok = checkOnly(0, 1, false);  // report request (UGS paces with `!REP 00`): the emulator has no one to answer
   else if (key == "CLE")
     ok = args_.empty();  // clears tab stops: nothing graphic
   else if (key == "LIN") {
     long style = 0;
     ok = args_.size() == 1 && number(0, style) && style >= 0 && style <= 255;
     if (ok) lineStyle_ = static_cast<int>(style);  // recorded; vectors are drawn solid
+  } else if (isTextCommand(key)) {
+    ok = true;
   } else {
     ++report_.unknownCommands;
     if (report_.unknownByName.size() < kMaxUnknownNames || report_.unknownByName.count(name_) != 0)
@@ -198,12 +222,19 @@ bool Tek4027Decoder::potNumber(std::size_t index, int& out) const {
   return out < profile_.colors;
 }
 
-bool Tek4027Decoder::checkOnly(std::size_t minArgs, std::size_t maxArgs) {
+bool Tek4027Decoder::checkOnly(std::size_t minArgs, std::size_t maxArgs, bool letterFlags) {
   if (args_.size() < minArgs || args_.size() > maxArgs) return false;
   long v = 0;
   for (std::size_t i = 0; i < args_.size(); ++i) {
-    // !MON n H: the optional H (hold) flag is a letter.
-    if (i == 1 && name_.rfind("MON", 0) == 0 && (args_[i] == "H" || args_[i] == "h")) continue;
+    const std::string& t = args_[i];
+    // Workspace and monitor take single-letter flags, alone or after the
+    // count: terminfo's `mon h`, `wor 33h`, a real program's `!MON 12 H K`.
+    if (letterFlags && std::isalpha(static_cast<unsigned char>(t.back()))) {
+      if (t.size() == 1) continue;
+      const std::string count = t.substr(0, t.size() - 1);
+      if (count.find_first_not_of("0123456789") == std::string::npos) continue;
+      return false;
+    }
     if (!number(i, v) || v < 0) return false;
   }
   return true;

@@ -63,7 +63,7 @@ class Tek4027Decoder final : public StreamDecoder {
   bool mapPots(bool rgb);
   bool erase();
   bool setCommandChar();
-  bool checkOnly(std::size_t minArgs, std::size_t maxArgs);
+  bool checkOnly(std::size_t minArgs, std::size_t maxArgs, bool letterFlags);
 
   bool number(std::size_t index, long& out) const;
   bool potNumber(std::size_t index, int& out) const;

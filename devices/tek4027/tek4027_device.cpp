@@ -5,6 +5,7 @@
 #include "devices/tek4027/tek4027_decoder.hpp"
 #include "devices/tek4027/tek4027_driver.hpp"
 #include "devices/tek4027/tek4027_encoder.hpp"
+#include "devices/tek4027/tek4027_pacing.hpp"
 
 namespace lattice::tek4027 {
 namespace {
@@ -16,14 +17,19 @@ class StreamDriver final : public devices::Driver {
   devices::DriverStats stats() const override {
     const Tek4027StreamStats& s = driver_.stats();
     return {s.bytes, s.seconds(),
-            fmt::format("strategy {}, {} commands ({} colour changes, {} vector commands), line {:.0f} s, "
-                        "drawing {:.0f} s",
-                        strategyName(s.strategy), s.commands, s.colourSelects, s.vectorCommands, s.lineSeconds,
-                        s.terminalSeconds)};
+            fmt::format("profile {}, strategy {} along {}, {} commands ({} colour changes, {} vector commands, "
+                        "{} report requests), line {:.0f} s, drawing {:.0f} s",
+                        driver_.profile().name, strategyName(s.strategy), orientationName(s.orientation), s.commands,
+                        s.colourSelects, s.vectorCommands, s.reportRequests, s.lineSeconds, s.terminalSeconds)};
+  }
+  void answerOn(int fd, double timeoutSeconds) override {
+    replies_ = std::make_unique<Tek4027FdReplies>(fd, timeoutSeconds);
+    driver_.setReplies(replies_.get());
   }
 
  private:
   Tek4027Driver driver_;
+  std::unique_ptr<Tek4027FdReplies> replies_;
 };
 
 std::uint64_t pixels(int w, int h) { return static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h); }
@@ -43,7 +49,9 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   // The driver keeps the frame and its pot map, then encodes its stream
   // orders one after another, holding the shortest so far beside the next
   // (strings that grow by doubling): measured up to 16.3 B a pixel of working
-  // set on the example scenes (docs/memory.md, "Calibration").
+  // set on the example scenes (docs/memory.md, "Calibration"), before the
+  // orientations added a turned copy of the frame (1 B a pixel); the paced
+  // copy of the winner takes the place of the candidate, so pacing adds none.
   d.driverMemory = [](int w, int h) { return 20 * pixels(w, h); };
   d.emulatorMemory = 3 * pixels(profile.width, profile.height);  // the screen, and its RGB copy for the PNG
   d.line = profile.line;

@@ -8,8 +8,9 @@
 
 namespace lattice {
 
-Tek4027Driver::Tek4027Driver(ByteSink& sink, Tek4027Profile profile, Tek4027Strategy strategy)
-    : sink_(sink), profile_(profile), strategy_(strategy) {
+Tek4027Driver::Tek4027Driver(ByteSink& sink, Tek4027Profile profile, Tek4027Strategy strategy,
+                             Tek4027Orientation orientation)
+    : sink_(sink), profile_(profile), strategy_(strategy), orientation_(orientation) {
   profile_.validate();
   potOf_.fill(-1);
 }
@@ -78,14 +79,26 @@ void Tek4027Driver::end() {
   // Define only the pots that appear (and always the background, for the erase).
   for (std::size_t i = 0; i < paletteSize; ++i)
     if (count[i] > 0 || i == background)
-      picture.potColours[static_cast<std::size_t>(potOf_[i])] = rgbToTekHls(frame_.palette[i]);
+      picture.potColours[static_cast<std::size_t>(potOf_[i])] = frame_.palette[i];
 
-  const std::string text = encodeTek4027(picture, profile_, strategy_, &stats_);
+  const std::string text = encodeTek4027(picture, profile_, strategy_, &stats_, orientation_);
   // In pieces, so a slow sink (a serial line with flow control) can report
-  // progress and pace itself as the picture goes out.
+  // progress and pace itself as the picture goes out; with report pacing and
+  // a terminal to answer, one record at a time.
   constexpr std::size_t kPiece = 1024;
-  for (std::size_t at = 0; at < text.size(); at += kPiece)
-    sink_.write(std::string_view(text).substr(at, kPiece));
+  std::size_t at = 0;
+  auto writeUpTo = [&](std::size_t end) {
+    for (; at < end; at += std::min(kPiece, end - at))
+      sink_.write(std::string_view(text).substr(at, std::min(kPiece, end - at)));
+  };
+  for (std::size_t end : reportRecordEnds(text, profile_)) {
+    writeUpTo(end);
+    if (replies_ != nullptr) {
+      sink_.flush();
+      replies_->awaitReply();
+    }
+  }
+  writeUpTo(text.size());
   sink_.flush();
   nextRow_ = -1;
 }

@@ -4,6 +4,8 @@
 
 #include <iterator>
 
+#include "devices/tek4027/tek4027_pacing.hpp"
+
 namespace lattice {
 
 const char* strategyName(Tek4027Strategy strategy) {
@@ -18,6 +20,9 @@ const char* strategyName(Tek4027Strategy strategy) {
   }
   return "?";
 }
+
+int percentFromLevel(std::uint8_t level) { return (level * 100 + 127) / 255; }
+std::uint8_t levelFromPercent(long percent) { return static_cast<std::uint8_t>((percent * 255 + 50) / 100); }
 
 namespace {
 
@@ -67,6 +72,12 @@ class Encoder {
  public:
   Encoder(const Tek4027Picture& picture, const Tek4027Profile& profile, Tek4027StreamStats& stats)
       : picture_(picture), frame_(picture.frame), profile_(profile), stats_(stats), w_(out_, profile, stats) {}
+  // Another orientation: `frame` is the picture turned (orientedFrame());
+  // every point is turned back when it is written.
+  Encoder(const Tek4027Picture& picture, const PotFrame& frame, Tek4027Orientation orientation,
+          const Tek4027Profile& profile, Tek4027StreamStats& stats)
+      : picture_(picture), frame_(frame), profile_(profile), stats_(stats), w_(out_, profile, stats),
+        orientation_(orientation) {}
 
   std::string run(Tek4027Strategy strategy) {
     preamble();
@@ -84,8 +95,22 @@ class Encoder {
   }
 
  private:
-  // Terminal coordinates: y counts up from the bottom of the graphics area.
-  long termY(int imageY) const { return static_cast<long>(profile_.height) - 1 - imageY; }
+  // Terminal coordinates of a point of the working frame: y counts up from
+  // the bottom of the graphics area; a turned frame is turned back.
+  struct TermPoint {
+    long x, y;
+  };
+  TermPoint term(FramePoint p) const {
+    int imageX = p.x, imageY = p.y;
+    if (orientation_ == Tek4027Orientation::RowsUp) imageY = picture_.frame.height - 1 - p.y;
+    if (orientation_ == Tek4027Orientation::Columns) std::swap(imageX, imageY);
+    return {imageX, static_cast<long>(profile_.height) - 1 - imageY};
+  }
+  void point(CommandWriter& w, FramePoint p) const {
+    const TermPoint t = term(p);
+    w.arg(t.x);
+    w.arg(t.y);
+  }
 
   void preamble() {
     w_.command("WOR");
@@ -95,13 +120,22 @@ class Encoder {
     w_.arg(profile_.graphicsLastRow);
     // Pots first, so the erase already shows the new background colour.
     for (int p = 0; p < 8; ++p) {
-      const auto& hls = picture_.potColours[static_cast<std::size_t>(p)];
-      if (!hls) continue;
-      w_.command("MAP");
-      w_.pot(p);
-      w_.arg(hls->hue);
-      w_.arg(hls->lightness);
-      w_.arg(hls->saturation);
+      const auto& rgb = picture_.potColours[static_cast<std::size_t>(p)];
+      if (!rgb) continue;
+      if (profile_.colourForm == Tek4027ColourForm::Mix) {
+        w_.command("MIX");
+        w_.pot(p);
+        w_.arg(percentFromLevel(rgb->r));
+        w_.arg(percentFromLevel(rgb->g));
+        w_.arg(percentFromLevel(rgb->b));
+      } else {
+        const Hls hls = rgbToTekHls(*rgb);
+        w_.command("MAP");
+        w_.pot(p);
+        w_.arg(hls.hue);
+        w_.arg(hls.lightness);
+        w_.arg(hls.saturation);
+      }
     }
     w_.command("ERA");
     w_.arg("G");
@@ -117,10 +151,8 @@ class Encoder {
 
   void vector(const PotRun& r) {
     w_.command("VEC");
-    w_.arg(r.x0);
-    w_.arg(termY(r.y));
-    w_.arg(r.x1);
-    w_.arg(termY(r.y));
+    point(w_, {r.x0, r.y});
+    point(w_, {r.x1, r.y});
     ++stats_.vectorCommands;
   }
 
@@ -156,13 +188,11 @@ class Encoder {
         w.command("VEC");
         inCommand = 0;
         if (i > 0) {
-          w.arg(chain[i - 1].x);
-          w.arg(termY(chain[i - 1].y));
+          point(w, chain[i - 1]);
           ++inCommand;
         }
       }
-      w.arg(chain[i].x);
-      w.arg(termY(chain[i].y));
+      point(w, chain[i]);
       ++inCommand;
     }
     commands = scratch.commands;
@@ -176,15 +206,13 @@ class Encoder {
     Tek4027StreamStats scratch;
     CommandWriter w(text, profile_, scratch);
     w.command("VEC");
-    for (std::size_t i = 0; i < 2; ++i) {
-      w.arg(chain[i].x);
-      w.arg(termY(chain[i].y));
-    }
+    for (std::size_t i = 0; i < 2; ++i) point(w, chain[i]);
     const auto limit = static_cast<std::size_t>(profile_.maxPointsPerCommand);
     for (std::size_t i = 2; i < chain.size(); ++i) {
       if ((i - 2) % limit == 0) w.command("RVE");
-      w.arg(chain[i].x - chain[i - 1].x);
-      w.arg(termY(chain[i].y) - termY(chain[i - 1].y));
+      const TermPoint a = term(chain[i - 1]), b = term(chain[i]);
+      w.arg(b.x - a.x);
+      w.arg(b.y - a.y);
     }
     commands = scratch.commands;
     return text;
@@ -233,7 +261,7 @@ class Encoder {
       for (const auto& chain : chains) {
         std::uint64_t commands = 0;
         std::string text = absoluteChain(chain, commands);
-        if (relative && chain.size() > 2) {
+        if (relative && profile_.relativeVectors && chain.size() > 2) {
           std::uint64_t altCommands = 0;
           std::string alt = relativeChain(chain, altCommands);
           if (alt.size() < text.size()) {
@@ -254,36 +282,84 @@ class Encoder {
   Tek4027StreamStats& stats_;
   std::string out_;
   CommandWriter w_;
+  Tek4027Orientation orientation_ = Tek4027Orientation::Rows;
   int currentPot_ = -1;
 };
+
+// The picture as the encoder walks it: its rows bottom first (RowsUp), or
+// its columns left first as rows (Columns).
+PotFrame orientedFrame(const PotFrame& f, Tek4027Orientation orientation) {
+  PotFrame t;
+  const bool columns = orientation == Tek4027Orientation::Columns;
+  t.width = columns ? f.height : f.width;
+  t.height = columns ? f.width : f.height;
+  t.backgroundPot = f.backgroundPot;
+  t.pots.resize(f.pots.size());
+  for (int y = 0; y < f.height; ++y)
+    for (int x = 0; x < f.width; ++x) {
+      const int tx = columns ? y : x, ty = columns ? x : f.height - 1 - y;
+      t.pots[static_cast<std::size_t>(ty) * static_cast<std::size_t>(t.width) + static_cast<std::size_t>(tx)] = f.at(x, y);
+    }
+  return t;
+}
+
+}  // namespace
+
+namespace {
+
+// One strategy in one orientation, unpaced; the stats count the stream as
+// the profile would pace it.
+std::string encodeUnpaced(const Tek4027Picture& picture, const Tek4027Profile& profile, Tek4027Strategy strategy,
+                          Tek4027Orientation orientation, Tek4027StreamStats& stats) {
+  stats = {};
+  stats.strategy = strategy;
+  stats.orientation = orientation;
+  const bool turned = orientation != Tek4027Orientation::Rows;
+  const PotFrame working = turned ? orientedFrame(picture.frame, orientation) : PotFrame{};
+  std::string text = turned ? Encoder(picture, working, orientation, profile, stats).run(strategy)
+                            : Encoder(picture, profile, stats).run(strategy);
+  const std::vector<std::size_t> cuts = recordCuts(text, profile);
+  stats.reportRequests = cuts.size();
+  stats.commands += stats.reportRequests;
+  stats.bytes = pacedSize(text, cuts, profile);
+  stats.lineSeconds = transmitSeconds(stats.bytes, profile.line);
+  stats.terminalSeconds = static_cast<double>(stats.bytes) / profile.terminalCharsPerSecond;
+  return text;
+}
 
 }  // namespace
 
 std::string encodeTek4027(const Tek4027Picture& picture, const Tek4027Profile& profile, Tek4027Strategy strategy,
-                          Tek4027StreamStats* stats) {
+                          Tek4027StreamStats* stats, Tek4027Orientation orientation) {
+  Tek4027StreamStats bestStats;
+  std::string best;
   if (strategy == Tek4027Strategy::Shortest) {
-    std::string best;
-    Tek4027StreamStats bestStats;
-    for (auto s : {Tek4027Strategy::RowOrder, Tek4027Strategy::ColourOrder, Tek4027Strategy::Chained,
-                   Tek4027Strategy::ChainedRelative, Tek4027Strategy::Layered, Tek4027Strategy::LayeredChained}) {
-      Tek4027StreamStats candidateStats;
-      std::string candidate = encodeTek4027(picture, profile, s, &candidateStats);
-      if (best.empty() || candidate.size() < best.size()) {
-        best = std::move(candidate);
-        bestStats = candidateStats;
+    // Every strategy in every orientation (the same command forms; only the
+    // runs' direction differs), compared by paced length: the shortest wins.
+    for (auto o : {Tek4027Orientation::Rows, Tek4027Orientation::RowsUp, Tek4027Orientation::Columns})
+      for (auto s : {Tek4027Strategy::RowOrder, Tek4027Strategy::ColourOrder, Tek4027Strategy::Chained,
+                     Tek4027Strategy::ChainedRelative, Tek4027Strategy::Layered, Tek4027Strategy::LayeredChained}) {
+        Tek4027StreamStats candidateStats;
+        std::string candidate = encodeUnpaced(picture, profile, s, o, candidateStats);
+        if (best.empty() || candidateStats.bytes < bestStats.bytes) {
+          best = std::move(candidate);
+          bestStats = candidateStats;
+        }
       }
-    }
-    if (stats != nullptr) *stats = bestStats;
-    return best;
+  } else {
+    best = encodeUnpaced(picture, profile, strategy, orientation, bestStats);
   }
-  Tek4027StreamStats local;
-  local.strategy = strategy;
-  std::string text = Encoder(picture, profile, local).run(strategy);
-  local.bytes = text.size();
-  local.lineSeconds = transmitSeconds(local.bytes, profile.line);
-  local.terminalSeconds = static_cast<double>(local.bytes) / profile.terminalCharsPerSecond;
-  if (stats != nullptr) *stats = local;
-  return text;
+  if (stats != nullptr) *stats = bestStats;
+  return paceWithReports(std::move(best), profile);
+}
+
+const char* orientationName(Tek4027Orientation orientation) {
+  switch (orientation) {
+    case Tek4027Orientation::Rows: return "rows";
+    case Tek4027Orientation::RowsUp: return "rows-up";
+    case Tek4027Orientation::Columns: return "columns";
+  }
+  return "?";
 }
 
 }  // namespace lattice

@@ -37,6 +37,8 @@ void Tek4027Profile::validate() const {
   require(terminalCharsPerSecond > 0, "terminal characters per second must be positive");
   require(maxPointsPerCommand >= 2 && maxPointsPerCommand <= 1024,
           fmt::format("points per command {} is outside 2..1024", maxPointsPerCommand));
+  require(recordBytes >= 64 && recordBytes <= 65536,
+          fmt::format("record bytes {} is outside 64..65536", recordBytes));
   require(workspaceLines >= 1 && graphicsFirstRow >= 1 && graphicsFirstRow <= graphicsLastRow &&
               graphicsLastRow <= workspaceLines,
           "graphics rows must lie within the workspace (1 <= first <= last <= workspace lines)");
@@ -45,15 +47,55 @@ void Tek4027Profile::validate() const {
 namespace {
 constexpr std::string_view kContext = "tek4027 profile";
 constexpr std::string_view kKeys =
-    "width, height, baud, data-bits, parity, stop-bits, chars-per-second, command-char, separator, terminator, "
-    "background-pot, max-points";
+    "profile, width, height, baud, data-bits, parity, stop-bits, chars-per-second, command-char, separator, "
+    "terminator, background-pot, max-points, pacing, record-bytes";
+
+// The presets: the only place that says which forms a profile permits.
+// Strict: every form has at least one independent source (docs/tek-sources.md).
+// Compact: the forms the project used before the audit, shorter, unsourced.
+Tek4027Profile strictPreset() { return Tek4027Profile{}; }
+
+Tek4027Profile compactPreset() {
+  Tek4027Profile p;
+  p.name = "compact";
+  p.height = 480;
+  p.workspaceLines = 34;
+  p.graphicsLastRow = 34;
+  p.colourForm = Tek4027ColourForm::Map;
+  p.relativeVectors = true;
+  p.pacing = Tek4027Pacing::None;
+  return p;
+}
+
+const char* pacingName(Tek4027Pacing pacing) {
+  switch (pacing) {
+    case Tek4027Pacing::None: return "none";
+    case Tek4027Pacing::Report: return "report";
+    case Tek4027Pacing::Auto: return "auto";
+  }
+  return "?";
+}
 }  // namespace
+
+std::vector<std::string> tek4027PresetNames() { return {"strict", "compact"}; }
+
+Tek4027Profile tek4027Preset(std::string_view name) {
+  if (name == "strict") return strictPreset();
+  if (name == "compact") return compactPreset();
+  throw Error(ErrorKind::Usage, fmt::format("{}: profile={} must be strict or compact", kContext, name));
+}
 
 void applyOverride(Tek4027Profile& profile, std::string_view keyValue) {
   Tek4027Profile p = profile;  // a rejected override leaves the profile as it was
   const KeyValue kv = splitKeyValue(kContext, keyValue, kKeys);
   const std::string_view key = kv.key, value = kv.value;
-  if (key == "width") p.width = parseIntSetting(kContext, kv);
+  if (key == "profile") {
+    Tek4027Profile preset = tek4027Preset(value);
+    // Transport settings stay as the caller set them; the forms follow the preset.
+    preset.line = p.line;
+    preset.terminalCharsPerSecond = p.terminalCharsPerSecond;
+    p = preset;
+  } else if (key == "width") p.width = parseIntSetting(kContext, kv);
   else if (key == "height") p.height = parseIntSetting(kContext, kv);
   else if (key == "baud") p.line.baud = parseIntSetting(kContext, kv);
   else if (key == "data-bits") p.line.dataBits = parseIntSetting(kContext, kv);
@@ -62,6 +104,13 @@ void applyOverride(Tek4027Profile& profile, std::string_view keyValue) {
   else if (key == "command-char") p.commandChar = static_cast<char>(parseIntSetting(kContext, kv));
   else if (key == "background-pot") p.backgroundPot = parseIntSetting(kContext, kv);
   else if (key == "max-points") p.maxPointsPerCommand = parseIntSetting(kContext, kv);
+  else if (key == "record-bytes") p.recordBytes = parseIntSetting(kContext, kv);
+  else if (key == "pacing") {
+    if (value == "none") p.pacing = Tek4027Pacing::None;
+    else if (value == "report") p.pacing = Tek4027Pacing::Report;
+    else if (value == "auto") p.pacing = Tek4027Pacing::Auto;
+    else throw Error(ErrorKind::Usage, fmt::format("{}: pacing={} must be none, report or auto", kContext, value));
+  }
   else if (key == "parity") {
     if (value == "none") p.line.parity = false;
     else if (value == "even" || value == "odd") p.line.parity = true;  // only its bit time matters here
@@ -86,11 +135,20 @@ void applyOverride(Tek4027Profile& profile, std::string_view keyValue) {
 }
 
 void applyOverrides(Tek4027Profile& profile, const std::vector<std::string>& keyValues) {
-  for (const auto& kv : keyValues) applyOverride(profile, kv);
+  // The preset first, wherever it was typed: the other keys refine it.
+  for (const auto& kv : keyValues)
+    if (kv.rfind("profile=", 0) == 0) applyOverride(profile, kv);
+  for (const auto& kv : keyValues)
+    if (kv.rfind("profile=", 0) != 0) applyOverride(profile, kv);
 }
 
 std::string describe(const Tek4027Profile& p) {
   return fmt::format(
+      "profile={}\ncolour-form={}\nrelative-vectors={}\npacing={}\nrecord-bytes={}\nworkspace-lines={}\n"
+      "graphics-rows={}..{}\n",
+      p.name, p.colourForm == Tek4027ColourForm::Mix ? "mix (RGB percent)" : "map (HLS)",
+      p.relativeVectors ? "yes" : "no", pacingName(p.pacing), p.recordBytes, p.workspaceLines, p.graphicsFirstRow,
+      p.graphicsLastRow) + fmt::format(
       "width={}\nheight={}\nbaud={}\ndata-bits={}\nparity={}\nstop-bits={}\nchars-per-second={}\n"
       "command-char={}\nseparator={}\nterminator={}\nbackground-pot={}\nmax-points={}\n",
       p.width, p.height, p.line.baud, p.line.dataBits, p.line.parity ? "even" : "none", p.line.stopBits,

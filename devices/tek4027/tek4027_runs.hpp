@@ -1,8 +1,9 @@
 #pragma once
 // The geometry of a 4027 picture: the frame as paint-pot numbers, its
 // horizontal runs, and polylines that chain runs of one pot down the image.
-// The 4027 has no raster or fill command, so every pixel that differs from
-// the erase colour is drawn by a vector; these are the vectors.
+// No source shows a raster command or the syntax of the 4027's polygon fill,
+// so every pixel that differs from the erase colour is drawn by a vector;
+// these are the vectors.
 #include <cstdint>
 #include <vector>
 

@@ -11,6 +11,7 @@
 #include "devices/tek4027/tek4027_decoder.hpp"
 #include "devices/tek4027/tek4027_driver.hpp"
 #include "foundation/byte_sink.hpp"
+#include "tests/devices/tek4027/drive_frame.hpp"
 #include "tests/devices/tek4027/synthetic_images.hpp"
 
 using namespace lattice;
@@ -27,9 +28,10 @@ void checkSane(const std::vector<std::uint8_t>& stream, std::mt19937& rng) {
   }
   d.finish();
   REQUIRE(d.report().bytes == stream.size());
-  REQUIRE(d.image().width == 640);
-  REQUIRE(d.image().height == 480);
-  REQUIRE(d.image().pixels.size() == 640u * 480u);
+  const Tek4027Profile profile;  // the default (strict) screen
+  REQUIRE(d.image().width == profile.width);
+  REQUIRE(d.image().height == profile.height);
+  REQUIRE(d.image().pixels.size() == static_cast<std::size_t>(profile.width) * static_cast<std::size_t>(profile.height));
   REQUIRE(d.image().colormap.size() == 8);
   const auto& px = d.image().pixels;
   REQUIRE(std::all_of(px.begin(), px.end(), [](PaletteIndex p) { return p < 8; }));
@@ -44,7 +46,7 @@ void checkSane(const std::vector<std::uint8_t>& stream, std::mt19937& rng) {
 }  // namespace
 
 TEST_CASE("random streams over the command alphabet never break the emulator") {
-  const std::string alphabet = "!!!!;;\r\n ,,-+0123456789VECRVCOLMAPMIXERAGCOMWORGRAMONLINCLEcvge\x1f\x00\x7f\xff";
+  const std::string alphabet = "!!!!;;\r\n ,,-+0123456789VECRVCOLMAPMIXERAGCOMWORGRAMONLINCLEREPHKcvge\x1f\x00\x7f\xff";
   std::mt19937 rng(20261122);
   for (int trial = 0; trial < 3000; ++trial) {
     std::vector<std::uint8_t> stream(rng() % 400);
@@ -55,14 +57,8 @@ TEST_CASE("random streams over the command alphabet never break the emulator") {
 }
 
 TEST_CASE("mutated driver streams never break the emulator") {
-  MemorySink sink;
-  Tek4027Driver driver(sink);
-  auto img = testing::ringsImage(64, 48);
-  driver.begin({img.width, img.height, img.colormap});
-  for (int y = 0; y < img.height; ++y)
-    driver.row(y, std::span<const PaletteIndex>(&img.pixels[static_cast<std::size_t>(y) * img.width], 64));
-  driver.end();
-  const std::vector<std::uint8_t>& original = sink.data();
+  const std::string text = testing::driveFrame(testing::ringsImage(64, 48), Tek4027Profile{});
+  const std::vector<std::uint8_t> original(text.begin(), text.end());
   REQUIRE(original.size() > 500);
 
   std::mt19937 rng(4027);

@@ -134,10 +134,10 @@ TEST_CASE("large but legal coordinates are clipped, not wrapped") {
 }
 
 TEST_CASE("unknown commands are skipped, counted by name, and resynchronise") {
-  auto d = decode("!FOO 1 2 3;!JUMP 5!FOO;!COL C2;!VEC 0 0 1 0;");
+  auto d = decode("!FOO 1 2 3;!ZAPP 5!FOO;!COL C2;!VEC 0 0 1 0;");
   CHECK(d.report().unknownCommands == 3);
   CHECK(d.report().unknownByName.at("FOO") == 2);
-  CHECK(d.report().unknownByName.at("JUMP") == 1);
+  CHECK(d.report().unknownByName.at("ZAPP") == 1);
   CHECK(d.report().commands == 2);
   CHECK(potAt(d, 1, 0) == 2);
 }
@@ -180,4 +180,67 @@ TEST_CASE("hostile lengths are capped") {
   auto d = decode(manyArgs);
   CHECK(d.report().malformed == 1);
   CHECK(potAt(d, 1, 1) == 0);
+}
+
+// Forms real programs sent (docs/tek-sources.md, "Tek 4027"), re-typed here
+// as the bytes they put on the line.
+TEST_CASE("real producers' set-up forms are accepted: !MON n H K, !WOR 33h, !REP") {
+  // A Fortran plotting program: bottom 12 lines for text, graphics in 1..22.
+  auto d = decode("!MON 12 H K\r!GRA 1 22 1 80\r");
+  CHECK(d.report().commands == 2);
+  CHECK(d.report().malformed == 0);
+  // ncurses terminfo: `wor 33h`, `mon h`, `wor 0`, lower case.
+  d = decode("!wor 33h\r!mon h\r!wor 0\r!mon 17\r");
+  CHECK(d.report().commands == 4);
+  CHECK(d.report().malformed == 0);
+  // UGS's pacing request; the emulator has no one to answer, it just accepts it.
+  d = decode("!REP 00\r!REP\r");
+  CHECK(d.report().commands == 2);
+  CHECK(d.report().malformed == 0);
+  // Still refused: a flag in the count's place, a word, too many arguments.
+  CHECK(decode("!MON 12 HK\r").report().malformed == 1);
+  CHECK(decode("!WOR 3x3\r").report().malformed == 1);
+  CHECK(decode("!MON 12 H K H\r").report().malformed == 1);
+}
+
+TEST_CASE("real producers' drawing forms draw: padded !MIX, trailing commas, !rve") {
+  // Fortran i3/i4 fields: numbers padded with spaces after commas, a pot
+  // defined by !MIX, a polyline ended by a trailing comma and the next !VEC.
+  auto d = decode("!MIX C3 100, 50,  0\r!COL C3\r!VEC   10,   5,  20,   5,!VEC   20,   5,  20,  15\r");
+  CHECK(d.report().malformed == 0);
+  CHECK(d.report().commands == 4);
+  CHECK(d.image().colormap[3] == Rgb8{255, 128, 0});
+  for (int x = 10; x <= 20; ++x) CHECK(potAt(d, x, 5) == 3);
+  for (int y = 5; y <= 15; ++y) CHECK(potAt(d, 20, y) == 3);
+  // A font tool: a dot as a zero-length !vec, then a box by relative steps
+  // from the beam (the first step zero), in lower case with commas.
+  d = decode("!col c4\r!vec 40,10,40,10\r!rve 0,0,0,6,-4,0,0,-6\r");
+  CHECK(d.report().malformed == 0);
+  for (int y = 10; y <= 16; ++y) {
+    CHECK(potAt(d, 40, y) == 4);
+    CHECK(potAt(d, 36, y) == 4);
+  }
+  for (int x = 36; x <= 40; ++x) CHECK(potAt(d, x, 16) == 4);
+  CHECK(d.beamX() == 36);
+  CHECK(d.beamY() == 10);
+}
+
+TEST_CASE("terminfo's text and set-up commands are known and draw nothing") {
+  // ncurses tek4025a reset string: !COM 29 switches to GS, then commands end
+  // only where the next one starts, the last at `;`.
+  const std::string rs2 = "!com 29\x1d" "del 0\x1drss t\x1d" "buf\x1d" "buf n\x1d" "cle\x1d" "dis\x1d" "dup\x1d"
+                          "ech r\x1d" "eol\x1d" "era g\x1d" "for n\x1dpad 203\x1dpad 209\x1dsno n"
+                          "\x1dsto 9 17 25 33 41 49 57 65 73\x1dwor 0;";
+  auto d = decode(rs2);
+  CHECK(d.report().unknownCommands == 0);
+  CHECK(d.report().malformed == 0);
+  CHECK(d.report().commands == 17);
+  CHECK(d.commandChar() == '\x1d');
+  // Cursor motion from the tek4025-cr entry and the tek4024 entry.
+  d = decode("!jum5,10;!lef 3\r!rig\r!up 2\r!dow 4\r!dli 2\r!ili\r!dch\r!att e\r");
+  CHECK(d.report().unknownCommands == 0);
+  CHECK(d.report().malformed == 0);
+  CHECK(d.report().commands == 9);
+  for (PaletteIndex p : d.image().pixels) CHECK(p == 0);  // nothing drawn
+  CHECK(decode("!XYZ 1\r").report().unknownCommands == 1);  // an unknown name is still counted
 }

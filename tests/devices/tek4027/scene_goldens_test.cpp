@@ -36,20 +36,23 @@ struct SceneCase {
   Dither dither;
 };
 
-std::string stemOf(const SceneCase& c) {
+// The strict (default) goldens keep the plain names; the compact profile's
+// carry a `_compact` suffix.
+std::string stemOf(const SceneCase& c, const std::string& profileName) {
   std::string name = c.scene;
   name = name.substr(0, name.find('.'));
-  return fmt::format("tek4027/scenes/{}_{}x{}{}", name, c.width, c.height,
-                     c.dither == Dither::FloydSteinberg ? "_fs" : "");
+  return fmt::format("tek4027/scenes/{}_{}x{}{}{}", name, c.width, c.height,
+                     c.dither == Dither::FloydSteinberg ? "_fs" : "", profileName == "strict" ? "" : "_" + profileName);
 }
 
-void runSceneCase(const SceneCase& c) {
-  INFO("scene " << c.scene << " " << c.width << "x" << c.height);
+void runSceneCase(const SceneCase& c, const std::string& profileName) {
+  INFO("scene " << c.scene << " " << c.width << "x" << c.height << ", profile " << profileName);
   const SceneDesc scene = testing::loadExampleScene(c.scene);
   Renderer<double> renderer = testing::makeTestRenderer(scene, c.width, c.height);
 
-  const devices::Device device = devices::makeDevice("tek4027");
-  const Tek4027Profile profile;  // the device table's defaults (no --set)
+  // The device table with the one --set a user would type.
+  const devices::Device device = devices::makeDevice("tek4027", {"profile=" + profileName});
+  const Tek4027Profile profile = tek4027Preset(profileName);
 
   PipelineOptions options;
   options.progress = false;
@@ -104,7 +107,7 @@ void runSceneCase(const SceneCase& c) {
   CHECK(wrongColours == 0);
   CHECK(outsideDrawn == 0);
 
-  const std::string stem = stemOf(c);
+  const std::string stem = stemOf(c, profileName);
   testing::checkGoldenBytes(stem + ".tek", stream.data());
   testing::checkGoldenPng(stem + ".png", picture);
 }
@@ -118,9 +121,11 @@ TEST_CASE("scene goldens: the example scenes in eight paint pots") {
       {"thesis-camera.toml", 64, 64, Dither::None},
       {"hook.toml", 64, 64, Dither::None},
   };
-  for (const SceneCase& c : cases) runSceneCase(c);
+  for (const std::string& profile : tek4027PresetNames())
+    for (const SceneCase& c : cases) runSceneCase(c, profile);
 }
 
 TEST_CASE("scene goldens: a Floyd-Steinberg dithered frame in eight pots") {
-  runSceneCase({"torus-floor.toml", 80, 60, Dither::FloydSteinberg});
+  for (const std::string& profile : tek4027PresetNames())
+    runSceneCase({"torus-floor.toml", 80, 60, Dither::FloydSteinberg}, profile);
 }
