@@ -5,7 +5,7 @@
 // Method and tunables:
 //  - kPixelWorkBudget: the drawing work one stream may ask for, in pixel
 //    units (a filled or cleared pixel, a vector step, a polygon edge crossing
-//    a row). 2^30 is 819 full 1280x1024 screens, or 3,495 640x480 ones;
+//    a row). 2^30 is 819 full 1280x1024 screens, or 4,793 640x350 ones;
 //    our own drivers' streams stay below a few screens. Drawing is charged
 //    before it happens; once a stream has asked for more, nothing more is
 //    drawn and the report says so (decoders still never throw on content),

@@ -19,8 +19,8 @@ std::vector<std::uint8_t> repeat(const std::string& unit, std::uint64_t times) {
 }  // namespace
 
 TEST_CASE("4027: a stream of graphics erases is refused once it passes the drawing budget (issue 15)") {
-  const std::uint64_t screen = 640u * 480u;
-  const std::uint64_t fit = kPixelWorkBudget / screen;  // 3495
+  const std::uint64_t screen = Tek4027Decoder().image().pixels.size();  // the profile's screen
+  const std::uint64_t fit = kPixelWorkBudget / screen;
   {
     Tek4027Decoder d;
     REQUIRE_NOTHROW(decodeBytes(d, repeat("!ERA G\r", fit), "fits.t27"));
