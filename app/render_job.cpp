@@ -10,6 +10,7 @@
 
 #include "app/render_budget.hpp"
 #include "devices/device_table.hpp"
+#include "foundation/arithmetics.hpp"
 #include "foundation/atomic_file.hpp"
 #include "foundation/error.hpp"
 #include "foundation/progress.hpp"
@@ -167,6 +168,7 @@ RenderResult renderWith(const lht::SceneWithLattices& loaded, const RenderJob& j
 }  // namespace
 
 void checkRenderJob(const RenderJob& job) {
+  if (!isArithmeticName(job.arithmetic)) throwUnknownArithmetic(job.arithmetic);
   if (job.device.empty()) {
     if (job.picture.empty()) throw Error(ErrorKind::Usage, "a truecolour render writes a PNG: give -o OUT.png");
     if (!job.stream.empty() || job.port)
@@ -198,15 +200,7 @@ RenderResult renderScene(const RenderJob& job) {
   tables.precision = job.precision;
   tables.threads = static_cast<unsigned>(job.threads);  // one thread means one thread throughout
   const lht::SceneWithLattices loaded = lht::loadSceneWithLattices(job.scene, tables);
-  switch (job.arithmetic) {
-    case Arithmetic::Float:
-      return renderWith<float>(loaded, job);
-    case Arithmetic::Fixed:
-      return renderWith<Fixed32>(loaded, job);
-    case Arithmetic::Double:
-      break;
-  }
-  return renderWith<double>(loaded, job);
+  return withArithmetic(job.arithmetic, [&](auto type) { return renderWith<typename decltype(type)::type>(loaded, job); });
 }
 
 }  // namespace lattice::app
