@@ -2,14 +2,11 @@
 // shape or for a [[lattices]] entry of a scene and writes it as a .lht file.
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <optional>
 
 #include "app/commands.hpp"
-#include "lht/lattice_object.hpp"
-#include "lht/lattice_scene.hpp"
-#include "lht/lht_file.hpp"
 #include "foundation/error.hpp"
+#include "lht/table_build.hpp"
 
 namespace {
 
@@ -20,58 +17,21 @@ struct RasterizeArgs {
   std::string scene, name, shape, output;
   double radius = 0.5, length = 10.0, oversample = 1.0;
   bool stats = false;
-  bool oversampleGiven = false;
   std::string precision;  // empty: the scene's, or the thesis's for --shape
   unsigned threads = 0;
 };
 
-void printStats(const LhtFile& lht, const RasterStats& stats) {
-  fmt::print("pairs={} hits={} entries={} bytes={} precision={} build_ms={:.0f}\n", lht.pairs, lht.hits,
-             lht.table.entryCount(), lht.table.bytes(), lhtPrecisionName(lht.table.precision()), stats.buildMs);
-}
-
-void runRasterize(const RasterizeArgs& args) {
-  const bool fromScene = !args.scene.empty();
-  if (fromScene == !args.shape.empty())
-    throw Error(ErrorKind::Usage, "rasterize needs either --scene FILE --name NAME or --shape sphere|capsule");
-  std::optional<LhtPrecision> precision;
-  if (!args.precision.empty()) precision = parseLhtPrecision(args.precision, "--precision");
-  LhtFile lht;
-  RasterStats stats;
-  if (fromScene) {
-    if (args.name.empty()) throw Error(ErrorKind::Usage, "--scene needs --name NAME, the [[lattices]] entry to rasterize");
-    std::vector<LatticeDefinitionPtr> defs = loadLatticeDefinitions(args.scene);
-    const auto it = std::find_if(defs.begin(), defs.end(), [&](const auto& d) { return d->name == args.name; });
-    if (it == defs.end()) {
-      std::string names;
-      for (const auto& d : defs) names += (names.empty() ? "" : ", ") + d->name;
-      throw Error(ErrorKind::Input, fmt::format("{}: no [[lattices]] entry named '{}' (defined: {})", args.scene,
-                                                args.name, names.empty() ? "none" : names));
-    }
-    LatticeDefinition& def = **it;
-    if (args.oversampleGiven) def.oversample = args.oversample;  // --oversample overrides the scene
-    if (precision) def.precision = *precision;                    // and so does --precision
-    lht = def.rasterizeNow(true, &stats, args.threads);
-  } else {
-    LatticeObject object;
-    if (args.shape == "sphere")
-      object = sphereObject(args.radius);
-    else if (args.shape == "capsule")
-      object = capsuleObject(args.radius, args.length);
-    else
-      throw Error(ErrorKind::Usage, fmt::format("unknown --shape '{}'; use sphere or capsule", args.shape));
-    lht.box = LatticeBox(object.bounds, 1.0, args.oversample);
-    RasterOptions options;
-    options.threads = args.threads;
-    const RasterResult raster = rasterize(lht.box, *object.primitive, options);
-    stats = raster.stats;
-    lht.objectHash = object.hash();
-    lht.pairs = stats.pairs;
-    lht.hits = stats.hits;
-    lht.table = LatticeHashTable(raster.hits, precision.value_or(LhtPrecision::Thesis));
-  }
-  writeLhtFile(args.output, lht);
-  if (args.stats) printStats(lht, stats);
+void runRasterize(const RasterizeArgs& args, bool oversampleGiven) {
+  TableRequest request{args.scene, args.name, args.shape, args.radius, args.length, std::nullopt, {}};
+  if (oversampleGiven) request.oversample = args.oversample;  // --oversample overrides the scene
+  if (!args.precision.empty()) request.settings.precision = parseLhtPrecision(args.precision, "--precision");
+  request.settings.threads = args.threads;
+  const BuiltTable built = buildLatticeTable(request);
+  writeLhtFile(args.output, built.lht);
+  if (args.stats)
+    fmt::print("pairs={} hits={} entries={} bytes={} precision={} build_ms={:.0f}\n", built.lht.pairs,
+               built.lht.hits, built.lht.table.entryCount(), built.lht.table.bytes(),
+               lhtPrecisionName(built.lht.table.precision()), built.stats.buildMs);
 }
 
 }  // namespace
@@ -102,17 +62,7 @@ void addRasterize(CLI::App& root) {
                               lhtPrecisionChoices()));
   cmd->add_flag("--stats", args->stats, "Print one line: pairs= hits= entries= bytes= precision= build_ms=");
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)");
-  cmd->callback([args, oversample] {
-    args->oversampleGiven = oversample->count() > 0;
-    runRasterize(*args);
-  });
+  cmd->callback([args, oversample] { runRasterize(*args, oversample->count() > 0); });
 }
-
-// Every command that loads scenes (render, rasterize) must know the lattice
-// section and node types; this file is always linked into the executable.
-const bool latticeSceneTypesRegistered = [] {
-  registerLatticeSceneTypes();
-  return true;
-}();
 
 }  // namespace lattice::app

@@ -42,21 +42,19 @@ MemoryPlanRequest renderBudgetRequest(std::uint64_t budget, int width, int heigh
   return request;
 }
 
-void packLatticesWithin(const MemoryPlanRequest& request, const std::vector<lht::LatticeDefinitionPtr>& lattices) {
-  const std::uint64_t leastOutput = leastOutputBytes(request);
-  for (const lht::LatticeDefinitionPtr& lattice : lattices) {
-    lattice->packing = [budget = request.budget, leastOutput, name = lattice->name,
-                        requested = lattice->precision](std::uint64_t entries, std::uint64_t hitListBytes) {
-      const TablePacking packing =
-          chooseTablePacking(budget, measuredResidentMemory().current, hitListBytes, leastOutput, entries, requested);
-      if (packing.form != requested)
-        fmt::print(stderr, "lattice render: memory plan: lattice '{}' packed as {} ({}) instead of {} to fit the "
-                           "budget; not written to its cache\n",
-                   name, lht::lhtPrecisionName(packing.form), formatBytes(packing.tableBytes),
-                   lht::lhtPrecisionName(requested));
-      return packing.form;
-    };
-  }
+lht::TablePackingHook tablePackingWithin(const MemoryPlanRequest& request) {
+  return [budget = request.budget, leastOutput = leastOutputBytes(request)](
+             const lht::LatticeDefinition& lattice, lht::LhtPrecision requested, std::uint64_t entries,
+             std::uint64_t hitListBytes) {
+    const TablePacking packing =
+        chooseTablePacking(budget, measuredResidentMemory().current, hitListBytes, leastOutput, entries, requested);
+    if (packing.form != requested)
+      fmt::print(stderr, "lattice render: memory plan: lattice '{}' packed as {} ({}) instead of {} to fit the "
+                         "budget; not written to its cache\n",
+                 lattice.name, lht::lhtPrecisionName(packing.form), formatBytes(packing.tableBytes),
+                 lht::lhtPrecisionName(requested));
+    return packing.form;
+  };
 }
 
 MemoryPlan planBuiltRender(MemoryPlanRequest request) {

@@ -1,7 +1,7 @@
 #pragma once
 // The --memory-budget side of `lattice render` (docs/memory.md): what the
-// command tells the planner about its outputs, the lattice packing hook set
-// before the scene is built, the plan made after, and the check of the
+// command tells the planner about its outputs, the lattice packing hook the
+// scene's tables are built with, the plan made after, and the check of the
 // measured peak at the end. The policy itself is app/memory_plan.hpp.
 #include <cstdint>
 #include <string>
@@ -9,7 +9,7 @@
 
 #include "app/memory_plan.hpp"
 #include "devices/device.hpp"
-#include "lht/lattice_scene.hpp"
+#include "lht/lattice_definition.hpp"
 #include "foundation/resident_memory.hpp"
 
 namespace lattice::app {
@@ -20,9 +20,9 @@ namespace lattice::app {
 MemoryPlanRequest renderBudgetRequest(std::uint64_t budget, int width, int height, const PipelineOptions& pipeline,
                                       bool modeChosenByUser, const devices::Device* device, bool writesPng);
 
-// Lattices rasterized in this run are packed in the form the budget can
+// The packing of lattices rasterized in this run: the form the budget can
 // hold, decided when their entry count is known (chooseTablePacking).
-void packLatticesWithin(const MemoryPlanRequest& request, const std::vector<lht::LatticeDefinitionPtr>& lattices);
+lht::TablePackingHook tablePackingWithin(const MemoryPlanRequest& request);
 
 // Once the scene is built: returns freed allocator pages to the system,
 // measures, plans (lattice::Error(Budget) when nothing fits) and logs the plan.

@@ -10,6 +10,7 @@
 
 #include "app/render_budget.hpp"
 #include "devices/device_table.hpp"
+#include "foundation/arithmetics.hpp"
 #include "foundation/atomic_file.hpp"
 #include "foundation/error.hpp"
 #include "foundation/progress.hpp"
@@ -139,12 +140,15 @@ RenderResult renderWith(const lht::SceneWithLattices& loaded, const RenderJob& j
   const RenderSettings settings =
       renderSettings(job, loaded.scene, device ? device->width : 0, device ? device->height : 0);
   std::optional<MemoryPlanRequest> budget;
+  std::optional<lht::SceneWithLattices> bound;  // the scene with its tables packed to fit the budget
   if (job.memoryBudget) {
     budget = renderBudgetRequest(*job.memoryBudget, settings.width, settings.height, pipeline, job.modeChosenByUser,
                                  device ? &*device : nullptr, !job.picture.empty());
-    packLatticesWithin(*budget, loaded.lattices);
+    lht::TableSettings tables = loaded.tables;
+    tables.packing = tablePackingWithin(*budget);
+    bound = lht::withTableSettings(loaded, tables);
   }
-  Renderer<T> renderer(loaded.scene, settings);
+  Renderer<T> renderer(bound ? bound->scene : loaded.scene, settings);
   if (budget) pipeline.mode = planBuiltRender(*budget).mode;
 
   RenderResult result;
@@ -164,6 +168,7 @@ RenderResult renderWith(const lht::SceneWithLattices& loaded, const RenderJob& j
 }  // namespace
 
 void checkRenderJob(const RenderJob& job) {
+  if (!isArithmeticName(job.arithmetic)) throwUnknownArithmetic(job.arithmetic);
   if (job.device.empty()) {
     if (job.picture.empty()) throw Error(ErrorKind::Usage, "a truecolour render writes a PNG: give -o OUT.png");
     if (!job.stream.empty() || job.port)
@@ -190,21 +195,12 @@ void checkRenderJob(const RenderJob& job) {
 RenderResult renderScene(const RenderJob& job) {
   checkRenderJob(job);
   // Scenes may hold [[lattices]]; their tables are built when the renderer
-  // is, so the settings below are in time.
-  lht::SceneWithLattices loaded = lht::loadSceneWithLattices(job.scene);
-  for (const lht::LatticeDefinitionPtr& lattice : loaded.lattices) {
-    if (job.precision) lattice->precision = *job.precision;
-    lattice->rasterThreads = static_cast<unsigned>(job.threads);  // one thread means one thread throughout
-  }
-  switch (job.arithmetic) {
-    case Arithmetic::Float:
-      return renderWith<float>(loaded, job);
-    case Arithmetic::Fixed:
-      return renderWith<Fixed32>(loaded, job);
-    case Arithmetic::Double:
-      break;
-  }
-  return renderWith<double>(loaded, job);
+  // is, under these settings.
+  lht::TableSettings tables;
+  tables.precision = job.precision;
+  tables.threads = static_cast<unsigned>(job.threads);  // one thread means one thread throughout
+  const lht::SceneWithLattices loaded = lht::loadSceneWithLattices(job.scene, tables);
+  return withArithmetic(job.arithmetic, [&](auto type) { return renderWith<typename decltype(type)::type>(loaded, job); });
 }
 
 }  // namespace lattice::app

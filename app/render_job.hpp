@@ -23,8 +23,6 @@
 
 namespace lattice::app {
 
-enum class Arithmetic { Float, Double, Fixed };
-
 struct RenderJob {
   std::string scene;                  // scene file
   std::string device;                 // a device table name, or empty for a truecolour PNG
@@ -36,7 +34,7 @@ struct RenderJob {
   int width = 0;                      // 0: the scene's, fitted to the device's screen
   int height = 0;
   int threads = 0;                    // 0: all cores
-  Arithmetic arithmetic = Arithmetic::Double;
+  std::string arithmetic = "double";  // an arithmetic's name (foundation/arithmetics.hpp)
   bool fullRayTrace = false;          // lattices replaced by their exact CSG objects
   bool latticeShadows = true;
   std::optional<lht::LhtPrecision> precision;  // every lattice's entry precision

@@ -11,9 +11,9 @@
 #include <sstream>
 
 #include "lht/lattice_scene.hpp"
+#include "lht/table_build.hpp"
 #include "lht/table1.hpp"
 #include "render/renderer.hpp"
-#include "render/scene_loader.hpp"
 #include "foundation/error.hpp"
 
 using namespace lattice;
@@ -80,7 +80,6 @@ void imageError(const RgbImage& a, const RgbImage& b, double& rms, double& diffe
 int main(int argc, char** argv) try {
   const std::string sceneFile = argc > 1 ? argv[1] : "scenes/fuzzy-sphere-1000.toml";
   const int width = argc > 2 ? std::atoi(argv[2]) : 256;
-  registerLatticeSceneTypes();
 
   fmt::print("Table 1 rows (rasterization, all cores):\n");
   for (const Table1Row& row : table1Rows()) {
@@ -103,7 +102,7 @@ int main(int argc, char** argv) try {
   buffer << in.rdbuf();
   const std::string text = buffer.str();
   fmt::print("\n{} at {}x{}:\n", sceneFile, width, width);
-  const SceneDesc fullScene = parseScene(text, sceneFile);
+  const SceneDesc fullScene = parseSceneWithLattices(text, sceneFile).scene;
   const Timed full = renderScene(fullScene, true, width);
   fmt::print("  full ray trace:  build {:6.2f} s  render {:7.2f} s\n", full.buildSeconds, full.renderSeconds);
   for (int f : {1, 2}) {
@@ -111,12 +110,15 @@ int main(int argc, char** argv) try {
     const auto at = variant.find("oversample = 1");
     if (at == std::string::npos) throw Error(ErrorKind::Input, "the scene's [[lattices]] needs `oversample = 1`");
     variant.replace(at, 14, fmt::format("oversample = {}", f));
-    const SceneDesc scene = parseScene(variant, sceneFile);
+    const SceneWithLattices loaded = parseSceneWithLattices(variant, sceneFile);
+    const SceneDesc& scene = loaded.scene;
     // The table alone (the renderer's build below rasterizes it again, timed with the tree).
-    RasterStats stats;
-    const auto defs = parseLatticeDefinitions(variant, sceneFile);
-    if (defs.empty()) throw Error(ErrorKind::Input, "the scene defines no [[lattices]]");
-    const LhtFile lht = defs.front()->rasterizeNow(false, &stats);
+    if (loaded.lattices.empty()) throw Error(ErrorKind::Input, "the scene defines no [[lattices]]");
+    TableSettings quiet;
+    quiet.progress = false;
+    const BuiltTable built = buildLatticeTable(*loaded.lattices.front(), quiet);
+    const LhtFile& lht = built.lht;
+    const RasterStats& stats = built.stats;
     const Timed lattice = renderScene(scene, false, width);
     double rms, differing, block;
     imageError(lattice.image, full.image, rms, differing, block);

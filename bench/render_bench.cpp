@@ -33,7 +33,6 @@
 #include "io/png.hpp"
 #include "lht/lattice_scene.hpp"
 #include "render/renderer.hpp"
-#include "render/scene_loader.hpp"
 #include "foundation/error.hpp"
 
 using namespace lattice;
@@ -146,7 +145,7 @@ enum class ArithChoice { Both, Double, Float };
 
 void benchScene(const std::filesystem::path& file, const std::vector<int>& threadList, int runs, ArithChoice arith) {
   const auto setupStart = Clock::now();
-  const SceneDesc scene = loadScene(file);
+  const SceneDesc scene = lht::loadSceneWithLattices(file).scene;
   // The first Renderer rasterizes any lattice (once per loaded scene, the
   // table is shared); do it here so that no timed render pays for it.
   { const Renderer<double> warm(scene, RenderSettings{1, 1, 1, {}}); }
@@ -185,7 +184,7 @@ void benchScene(const std::filesystem::path& file, const std::vector<int>& threa
 
 // Lattices against their exact objects (the thesis's "full ray trace").
 void benchFullRayTrace(const std::filesystem::path& file, int size, int threads, int runs) {
-  const SceneDesc scene = loadScene(file);
+  const SceneDesc scene = lht::loadSceneWithLattices(file).scene;
   RenderSettings lattice;
   lattice.width = lattice.height = size;
   lattice.threads = threads;
@@ -260,7 +259,6 @@ int main(int argc, char** argv) {
     if (fullThreads < 1 || fullThreads > 256) return usage("--full-threads must be 1..256");
     if (scenes.empty() && fullScenes.empty()) return usage("give at least one scene file");
 
-    lht::registerLatticeSceneTypes();
     fmt::print("# render_bench: median of {} renders per cell; setup (parse, build, rasterize) timed apart\n", runs);
     if (!scenes.empty()) {
       fmt::print("# dbl_cpu_ms: CPU time of the double render, all threads; f/d = float time / double time;\n"

@@ -9,6 +9,7 @@
 
 #include "lht/lht_file.hpp"
 #include "render/primitive.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice::lht {
 
@@ -27,11 +28,9 @@ template <typename T>
 PrimitivePtr<T> makeLatticeLeaf(std::shared_ptr<const LhtFile> table, const Mat4d& objectToWorld, MaterialId material,
                                 bool castsShadows = true);
 
-extern template PrimitivePtr<float> makeLatticeLeaf<float>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId,
-                                                           bool);
-extern template PrimitivePtr<double> makeLatticeLeaf<double>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId,
-                                                           bool);
-extern template PrimitivePtr<Fixed32> makeLatticeLeaf<Fixed32>(std::shared_ptr<const LhtFile>, const Mat4d&,
-                                                             MaterialId, bool);
+#define LATTICE_DECLARE(T) \
+  extern template PrimitivePtr<T> makeLatticeLeaf<T>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId, bool);
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_DECLARE)
+#undef LATTICE_DECLARE
 
 }  // namespace lattice::lht

@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "lht/lht_file.hpp"
-#include "lht/polyline.hpp"
 #include "render/csg_shapes.hpp"
+#include "render/polyline.hpp"
 #include "render/shapes.hpp"
 #include "foundation/error.hpp"
 

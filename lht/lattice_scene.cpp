@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <any>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -13,7 +12,7 @@
 #include "lht/canonical_toml.hpp"
 #include "lht/lattice_leaf.hpp"
 #include "lht/lattice_object.hpp"
-#include "lht/polyline.hpp"
+#include "lht/lattice_tables.hpp"
 #include "render/scene_loader.hpp"
 #include "foundation/error.hpp"
 
@@ -21,49 +20,39 @@ namespace lattice::lht {
 
 namespace {
 
-using DefinitionMap = std::map<std::string, LatticeDefinitionPtr>;
-constexpr const char* kExtension = "lht";
+// What one load defines, shared by the parsers of that load's format.
+struct LatticeLoad {
+  std::map<std::string, LatticeDefinitionPtr> byName;
+  std::vector<LatticeDefinitionPtr> inOrder;
+  std::shared_ptr<const LatticeTables> tables;
+};
 
-// `lattice rasterize --scene` collects the definitions a load parses.
-thread_local std::vector<LatticeDefinitionPtr>* capturedDefinitions = nullptr;
-
-class LatticeLeafDesc final : public LeafDesc {
+class LatticeLeafDesc final : public LeafTemplate<LatticeLeafDesc> {
  public:
-  explicit LatticeLeafDesc(LatticeDefinitionPtr definition) : definition_(std::move(definition)) {}
+  LatticeLeafDesc(LatticeDefinitionPtr definition, std::shared_ptr<const LatticeTables> tables)
+      : definition_(std::move(definition)), tables_(std::move(tables)) {}
 
-  PrimitivePtr<float> build(const Mat4d& toWorld, MaterialId m, const BuildOptions& o, float) const override {
-    return buildFor<float>(toWorld, m, o);
-  }
-  PrimitivePtr<double> build(const Mat4d& toWorld, MaterialId m, const BuildOptions& o, double) const override {
-    return buildFor<double>(toWorld, m, o);
-  }
-  PrimitivePtr<Fixed32> build(const Mat4d& toWorld, MaterialId m, const BuildOptions& o, Fixed32) const override {
-    return buildFor<Fixed32>(toWorld, m, o);
+  template <typename T>
+  PrimitivePtr<T> buildAs(const Mat4d& toWorld, MaterialId material, const BuildOptions& options) const {
+    // The full ray trace swaps the lattice for the object it was rasterized from.
+    if (options.fullRayTrace) return buildPrimitive<T>(definition_->object, toWorld, options, material);
+    return makeLatticeLeaf<T>(tables_->table(definition_), toWorld, material,
+                              options.latticeShadows && definition_->shadows);
   }
   Bounds<double> objectBounds() const override { return definition_->objectBounds(); }
   std::string describe() const override { return fmt::format("lattice '{}'", definition_->name); }
 
+  const LatticeDefinitionPtr& definition() const { return definition_; }
+
  private:
-  template <typename T>
-  PrimitivePtr<T> buildFor(const Mat4d& toWorld, MaterialId material, const BuildOptions& options) const {
-    // The full ray trace swaps the lattice for the object it was rasterized from.
-    if (options.fullRayTrace) return buildPrimitive<T>(definition_->object, toWorld, options, material);
-    return makeLatticeLeaf<T>(definition_->table(), toWorld, material,
-                              options.latticeShadows && definition_->shadows);
-  }
   LatticeDefinitionPtr definition_;
+  std::shared_ptr<const LatticeTables> tables_;
 };
 
-DefinitionMap& definitions(ParseContext& context) {
-  std::any& slot = context.extensions()[kExtension];
-  if (!slot.has_value()) slot = DefinitionMap{};
-  return *std::any_cast<DefinitionMap>(&slot);
-}
-
-LatticeDefinitionPtr findDefinition(const toml::table& table, ParseContext& context) {
+LatticeDefinitionPtr findDefinition(const toml::table& table, ParseContext& context, const LatticeLoad& load) {
   const auto name = context.string(table, "lattice");
   if (!name) context.fail(table, "a lattice object needs `lattice = \"NAME\"` naming a [[lattices]] entry");
-  const DefinitionMap& known = definitions(context);
+  const auto& known = load.byName;
   const auto it = known.find(*name);
   if (it == known.end()) {
     std::string names;
@@ -74,7 +63,7 @@ LatticeDefinitionPtr findDefinition(const toml::table& table, ParseContext& cont
   return it->second;
 }
 
-void parseLatticeSection(const toml::node& section, ParseContext& context) {
+void parseLatticeSection(const toml::node& section, ParseContext& context, LatticeLoad& load) {
   const toml::array* list = section.as_array();
   if (!list) context.fail(section, "[[lattices]] must be an array of tables (write `[[lattices]]`)");
   for (const toml::node& entry : *list) {
@@ -107,29 +96,17 @@ void parseLatticeSection(const toml::node& section, ParseContext& context) {
       context.fail(*table, "a [[lattices]] entry needs `object = { type = ..., ... }`, the solid to rasterize");
     def->object = context.parseNode(*object);
     def->objectText = canonicalToml(*object);
-    DefinitionMap& known = definitions(context);
-    if (known.count(def->name)) context.fail(*table->get("name"), fmt::format("lattice '{}' is defined twice", def->name));
-    known[def->name] = def;
-    if (capturedDefinitions) capturedDefinitions->push_back(def);
+    if (load.byName.count(def->name))
+      context.fail(*table->get("name"), fmt::format("lattice '{}' is defined twice", def->name));
+    load.byName[def->name] = def;
+    load.inOrder.push_back(def);
   }
 }
 
-NodeDesc parsePolylineNode(const toml::table& table, ParseContext& context) {
-  context.checkKeys(table, {"points", "radius"}, true);
-  const double radius = context.positiveNumber(table, "radius");
-  const toml::array* list = table.get("points") ? table.get("points")->as_array() : nullptr;
-  if (!list || list->size() < 2)
-    context.fail(table, "a polyline needs `points = [[x, y, z], [x, y, z], ...]` with at least two points");
-  std::vector<Vec3d> points;
-  for (const toml::node& p : *list) points.push_back(context.toVec3(p, "a polyline point"));
-  for (std::size_t i = 1; i < points.size(); ++i)
-    if (points[i] == points[i - 1]) context.fail((*list)[i], "this polyline point repeats the one before it");
-  return NodeDesc::makeLeaf(makePolylineLeafDesc(std::move(points), radius), context.where(table));
-}
-
-NodeDesc parseLatticeNode(const toml::table& table, ParseContext& context) {
+NodeDesc parseLatticeNode(const toml::table& table, ParseContext& context, const LatticeLoad& load) {
   context.checkKeys(table, {"lattice"}, true);
-  return NodeDesc::makeLeaf(makeLatticeLeafDesc(findDefinition(table, context)), context.where(table));
+  return NodeDesc::makeLeaf(std::make_shared<LatticeLeafDesc>(findDefinition(table, context, load), load.tables),
+                            context.where(table));
 }
 
 // The rotation taking +z to `normal`.
@@ -145,9 +122,9 @@ Mat4d alignZ(const Vec3d& normal) {
   return m;
 }
 
-NodeDesc parseScatterNode(const toml::table& table, ParseContext& context) {
+NodeDesc parseScatterNode(const toml::table& table, ParseContext& context, const LatticeLoad& load) {
   context.checkKeys(table, {"lattice", "count", "radius", "seed"}, true);
-  const LatticeDefinitionPtr def = findDefinition(table, context);
+  const LatticeDefinitionPtr def = findDefinition(table, context, load);
   const long long count = context.integer(table, "count").value_or(0);
   if (count < 1 || count > kMaxScatterCount)
     context.fail(table, fmt::format("`count` must be an integer between 1 and {} (how many instances to scatter; "
@@ -157,7 +134,7 @@ NodeDesc parseScatterNode(const toml::table& table, ParseContext& context) {
   const auto seed = static_cast<std::uint64_t>(context.integer(table, "seed").value_or(1));
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> twist(0.0, 2.0 * std::numbers::pi);
-  const LeafDescPtr leaf = makeLatticeLeafDesc(def);
+  const LeafDescPtr leaf = std::make_shared<LatticeLeafDesc>(def, load.tables);
   std::vector<NodeDesc> instances;
   instances.reserve(static_cast<std::size_t>(count));
   const std::string where = context.where(table);
@@ -172,60 +149,6 @@ NodeDesc parseScatterNode(const toml::table& table, ParseContext& context) {
 
 }  // namespace
 
-std::uint64_t LatticeDefinition::hashFor(LhtPrecision form) const {
-  // From our canonical form of the values (lht/canonical_toml.hpp), never a
-  // formatter's output (toml++ 3.3.0's formatter overflowed a float-to-int
-  // cast on small numbers in nested arrays: issue 15). "lattice2" marks the
-  // key's second form: caches keyed by the formatter's text are refused as
-  // rasterized from another definition (docs/lattices.md). The thesis's
-  // precision adds nothing to the key.
-  const std::string formText =
-      form == LhtPrecision::Thesis ? "" : fmt::format(" precision={}", lhtPrecisionName(form));
-  return fnv1a64(fmt::format("lattice2 spacing={} oversample={}{} object={}", canonicalDouble(lambda),
-                             canonicalDouble(oversample), formText, objectText));
-}
-
-LhtFile LatticeDefinition::rasterizeNow(bool progress, RasterStats* stats, unsigned threads) const {
-  try {
-    const LatticeObject solid = sceneObject(object, objectText);
-    LhtFile lht;
-    lht.box = LatticeBox(solid.bounds, lambda, oversample);
-    RasterOptions options;
-    options.progress = progress;
-    options.threads = threads;
-    const RasterResult raster = rasterize(lht.box, *solid.primitive, options);
-    const LhtPrecision form =
-        packing ? packing(raster.hits.size(), raster.hits.capacity() * sizeof(RasterHit)) : precision;
-    lht.objectHash = hashFor(form);
-    lht.pairs = raster.stats.pairs;
-    lht.hits = raster.stats.hits;
-    lht.table = LatticeHashTable(raster.hits, form);
-    if (stats) *stats = raster.stats;
-    return lht;
-  } catch (const Error& e) {
-    throw Error(e.kind(), fmt::format("{}: lattice '{}': {}", origin, name, e.what()));
-  }
-}
-
-const Bounds<double>& LatticeDefinition::objectBounds() const {
-  // Every instance asks; building the exact object once is enough.
-  std::call_once(boundsOnce_, [&] { bounds_ = sceneObject(object, objectText).bounds; });
-  return bounds_;
-}
-
-std::shared_ptr<const LhtFile> LatticeDefinition::table(bool progress) const {
-  std::call_once(once_, [&] {
-    if (cache && std::filesystem::exists(*cache)) {
-      table_ = std::make_shared<const LhtFile>(readLhtFile(*cache, hash(), precision));
-      return;
-    }
-    auto lht = std::make_shared<const LhtFile>(rasterizeNow(progress, nullptr, rasterThreads));
-    if (cache && lht->table.precision() == precision) writeLhtFile(*cache, *lht);
-    table_ = std::move(lht);
-  });
-  return table_;
-}
-
 std::vector<Vec3d> fibonacciSphere(int count) {
   std::vector<Vec3d> points;
   const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
@@ -238,53 +161,71 @@ std::vector<Vec3d> fibonacciSphere(int count) {
   return points;
 }
 
-LeafDescPtr makeLatticeLeafDesc(LatticeDefinitionPtr definition) {
-  return std::make_shared<LatticeLeafDesc>(std::move(definition));
-}
-
-void registerLatticeSceneTypes() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    registerSection("lattices", parseLatticeSection);
-    registerNodeType("lattice", parseLatticeNode);
-    registerNodeType("lattice_scatter", parseScatterNode);
-    registerNodeType("polyline", parsePolylineNode);
-  });
-}
-
 namespace {
 
+// The built-in format plus the lattice section and types, parsing into `load`.
+SceneFormat latticeFormat(const std::shared_ptr<LatticeLoad>& load) {
+  SceneFormat format = builtinSceneFormat();
+  format.addSection("lattices", [load](const toml::node& section, ParseContext& context) {
+    parseLatticeSection(section, context, *load);
+  });
+  format.addNodeType("lattice", [load](const toml::table& table, ParseContext& context) {
+    return parseLatticeNode(table, context, *load);
+  });
+  format.addNodeType("lattice_scatter", [load](const toml::table& table, ParseContext& context) {
+    return parseScatterNode(table, context, *load);
+  });
+  return format;
+}
+
 template <typename Load>
-SceneWithLattices captureDefinitions(Load load) {
-  registerLatticeSceneTypes();
+SceneWithLattices loadWithLattices(const TableSettings& tables, Load load) {
+  auto state = std::make_shared<LatticeLoad>();
+  state->tables = std::make_shared<const LatticeTables>(tables);
   SceneWithLattices found;
-  capturedDefinitions = &found.lattices;
-  try {
-    found.scene = load();
-  } catch (...) {
-    capturedDefinitions = nullptr;
-    throw;
-  }
-  capturedDefinitions = nullptr;
+  found.scene = load(latticeFormat(state));
+  found.lattices = std::move(state->inOrder);
+  found.tables = tables;
   return found;
+}
+
+// A copy of the tree whose lattice leaves use `tables`; a leaf shared by
+// many instances stays shared.
+NodeDesc rebind(const NodeDesc& node, const std::shared_ptr<const LatticeTables>& tables,
+                std::map<const LeafDesc*, LeafDescPtr>& rebound) {
+  NodeDesc copy;
+  copy.kind = node.kind;
+  copy.transform = node.transform;
+  copy.material = node.material;
+  copy.origin = node.origin;
+  copy.leaf = node.leaf;
+  if (const auto* lattice = dynamic_cast<const LatticeLeafDesc*>(node.leaf.get())) {
+    LeafDescPtr& leaf = rebound[node.leaf.get()];
+    if (!leaf) leaf = std::make_shared<LatticeLeafDesc>(lattice->definition(), tables);
+    copy.leaf = leaf;
+  }
+  copy.children.reserve(node.children.size());
+  for (const NodeDesc& child : node.children) copy.children.push_back(rebind(child, tables, rebound));
+  return copy;
 }
 
 }  // namespace
 
-SceneWithLattices loadSceneWithLattices(const std::filesystem::path& sceneFile) {
-  return captureDefinitions([&] { return loadScene(sceneFile); });
+SceneWithLattices loadSceneWithLattices(const std::filesystem::path& sceneFile, const TableSettings& tables) {
+  return loadWithLattices(tables, [&](const SceneFormat& format) { return loadScene(sceneFile, format); });
 }
 
-SceneWithLattices parseSceneWithLattices(std::string_view text, const std::filesystem::path& fileName) {
-  return captureDefinitions([&] { return parseScene(text, fileName); });
+SceneWithLattices parseSceneWithLattices(std::string_view text, const std::filesystem::path& fileName,
+                                         const TableSettings& tables) {
+  return loadWithLattices(tables, [&](const SceneFormat& format) { return parseScene(text, fileName, format); });
 }
 
-std::vector<LatticeDefinitionPtr> loadLatticeDefinitions(const std::filesystem::path& sceneFile) {
-  return loadSceneWithLattices(sceneFile).lattices;
-}
-
-std::vector<LatticeDefinitionPtr> parseLatticeDefinitions(std::string_view text, const std::filesystem::path& fileName) {
-  return parseSceneWithLattices(text, fileName).lattices;
+SceneWithLattices withTableSettings(const SceneWithLattices& loaded, const TableSettings& tables) {
+  SceneWithLattices bound = loaded;
+  std::map<const LeafDesc*, LeafDescPtr> rebound;
+  bound.scene.root = rebind(loaded.scene.root, std::make_shared<const LatticeTables>(tables), rebound);
+  bound.tables = tables;
+  return bound;
 }
 
 }  // namespace lattice::lht

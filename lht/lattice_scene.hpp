@@ -21,27 +21,47 @@
 //   radius = 1.0                 # each instance's object z axis along the normal
 //   seed = 1                     # random twist about that normal
 //
-//   [[objects]]                  # spheres joined by cylinders (hook, hair)
-//   type = "polyline"
-//   points = [[0, 0, 0], [0, 0, 1], [0.2, 0, 2]]
-//   radius = 0.5
+// (`type = "polyline"`, spheres joined by cylinders, is a built-in shape:
+// render/polyline.hpp.)
 //
-// Every instance shares one rasterized table. With BuildOptions.fullRayTrace
-// an instance is built as its exact object instead (the thesis's "full ray
-// trace"); with latticeShadows off, lattices cast no shadows (plate 3).
+// Every instance shares one rasterized table (lht/lattice_tables.hpp), built
+// under the TableSettings the scene was loaded or rebound with. With
+// BuildOptions.fullRayTrace an instance is built as its exact object instead
+// (the thesis's "full ray trace"); with latticeShadows off, lattices cast no
+// shadows (plate 3).
+//
+// Method: the loader (render/scene_loader.hpp) is handed the built-in format
+// plus the lattice section and types, whose parsers keep the definitions of
+// this one load; the load returns the scene and those definitions together.
 #include <filesystem>
-#include <functional>
 #include <memory>
-#include <mutex>
-#include <optional>
-#include <string>
 #include <string_view>
 #include <vector>
 
-#include "lht/lht_file.hpp"
+#include "lht/lattice_definition.hpp"
 #include "render/scene.hpp"
 
 namespace lattice::lht {
+
+// A loaded scene, its [[lattices]] definitions (in file order), and the
+// settings its lattice leaves build their tables under.
+struct SceneWithLattices {
+  SceneDesc scene;
+  std::vector<LatticeDefinitionPtr> lattices;
+  TableSettings tables;
+};
+
+SceneWithLattices loadSceneWithLattices(const std::filesystem::path& sceneFile, const TableSettings& tables = {});
+SceneWithLattices parseSceneWithLattices(std::string_view text, const std::filesystem::path& fileName,
+                                         const TableSettings& tables = {});
+
+// The same scene with its lattice leaves building their tables under
+// `tables` instead (for settings that depend on the loaded scene, such as a
+// memory budget's packing). Shares everything else with `loaded`.
+SceneWithLattices withTableSettings(const SceneWithLattices& loaded, const TableSettings& tables);
+
+// Almost uniformly spaced unit vectors: the Fibonacci (golden-angle) spiral.
+std::vector<Vec3d> fibonacciSphere(int count);
 
 // The most instances one lattice_scatter places (docs/limits.md). Placement
 // is linear (the Fibonacci spiral) and the union's BVH O(n log n), but each
@@ -50,70 +70,5 @@ namespace lattice::lht {
 // render 64x64 in 0.62 s; 10^6 take 2.5 s and 837 MiB before the first ray
 // and 8.3 s for 64x64 (minutes for 512x512).
 inline constexpr long long kMaxScatterCount = 100000;
-
-class LatticeDefinition {
- public:
-  std::string name;
-  double lambda = 1.0;
-  double oversample = 1.0;
-  NodeDesc object;
-  std::string objectText;  // canonical text of the object table (lht/canonical_toml.hpp)
-  std::optional<std::filesystem::path> cache;
-  bool shadows = true;     // false: this lattice casts no shadows (thesis plate 3)
-  // The table's entry form. A plain field: `lattice render --lht-precision`
-  // (or a memory budget) may set it any time before table() first runs.
-  LhtPrecision precision = LhtPrecision::Thesis;
-
-  // Under a memory budget: the entry form to pack a freshly rasterized table
-  // in, given its entry count and the bytes its hit list holds meanwhile
-  // (unset: `precision`). A cache is read as named whatever this says; a
-  // table packed in another form than `precision` is not written to it.
-  std::function<LhtPrecision(std::uint64_t entries, std::uint64_t hitListBytes)> packing;
-  unsigned rasterThreads = 0;  // threads rasterizing the table; 0: all cores
-  std::string origin;      // "scene.toml:12:1"
-
-  // Hash of everything that decides the table's contents (precision
-  // included, so a cache of another precision is stale).
-  std::uint64_t hash() const { return hashFor(precision); }
-  std::uint64_t hashFor(LhtPrecision form) const;
-  // The rasterized table: read from the cache when it matches, else
-  // rasterized (and written to the cache if one is named). Thread-safe; done once.
-  std::shared_ptr<const LhtFile> table(bool progress = true) const;
-  // The object's box in its own coordinates (computed once).
-  const Bounds<double>& objectBounds() const;
-  // Rasterizes now, ignoring any cache.
-  LhtFile rasterizeNow(bool progress, RasterStats* stats = nullptr, unsigned threads = 0) const;
-
- private:
-  mutable std::once_flag once_, boundsOnce_;
-  mutable Bounds<double> bounds_;
-  mutable std::shared_ptr<const LhtFile> table_;
-};
-
-using LatticeDefinitionPtr = std::shared_ptr<LatticeDefinition>;
-
-// Adds the "lattices" section and the "lattice" / "lattice_scatter" node
-// types to the scene loader. Idempotent; call before loadScene().
-void registerLatticeSceneTypes();
-
-// The [[lattices]] definitions of a scene file (for `lattice rasterize --scene`).
-std::vector<LatticeDefinitionPtr> loadLatticeDefinitions(const std::filesystem::path& sceneFile);
-
-// A loaded scene and its [[lattices]] definitions, which the scene's
-// lattice leaves share: changing a definition (its precision, say) before
-// the scene is rendered changes what the render builds.
-struct SceneWithLattices {
-  SceneDesc scene;
-  std::vector<LatticeDefinitionPtr> lattices;
-};
-SceneWithLattices loadSceneWithLattices(const std::filesystem::path& sceneFile);
-SceneWithLattices parseSceneWithLattices(std::string_view text, const std::filesystem::path& fileName);
-std::vector<LatticeDefinitionPtr> parseLatticeDefinitions(std::string_view text, const std::filesystem::path& fileName);
-
-// Almost uniformly spaced unit vectors: the Fibonacci (golden-angle) spiral.
-std::vector<Vec3d> fibonacciSphere(int count);
-
-// A leaf standing for one lattice instance.
-LeafDescPtr makeLatticeLeafDesc(LatticeDefinitionPtr definition);
 
 }  // namespace lattice::lht

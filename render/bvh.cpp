@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "foundation/error.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice {
 
@@ -129,8 +130,8 @@ std::uint32_t Bvh<T>::build(std::vector<Bounds<T>>& centroids, const std::vector
   return index;
 }
 
-template class Bvh<float>;
-template class Bvh<double>;
-template class Bvh<Fixed32>;
+#define LATTICE_INSTANTIATE(T) template class Bvh<T>;
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_INSTANTIATE)
+#undef LATTICE_INSTANTIATE
 
 }  // namespace lattice

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "foundation/bounds.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice {
 
@@ -136,8 +137,8 @@ class Bvh {
   int depth_ = 0;
 };
 
-extern template class Bvh<float>;
-extern template class Bvh<double>;
-extern template class Bvh<Fixed32>;
+#define LATTICE_DECLARE(T) extern template class Bvh<T>;
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_DECLARE)
+#undef LATTICE_DECLARE
 
 }  // namespace lattice

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "foundation/error.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice {
 
@@ -90,8 +91,8 @@ Ray<T> Camera<T>::primaryRay(int x, int y) const {
   }
 }
 
-template class Camera<float>;
-template class Camera<double>;
-template class Camera<Fixed32>;
+#define LATTICE_INSTANTIATE(T) template class Camera<T>;
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_INSTANTIATE)
+#undef LATTICE_INSTANTIATE
 
 }  // namespace lattice

@@ -21,6 +21,7 @@
 
 #include "foundation/ray.hpp"
 #include "foundation/vec.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice {
 
@@ -72,8 +73,8 @@ class Camera {
   Vec3<T> stepYT_{};
 };
 
-extern template class Camera<float>;
-extern template class Camera<double>;
-extern template class Camera<Fixed32>;
+#define LATTICE_DECLARE(T) extern template class Camera<T>;
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_DECLARE)
+#undef LATTICE_DECLARE
 
 }  // namespace lattice

@@ -7,6 +7,7 @@
 #include "render/bvh.hpp"
 #include "render/span_ops.hpp"
 #include "foundation/error.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice {
 
@@ -208,11 +209,10 @@ PrimitivePtr<T> makeCsgNode(CsgOp op, std::vector<PrimitivePtr<T>> children, con
   return node;
 }
 
-template PrimitivePtr<float> makeCsgNode<float>(CsgOp, std::vector<PrimitivePtr<float>>);
-template PrimitivePtr<double> makeCsgNode<double>(CsgOp, std::vector<PrimitivePtr<double>>);
-template PrimitivePtr<float> makeCsgNode<float>(CsgOp, std::vector<PrimitivePtr<float>>, const Bounds<float>&);
-template PrimitivePtr<double> makeCsgNode<double>(CsgOp, std::vector<PrimitivePtr<double>>, const Bounds<double>&);
-template PrimitivePtr<Fixed32> makeCsgNode<Fixed32>(CsgOp, std::vector<PrimitivePtr<Fixed32>>);
-template PrimitivePtr<Fixed32> makeCsgNode<Fixed32>(CsgOp, std::vector<PrimitivePtr<Fixed32>>, const Bounds<Fixed32>&);
+#define LATTICE_INSTANTIATE(T) \
+  template PrimitivePtr<T> makeCsgNode<T>(CsgOp, std::vector<PrimitivePtr<T>>); \
+  template PrimitivePtr<T> makeCsgNode<T>(CsgOp, std::vector<PrimitivePtr<T>>, const Bounds<T>&);
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_INSTANTIATE)
+#undef LATTICE_INSTANTIATE
 
 }  // namespace lattice

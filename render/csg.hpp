@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "render/primitive.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice {
 
@@ -33,13 +34,10 @@ PrimitivePtr<T> makeCsgNode(CsgOp op, std::vector<PrimitivePtr<T>> children);
 template <typename T>
 PrimitivePtr<T> makeCsgNode(CsgOp op, std::vector<PrimitivePtr<T>> children, const Bounds<T>& limit);
 
-extern template PrimitivePtr<float> makeCsgNode<float>(CsgOp, std::vector<PrimitivePtr<float>>);
-extern template PrimitivePtr<double> makeCsgNode<double>(CsgOp, std::vector<PrimitivePtr<double>>);
-extern template PrimitivePtr<float> makeCsgNode<float>(CsgOp, std::vector<PrimitivePtr<float>>, const Bounds<float>&);
-extern template PrimitivePtr<double> makeCsgNode<double>(CsgOp, std::vector<PrimitivePtr<double>>,
-                                                         const Bounds<double>&);
-extern template PrimitivePtr<Fixed32> makeCsgNode<Fixed32>(CsgOp, std::vector<PrimitivePtr<Fixed32>>);
-extern template PrimitivePtr<Fixed32> makeCsgNode<Fixed32>(CsgOp, std::vector<PrimitivePtr<Fixed32>>,
-                                                           const Bounds<Fixed32>&);
+#define LATTICE_DECLARE(T) \
+  extern template PrimitivePtr<T> makeCsgNode<T>(CsgOp, std::vector<PrimitivePtr<T>>); \
+  extern template PrimitivePtr<T> makeCsgNode<T>(CsgOp, std::vector<PrimitivePtr<T>>, const Bounds<T>&);
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_DECLARE)
+#undef LATTICE_DECLARE
 
 }  // namespace lattice

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "foundation/error.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice {
 
@@ -59,8 +60,8 @@ PrimitivePtr<T> makeCapsule(double radius, double length, const Mat4d& objectToW
   return makeCsgNode<T>(CsgOp::Union, std::move(parts), paddedBox<T>(capsuleBox, objectToWorld, pad));
 }
 
-template PrimitivePtr<float> makeCapsule<float>(double, double, const Mat4d&, MaterialId);
-template PrimitivePtr<double> makeCapsule<double>(double, double, const Mat4d&, MaterialId);
-template PrimitivePtr<Fixed32> makeCapsule<Fixed32>(double, double, const Mat4d&, MaterialId);
+#define LATTICE_INSTANTIATE(T) template PrimitivePtr<T> makeCapsule<T>(double, double, const Mat4d&, MaterialId);
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_INSTANTIATE)
+#undef LATTICE_INSTANTIATE
 
 }  // namespace lattice

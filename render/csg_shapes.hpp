@@ -3,6 +3,7 @@
 // rasterization and scenes.
 #include "render/csg.hpp"
 #include "render/shapes.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice {
 
@@ -13,8 +14,8 @@ namespace lattice {
 template <typename T>
 PrimitivePtr<T> makeCapsule(double radius, double length, const Mat4d& objectToWorld, MaterialId material);
 
-extern template PrimitivePtr<float> makeCapsule<float>(double, double, const Mat4d&, MaterialId);
-extern template PrimitivePtr<double> makeCapsule<double>(double, double, const Mat4d&, MaterialId);
-extern template PrimitivePtr<Fixed32> makeCapsule<Fixed32>(double, double, const Mat4d&, MaterialId);
+#define LATTICE_DECLARE(T) extern template PrimitivePtr<T> makeCapsule<T>(double, double, const Mat4d&, MaterialId);
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_DECLARE)
+#undef LATTICE_DECLARE
 
 }  // namespace lattice

@@ -10,6 +10,7 @@
 #include <functional>
 
 #include "render/csg_shapes.hpp"
+#include "render/polyline.hpp"
 #include "render/quartic.hpp"
 #include "render/shapes.hpp"
 #include "foundation/error.hpp"
@@ -19,17 +20,12 @@ namespace lattice {
 namespace {
 
 // A leaf that is a single quartic (thesis 3.2.1).
-class QuarticLeafDesc final : public LeafDesc {
+class QuarticLeafDesc final : public LeafTemplate<QuarticLeafDesc> {
  public:
   QuarticLeafDesc(QuarticShape shape, std::string name) : shape_(std::move(shape)), name_(std::move(name)) {}
-  PrimitivePtr<float> build(const Mat4d& toWorld, MaterialId m, const BuildOptions&, float) const override {
-    return makeQuarticLeaf<float>(shape_.f, shape_.bounds, toWorld, m);
-  }
-  PrimitivePtr<double> build(const Mat4d& toWorld, MaterialId m, const BuildOptions&, double) const override {
-    return makeQuarticLeaf<double>(shape_.f, shape_.bounds, toWorld, m);
-  }
-  PrimitivePtr<Fixed32> build(const Mat4d& toWorld, MaterialId m, const BuildOptions&, Fixed32) const override {
-    return makeQuarticLeaf<Fixed32>(shape_.f, shape_.bounds, toWorld, m);
+  template <typename T>
+  PrimitivePtr<T> buildAs(const Mat4d& toWorld, MaterialId m, const BuildOptions&) const {
+    return makeQuarticLeaf<T>(shape_.f, shape_.bounds, toWorld, m);
   }
   Bounds<double> objectBounds() const override { return shape_.bounds; }
   std::string describe() const override { return name_; }
@@ -40,17 +36,12 @@ class QuarticLeafDesc final : public LeafDesc {
 };
 
 // A capsule: a CSG composite of quartics, built by render/csg_shapes.hpp.
-class CapsuleLeafDesc final : public LeafDesc {
+class CapsuleLeafDesc final : public LeafTemplate<CapsuleLeafDesc> {
  public:
   CapsuleLeafDesc(double radius, double length) : radius_(radius), length_(length) {}
-  PrimitivePtr<float> build(const Mat4d& toWorld, MaterialId m, const BuildOptions&, float) const override {
-    return makeCapsule<float>(radius_, length_, toWorld, m);
-  }
-  PrimitivePtr<double> build(const Mat4d& toWorld, MaterialId m, const BuildOptions&, double) const override {
-    return makeCapsule<double>(radius_, length_, toWorld, m);
-  }
-  PrimitivePtr<Fixed32> build(const Mat4d& toWorld, MaterialId m, const BuildOptions&, Fixed32) const override {
-    return makeCapsule<Fixed32>(radius_, length_, toWorld, m);
+  template <typename T>
+  PrimitivePtr<T> buildAs(const Mat4d& toWorld, MaterialId m, const BuildOptions&) const {
+    return makeCapsule<T>(radius_, length_, toWorld, m);
   }
   Bounds<double> objectBounds() const override {
     return {Vec3d(-radius_, -radius_, -radius_), Vec3d(radius_, radius_, length_ + radius_)};
@@ -129,6 +120,20 @@ NodeDesc parseQuartic(const toml::table& t, ParseContext& ctx) {
   return NodeDesc::makeLeaf(std::make_shared<QuarticLeafDesc>(QuarticShape{f, bounds}, "quartic"), ctx.where(t));
 }
 
+// Spheres joined by cylinders along a path (the thesis's hook and hair).
+NodeDesc parsePolyline(const toml::table& table, ParseContext& context) {
+  context.checkKeys(table, {"points", "radius"}, true);
+  const double radius = context.positiveNumber(table, "radius");
+  const toml::array* list = table.get("points") ? table.get("points")->as_array() : nullptr;
+  if (!list || list->size() < 2)
+    context.fail(table, "a polyline needs `points = [[x, y, z], [x, y, z], ...]` with at least two points");
+  std::vector<Vec3d> points;
+  for (const toml::node& p : *list) points.push_back(context.toVec3(p, "a polyline point"));
+  for (std::size_t i = 1; i < points.size(); ++i)
+    if (points[i] == points[i - 1]) context.fail((*list)[i], "this polyline point repeats the one before it");
+  return NodeDesc::makeLeaf(makePolylineLeafDesc(std::move(points), radius), context.where(table));
+}
+
 }  // namespace
 
 std::map<std::string, NodeParser> builtinNodeTypes() {
@@ -187,6 +192,7 @@ std::map<std::string, NodeParser> builtinNodeTypes() {
     if (length < 0) ctx.fail(*t.get("length"), "'length' of a capsule must be >= 0");
     return NodeDesc::makeLeaf(std::make_shared<CapsuleLeafDesc>(r, length), ctx.where(t));
   };
+  types["polyline"] = parsePolyline;
   types["quartic"] = parseQuartic;
   return types;
 }

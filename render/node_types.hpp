@@ -1,6 +1,6 @@
 #pragma once
 // The table of built-in object types of scene files (render/node_types.cpp).
-// The loader seeds its registry from it; adding a primitive to the format
+// builtinSceneFormat() is made from it; adding a primitive to the format
 // means adding one entry there.
 #include <map>
 #include <string>

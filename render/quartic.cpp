@@ -12,9 +12,12 @@
 #include <limits>
 #include <vector>
 
+#include "render/quartic_arithmetic.hpp"
+#include "render/quartic_arithmetic_fixed.hpp"
 #include "render/roots.hpp"
 #include "foundation/transform_condition.hpp"
 #include "foundation/error.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice {
 
@@ -197,36 +200,9 @@ class QuarticLeaf final : public Primitive<T> {
     const std::string problem = conditionProblemFor<T>(objectToWorld);
     if (!problem.empty()) throw Error(ErrorKind::Input, "quartic: " + problem);
     const Mat4d worldToObject = glm::inverse(objectToWorld);
-    worldToObject_ = Mat4<T>(worldToObject);
+    arithmetic_ = QuarticArithmetic<T>(worldToObject);
     normalMatrix_ = Mat3<T>(glm::inverseTranspose(linear));
     linear_ = Mat3<T>(linear);
-    if constexpr (!kIsIeee<T>) {
-      // Fixed point has an absolute resolution: a world direction of length ~1
-      // carried into the object space of a large object (entries of
-      // world -> object ~ 2^-13 for a radius of 1e4) keeps only 19 of its 32
-      // fraction bits, which measured 6e-5 relative error in t and 7e-4 rad
-      // in the normal. So directions go through the linear part scaled by a
-      // power of two to entries of about 1, and t takes the power back.
-      const glm::dmat3 directionMatrix(worldToObject);
-      double largest = 0.0;
-      for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(directionMatrix[c][r]));
-      // Only matrices with small entries lose bits; large ones keep them.
-      const double shift = std::min(0.0, std::round(std::log2(largest)));
-      const glm::dmat3 scaled = directionMatrix * std::exp2(-shift);
-      worldToObjectDirection_ = Mat3<T>(scaled);
-      tPerScaledS_ = T(std::exp2(-shift));
-      // Points: the entries of world -> object round the same way, so points
-      // use the scaled matrix too, while no partial sum can saturate: each
-      // coordinate's magnitude is at most a quarter of the range divided by
-      // the largest row sum (else the plain matrix is used).
-      double rowSum = 0.0;
-      for (int r = 0; r < 3; ++r)
-        rowSum = std::max(rowSum, std::abs(scaled[0][r]) + std::abs(scaled[1][r]) + std::abs(scaled[2][r]));
-      scaledPointLimit_ = T(std::exp2(29) / std::max(rowSum, 1.0));
-      objectTranslation_ = Vec3<T>(Vec3d(worldToObject[3]));
-      matrixScale_ = T(std::exp2(shift));
-    }
 
     // The point rays are re-based at: the middle of the object box (0 along
     // unbounded axes). Substituting a ray whose origin is far from the surface
@@ -256,36 +232,20 @@ class QuarticLeaf final : public Primitive<T> {
   void spans(const Ray<T>& worldRay, T tmin, T tmax, SpanList<T>& out) const override {
     T c0, c1;
     if (!bounds_.clip(worldRay, tmin, tmax, c0, c1)) return;
-    // The ray in object space as origin + u s, u unit: s = (t - t0) * len
-    // (len is the length of the direction there, scaled in fixed point).
-    T len, t0;
-    Vec3<T> u, base;
-    if constexpr (kIsIeee<T>) {
-      Ray<T> ray = worldRay.transformed(worldToObject_);
-      len = lattice::length(ray.direction);
-      if (!(len > T(0)) || !finite(len)) return;
-      u = ray.direction / len;
-      // t0: where the ray passes closest to the pivot.
-      t0 = lattice::dot(pivot_ - ray.origin, u) / len;
-      base = ray.origin + ray.direction * t0;
-    } else {
-      const Vec3<T> origin = toObjectPoint(worldRay.origin);
-      const Vec3<T> direction = worldToObjectDirection_ * worldRay.direction;
-      len = lattice::length(direction);
-      if (!(len > T(0)) || !finite(len)) return;
-      u = direction / len;
-      const T toPivot = lattice::dot(pivot_ - origin, u);
-      t0 = sToT(toPivot, len);
-      base = origin + u * toPivot;
-    }
+    // The ray in object space as base + u s, u unit, re-based near the pivot.
+    ObjectRay<T> ray;
+    if (!arithmetic_.toObject(worldRay, pivot_, ray)) return;
+    const Vec3<T>& base = ray.base;
+    const Vec3<T>& u = ray.u;
+    const T len = ray.len, t0 = ray.t0;
 
-    // Fixed point: the substituted coefficients and every intermediate of
-    // substitute() are bounded by sum |a_ijk| Mx^i My^j Mz^k, M = |base| + 1
-    // per axis (|u| <= 1 per component). Where that bound leaves the Q31.32 range
-    // the results would be saturated garbage, so the ray misses this leaf
+    // The substituted coefficients and every intermediate of substitute() are
+    // bounded by sum |a_ijk| Mx^i My^j Mz^k, M = |base| + 1 per axis (|u| <= 1
+    // per component). In an arithmetic of limited range (fixed point) results
+    // beyond it would be saturated garbage, so the ray misses this leaf
     // instead (docs/fixed-point.md, "Where fixed point cannot follow").
-    if constexpr (!kIsIeee<T>)
-      if (!withinFixedRange(base)) return;
+    if constexpr (QuarticArithmetic<T>::kChecksRange)
+      if (!withinRange(base)) return;
 
     T coeff[5];
     substitute(base, u, coeff);
@@ -344,7 +304,7 @@ class QuarticLeaf final : public Primitive<T> {
     return out;
   }
 
-  bool withinFixedRange(const Vec3<T>& base) const {
+  bool withinRange(const Vec3<T>& base) const {
     T px[5], py[5], pz[5];
     powers(absolute(base.x) + T(1), px);
     powers(absolute(base.y) + T(1), py);
@@ -359,11 +319,7 @@ class QuarticLeaf final : public Primitive<T> {
     return true;
   }
 
-  // The neighbour of x towards `to` (one ulp, or one raw step in fixed point).
-  static T nextToward(T x, T to) {
-    if constexpr (kIsIeee<T>) return std::nextafter(x, to);
-    else return x < to ? x + std::numeric_limits<T>::epsilon() : x - std::numeric_limits<T>::epsilon();
-  }
+  static T nextToward(T x, T to) { return QuarticArithmetic<T>::nextToward(x, to); }
 
   // f(base + u s) as c[0] + c[1] s + ... + c[4] s^4: exact symbolic expansion.
   void substitute(const Vec3<T>& base, const Vec3<T>& u, T c[5]) const {
@@ -385,18 +341,7 @@ class QuarticLeaf final : public Primitive<T> {
     }
   }
 
-  // Fixed point: a world point in object space (see the constructor).
-  Vec3<T> toObjectPoint(const Vec3<T>& p) const {
-    const T m = std::max({absolute(p.x), absolute(p.y), absolute(p.z)});
-    if (m > scaledPointLimit_) return transformPoint(worldToObject_, p);
-    return (worldToObjectDirection_ * p) * matrixScale_ + objectTranslation_;
-  }
-
-  // The t a distance s along u corresponds to (see spans()).
-  T sToT(T s, T len) const {
-    if constexpr (kIsIeee<T>) return s / len;
-    else return (s / len) * tPerScaledS_;
-  }
+  T sToT(T s, T len) const { return arithmetic_.sToT(s, len); }
 
   // `facing` is -1 for an enter and +1 for a leave: the side a normal must
   // face when the gradient vanishes.
@@ -432,18 +377,9 @@ class QuarticLeaf final : public Primitive<T> {
 
   std::vector<Term<T>> terms_;
   std::vector<YZGroup<T>> groups_;
-  Mat4<T> worldToObject_{};
+  QuarticArithmetic<T> arithmetic_;  // world -> object for rays
   Mat3<T> normalMatrix_{};
   Mat3<T> linear_{};  // object -> world for directions
-  // Fixed point only (see the constructor): the linear part of
-  // world -> object divided by matrixScale_ (a power of two), its
-  // translation, the largest coordinate a point may have to go through it,
-  // and 1 / matrixScale_, which turns s / len into t.
-  Mat3<T> worldToObjectDirection_{};
-  T matrixScale_{1};
-  Vec3<T> objectTranslation_{};
-  T scaledPointLimit_{0};
-  T tPerScaledS_{1};
   Vec3<T> pivot_{};
   Bounds<T> bounds_;
   MaterialId material_;
@@ -451,75 +387,15 @@ class QuarticLeaf final : public Primitive<T> {
 
 }  // namespace
 
-namespace {
-
-// Fixed point has an absolute resolution (2^-32), so a polynomial whose
-// coefficients are tiny or huge loses them: a torus of radius 1e4 has an x^4
-// coefficient of 1e-8, 43 units of 2^-32. This re-scales the object space by
-// a power of two S near the object's size (x = S x') and the polynomial by a
-// power of two (same zero set and signs) so its largest coefficient is about
-// 1; the leaf's transform takes S back, so t and the world geometry are
-// unchanged. Done once, in double, at build time.
-struct NormalizedQuartic {
-  QuarticPolynomial f;
-  Bounds<double> bounds;
-  Mat4d objectToWorld;
-};
-
-// An unbounded shape (a floor, a cylinder) has no box to measure; its size is
-// the length at which its constant term balances its highest-degree terms:
-// 1e4 for the floor y > -1e4, the radius for a cylinder. Without it, that
-// floor's y coefficient became 2^-13 after normalization and its hits were
-// off by 5e-6 relative (measured). 0 when there is no constant term.
-double naturalLength(const QuarticPolynomial& f) {
-  const int degree = f.degree();
-  double top = 0.0;
-  for (int n = 1; n < QuarticPolynomial::kTerms; ++n) {
-    const auto e = QuarticPolynomial::exponents(n);
-    if (e[0] + e[1] + e[2] == degree) top = std::max(top, std::abs(f.a[static_cast<std::size_t>(n)]));
-  }
-  if (degree < 1 || !(top > 0.0)) return 0.0;
-  return std::pow(std::abs(f.a[0]) / top, 1.0 / degree);
-}
-
-NormalizedQuartic normalizeForFixedPoint(const QuarticPolynomial& f, const Bounds<double>& objectBounds,
-                                         const Mat4d& objectToWorld) {
-  double size = 0.0;
-  bool finiteBox = !objectBounds.empty();
-  for (int ax = 0; ax < 3; ++ax) {
-    if (!std::isfinite(objectBounds.lo[ax]) || !std::isfinite(objectBounds.hi[ax])) finiteBox = false;
-    else size = std::max({size, std::abs(objectBounds.lo[ax]), std::abs(objectBounds.hi[ax])});
-  }
-  if (!finiteBox) size = naturalLength(f);
-  const double s = size > 0.0 && std::isfinite(size) ? std::exp2(std::round(std::log2(size))) : 1.0;
-  NormalizedQuartic out{{}, objectBounds, objectToWorld};
-  double largest = 0.0;
-  for (int n = 0; n < QuarticPolynomial::kTerms; ++n) {
-    const auto e = QuarticPolynomial::exponents(n);
-    const double v = f.a[static_cast<std::size_t>(n)] * std::pow(s, e[0] + e[1] + e[2]);
-    out.f.a[static_cast<std::size_t>(n)] = v;
-    if (std::isfinite(v)) largest = std::max(largest, std::abs(v));
-  }
-  if (largest > 0.0) out.f *= std::exp2(-std::round(std::log2(largest)));
-  if (!objectBounds.empty()) out.bounds = {objectBounds.lo / s, objectBounds.hi / s};  // +-inf stays
-  Mat4d scale(1.0);
-  scale[0][0] = scale[1][1] = scale[2][2] = s;
-  out.objectToWorld = objectToWorld * scale;
-  return out;
-}
-
-}  // namespace
-
 template <typename T>
 PrimitivePtr<T> makeQuarticLeaf(const QuarticPolynomial& original, const Bounds<double>& originalBounds,
                                 const Mat4d& originalToWorld, MaterialId material) {
-  NormalizedQuartic leaf{original, originalBounds, originalToWorld};
-  if constexpr (!kIsIeee<T>) leaf = normalizeForFixedPoint(original, originalBounds, originalToWorld);
+  const QuarticPlacement leaf = QuarticArithmetic<T>::prepare({original, originalBounds, originalToWorld});
   const QuarticPolynomial& f = leaf.f;
   const Mat4d& objectToWorld = leaf.objectToWorld;
   // Values are converted to T once here; one that T cannot hold would be an
   // undefined conversion, so it is refused with the fix.
-  const char* hint = kIsIeee<T> ? "" : " (--arith fixed holds magnitudes below 2^31 = 2.1e9; use --arith double)";
+  const char* hint = QuarticArithmetic<T>::kRangeHint;
   const double big = static_cast<double>(std::numeric_limits<T>::max());
   for (double c : f.a)
     if (!std::isfinite(c) || std::abs(c) > big)
@@ -538,11 +414,10 @@ PrimitivePtr<T> makeQuarticLeaf(const QuarticPolynomial& original, const Bounds<
   return std::make_unique<QuarticLeaf<T>>(f, leaf.bounds, objectToWorld, material);
 }
 
-template PrimitivePtr<float> makeQuarticLeaf<float>(const QuarticPolynomial&, const Bounds<double>&, const Mat4d&,
-                                                    MaterialId);
-template PrimitivePtr<double> makeQuarticLeaf<double>(const QuarticPolynomial&, const Bounds<double>&, const Mat4d&,
-                                                      MaterialId);
-template PrimitivePtr<Fixed32> makeQuarticLeaf<Fixed32>(const QuarticPolynomial&, const Bounds<double>&, const Mat4d&,
-                                                        MaterialId);
+#define LATTICE_INSTANTIATE(T)                                                                                  \
+  template PrimitivePtr<T> makeQuarticLeaf<T>(const QuarticPolynomial&, const Bounds<double>&, const Mat4d&, \
+                                              MaterialId);
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_INSTANTIATE)
+#undef LATTICE_INSTANTIATE
 
 }  // namespace lattice

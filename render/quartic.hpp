@@ -10,6 +10,7 @@
 
 #include "render/primitive.hpp"
 #include "foundation/vec.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice {
 
@@ -63,11 +64,10 @@ template <typename T>
 PrimitivePtr<T> makeQuarticLeaf(const QuarticPolynomial& f, const Bounds<double>& objectBounds,
                                 const Mat4d& objectToWorld, MaterialId material);
 
-extern template PrimitivePtr<float> makeQuarticLeaf<float>(const QuarticPolynomial&, const Bounds<double>&,
-                                                           const Mat4d&, MaterialId);
-extern template PrimitivePtr<double> makeQuarticLeaf<double>(const QuarticPolynomial&, const Bounds<double>&,
-                                                             const Mat4d&, MaterialId);
-extern template PrimitivePtr<Fixed32> makeQuarticLeaf<Fixed32>(const QuarticPolynomial&, const Bounds<double>&,
-                                                               const Mat4d&, MaterialId);
+#define LATTICE_DECLARE(T)                                                                                        \
+  extern template PrimitivePtr<T> makeQuarticLeaf<T>(const QuarticPolynomial&, const Bounds<double>&, const Mat4d&, \
+                                                     MaterialId);
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_DECLARE)
+#undef LATTICE_DECLARE
 
 }  // namespace lattice

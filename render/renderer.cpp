@@ -7,6 +7,7 @@
 
 #include "foundation/error.hpp"
 #include "foundation/progress.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice {
 
@@ -167,11 +168,10 @@ RgbImage renderImage(Renderer<T>& renderer, Progress* progress) {
   return image;
 }
 
-template class Renderer<float>;
-template class Renderer<double>;
-template class Renderer<Fixed32>;
-template RgbImage renderImage<float>(Renderer<float>&, Progress*);
-template RgbImage renderImage<double>(Renderer<double>&, Progress*);
-template RgbImage renderImage<Fixed32>(Renderer<Fixed32>&, Progress*);
+#define LATTICE_INSTANTIATE(T) \
+  template class Renderer<T>; \
+  template RgbImage renderImage<T>(Renderer<T>&, Progress*);
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_INSTANTIATE)
+#undef LATTICE_INSTANTIATE
 
 }  // namespace lattice

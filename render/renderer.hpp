@@ -23,6 +23,7 @@
 #include "render/camera.hpp"
 #include "render/scene.hpp"
 #include "render/shading.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice {
 
@@ -108,9 +109,9 @@ class Renderer final : public RowSource18 {
   std::vector<Color18> band_;
 };
 
-extern template class Renderer<float>;
-extern template class Renderer<double>;
-extern template class Renderer<Fixed32>;
+#define LATTICE_DECLARE(T) extern template class Renderer<T>;
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_DECLARE)
+#undef LATTICE_DECLARE
 
 // Renders every row into an 8-bit image (each channel round(v * 255) of the
 // full-precision value, not of the 18-bit one) on the renderer's threads,
@@ -118,8 +119,8 @@ extern template class Renderer<Fixed32>;
 template <typename T>
 RgbImage renderImage(Renderer<T>& renderer, Progress* progress = nullptr);
 
-extern template RgbImage renderImage<float>(Renderer<float>&, Progress*);
-extern template RgbImage renderImage<double>(Renderer<double>&, Progress*);
-extern template RgbImage renderImage<Fixed32>(Renderer<Fixed32>&, Progress*);
+#define LATTICE_DECLARE(T) extern template RgbImage renderImage<T>(Renderer<T>&, Progress*);
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_DECLARE)
+#undef LATTICE_DECLARE
 
 }  // namespace lattice

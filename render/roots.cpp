@@ -35,6 +35,7 @@
 
 #include "render/roots_fixed.hpp"
 #include "foundation/error.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice::roots_detail {
 // How many solves needed the isolation fallback since start-up; read by the
@@ -798,20 +799,13 @@ T evaluatePolynomial(std::span<const T> coeffs, T x) {
   }
 }
 
-template int solveQuadratic<float>(const float[3], float[2]);
-template int solveQuadratic<double>(const double[3], double[2]);
-template int solveCubic<float>(const float[4], float[3]);
-template int solveCubic<double>(const double[4], double[3]);
-template int solveQuartic<float>(const float[5], float[4]);
-template int solveQuartic<double>(const double[5], double[4]);
-template int solvePolynomial<float>(std::span<const float>, float[4]);
-template int solvePolynomial<double>(std::span<const double>, double[4]);
-template float evaluatePolynomial<float>(std::span<const float>, float);
-template double evaluatePolynomial<double>(std::span<const double>, double);
-template int solveQuadratic<Fixed32>(const Fixed32[3], Fixed32[2]);
-template int solveCubic<Fixed32>(const Fixed32[4], Fixed32[3]);
-template int solveQuartic<Fixed32>(const Fixed32[5], Fixed32[4]);
-template int solvePolynomial<Fixed32>(std::span<const Fixed32>, Fixed32[4]);
-template Fixed32 evaluatePolynomial<Fixed32>(std::span<const Fixed32>, Fixed32);
+#define LATTICE_INSTANTIATE(T) \
+  template int solveQuadratic<T>(const T[3], T[2]); \
+  template int solveCubic<T>(const T[4], T[3]); \
+  template int solveQuartic<T>(const T[5], T[4]); \
+  template int solvePolynomial<T>(std::span<const T>, T[4]); \
+  template T evaluatePolynomial<T>(std::span<const T>, T);
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_INSTANTIATE)
+#undef LATTICE_INSTANTIATE
 
 }  // namespace lattice

@@ -5,6 +5,7 @@
 #include "render/csg.hpp"
 #include "foundation/transform_condition.hpp"
 #include "foundation/error.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice {
 
@@ -55,7 +56,7 @@ PrimitivePtr<T> buildPrimitive(const NodeDesc& node, const Mat4d& parentToWorld,
     if (!problem.empty()) throw Error(ErrorKind::Input, fmt::format("{}: {}", where, problem));
     PrimitivePtr<T> p;
     try {
-      p = node.leaf->build(toWorld, material, options, T{});
+      p = node.leaf->template build<T>(toWorld, material, options);
     } catch (const Error& e) {
       // Leaves report what is wrong but not where; name the object, unless
       // the message already names a place in the scene file.
@@ -81,9 +82,9 @@ PrimitivePtr<T> buildPrimitive(const NodeDesc& node, const Mat4d& parentToWorld,
   return makeCsgNode<T>(op, std::move(children));
 }
 
-template PrimitivePtr<float> buildPrimitive<float>(const NodeDesc&, const Mat4d&, const BuildOptions&, MaterialId);
-template PrimitivePtr<double> buildPrimitive<double>(const NodeDesc&, const Mat4d&, const BuildOptions&, MaterialId);
-template PrimitivePtr<Fixed32> buildPrimitive<Fixed32>(const NodeDesc&, const Mat4d&, const BuildOptions&,
-                                                       MaterialId);
+#define LATTICE_INSTANTIATE(T) \
+  template PrimitivePtr<T> buildPrimitive<T>(const NodeDesc&, const Mat4d&, const BuildOptions&, MaterialId);
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_INSTANTIATE)
+#undef LATTICE_INSTANTIATE
 
 }  // namespace lattice

@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "foundation/bounds.hpp"
@@ -20,6 +21,7 @@
 #include "render/material.hpp"
 #include "render/primitive.hpp"
 #include "foundation/vec.hpp"
+#include "foundation/arithmetics.hpp"
 
 namespace lattice {
 
@@ -33,22 +35,51 @@ struct BuildOptions {
   bool latticeShadows = true;
 };
 
-// A leaf of the CSG tree: something that can build an intersector for itself.
-// The two build() overloads differ only in the scalar type; the last argument
-// is a tag selecting it (pass T{}).
+// The result slot of one LeafDesc::build, for the arithmetic T asked for.
+template <typename T>
+struct BuiltLeaf {
+  PrimitivePtr<T> primitive;
+};
+
+// A leaf of the CSG tree: something that can build an intersector for itself
+// in every arithmetic (foundation/arithmetics.hpp). Leaves derive from
+// LeafTemplate below and write their build once, as a template.
 class LeafDesc {
  public:
   virtual ~LeafDesc() = default;
-  virtual PrimitivePtr<float> build(const Mat4d& objectToWorld, MaterialId material, const BuildOptions& options,
-                                    float tag) const = 0;
-  virtual PrimitivePtr<double> build(const Mat4d& objectToWorld, MaterialId material, const BuildOptions& options,
-                                     double tag) const = 0;
-  virtual PrimitivePtr<Fixed32> build(const Mat4d& objectToWorld, MaterialId material, const BuildOptions& options,
-                                      Fixed32 tag) const = 0;
+  template <typename T>
+  PrimitivePtr<T> build(const Mat4d& objectToWorld, MaterialId material, const BuildOptions& options) const {
+    ArithmeticVariant<BuiltLeaf> out{std::in_place_type<BuiltLeaf<T>>};
+    buildInto(objectToWorld, material, options, out);
+    return std::move(std::get<BuiltLeaf<T>>(out).primitive);
+  }
   // The solid's box in its own (object) coordinates; may be infinite.
   virtual Bounds<double> objectBounds() const = 0;
   // A short human-readable name for messages ("sphere", "lattice 'hair'").
   virtual std::string describe() const = 0;
+
+ protected:
+  // Fills the slot `out` holds (its alternative names the arithmetic).
+  virtual void buildInto(const Mat4d& objectToWorld, MaterialId material, const BuildOptions& options,
+                         ArithmeticVariant<BuiltLeaf>& out) const = 0;
+};
+
+// A leaf written once as a template: Derived provides
+//   template <typename T>
+//   PrimitivePtr<T> buildAs(const Mat4d& objectToWorld, MaterialId, const BuildOptions&) const;
+// and this class dispatches every arithmetic of the list to it, so adding an
+// arithmetic touches no leaf.
+template <typename Derived>
+class LeafTemplate : public LeafDesc {
+ protected:
+  void buildInto(const Mat4d& objectToWorld, MaterialId material, const BuildOptions& options,
+                 ArithmeticVariant<BuiltLeaf>& out) const final {
+    std::visit(
+        [&]<typename T>(BuiltLeaf<T>& slot) {
+          slot.primitive = static_cast<const Derived&>(*this).template buildAs<T>(objectToWorld, material, options);
+        },
+        out);
+  }
 };
 
 using LeafDescPtr = std::shared_ptr<const LeafDesc>;
@@ -104,11 +135,9 @@ template <typename T>
 PrimitivePtr<T> buildPrimitive(const NodeDesc& node, const Mat4d& parentToWorld, const BuildOptions& options,
                                MaterialId inherited = 0);
 
-extern template PrimitivePtr<float> buildPrimitive<float>(const NodeDesc&, const Mat4d&, const BuildOptions&,
-                                                          MaterialId);
-extern template PrimitivePtr<double> buildPrimitive<double>(const NodeDesc&, const Mat4d&, const BuildOptions&,
-                                                            MaterialId);
-extern template PrimitivePtr<Fixed32> buildPrimitive<Fixed32>(const NodeDesc&, const Mat4d&, const BuildOptions&,
-                                                              MaterialId);
+#define LATTICE_DECLARE(T) \
+  extern template PrimitivePtr<T> buildPrimitive<T>(const NodeDesc&, const Mat4d&, const BuildOptions&, MaterialId);
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_DECLARE)
+#undef LATTICE_DECLARE
 
 }  // namespace lattice

@@ -4,7 +4,6 @@
 #include <fmt/ranges.h>
 
 #include <cmath>
-#include <mutex>
 #include <vector>
 
 #include "render/node_types.hpp"
@@ -15,19 +14,6 @@
 namespace lattice {
 
 namespace {
-
-// The registries. A mutex because modules may register from several threads
-// in tests; loads copy nothing, they look up under the same lock.
-struct Registry {
-  std::mutex mutex;
-  std::map<std::string, NodeParser> nodeTypes = builtinNodeTypes();
-  std::vector<std::pair<std::string, SectionParser>> sections;
-};
-
-Registry& registry() {
-  static Registry instance;
-  return instance;
-}
 
 // Keys every object table may have, handled by parseNode itself.
 constexpr std::string_view kCommonNodeKeys[] = {"type", "name", "material", "translate", "rotate", "scale", "matrix"};
@@ -105,32 +91,25 @@ Mat4d rotation(const Vec3d& axis, double degrees) {
 
 }  // namespace
 
-void registerNodeType(std::string type, NodeParser parser) {
-  Registry& r = registry();
-  std::lock_guard lock(r.mutex);
-  r.nodeTypes[std::move(type)] = std::move(parser);
+void SceneFormat::addNodeType(std::string type, NodeParser parser) {
+  nodeTypes[std::move(type)] = std::move(parser);
 }
 
-void registerSection(std::string name, SectionParser parser) {
-  Registry& r = registry();
-  std::lock_guard lock(r.mutex);
-  for (auto& [existing, p] : r.sections)
+void SceneFormat::addSection(std::string name, SectionParser parser) {
+  for (auto& [existing, p] : sections)
     if (existing == name) {
       p = std::move(parser);
       return;
     }
-  r.sections.emplace_back(std::move(name), std::move(parser));
+  sections.emplace_back(std::move(name), std::move(parser));
 }
 
-bool isNodeTypeRegistered(const std::string& type) {
-  Registry& r = registry();
-  std::lock_guard lock(r.mutex);
-  return r.nodeTypes.count(type) != 0;
-}
+SceneFormat builtinSceneFormat() { return SceneFormat{builtinNodeTypes(), {}}; }
 
 // ---------------------------------------------------------------- ParseContext
 
-ParseContext::ParseContext(std::filesystem::path file, SceneDesc& scene) : file_(std::move(file)), scene_(scene) {}
+ParseContext::ParseContext(std::filesystem::path file, SceneDesc& scene, const SceneFormat& format)
+    : file_(std::move(file)), scene_(scene), format_(format) {}
 
 std::string ParseContext::where(const toml::node& node) const {
   const auto& begin = node.source().begin;
@@ -322,18 +301,13 @@ NodeDesc ParseContext::parseNode(const toml::node& objectNode) {
   if (!typeString) fail(*typeNode, fmt::format("'type' must be a string, not {}", typeName(*typeNode)));
   const std::string type = typeString->get();
 
-  NodeParser parser;
-  {
-    Registry& r = registry();
-    std::lock_guard lock(r.mutex);
-    auto it = r.nodeTypes.find(type);
-    if (it == r.nodeTypes.end()) {
-      std::vector<std::string> known;
-      for (auto& [name, p] : r.nodeTypes) known.push_back(name);
-      fail(*typeNode, fmt::format("unknown object type '{}'; expected one of: {}", type, fmt::join(known, ", ")));
-    }
-    parser = it->second;
+  const auto found = format_.nodeTypes.find(type);
+  if (found == format_.nodeTypes.end()) {
+    std::vector<std::string> known;
+    for (auto& [name, p] : format_.nodeTypes) known.push_back(name);
+    fail(*typeNode, fmt::format("unknown object type '{}'; expected one of: {}", type, fmt::join(known, ", ")));
   }
+  const NodeParser& parser = found->second;
   (void)string(*table, "name");  // only type-checked: names are for the reader
   const Mat4d local = transform(*table);
   std::optional<MaterialId> materialId;
@@ -445,17 +419,11 @@ const toml::table& requireTable(const toml::node& n, std::string_view name, Pars
   return *t;
 }
 
-SceneDesc parseTable(const toml::table& root, const std::filesystem::path& file) {
+SceneDesc parseTable(const toml::table& root, const std::filesystem::path& file, const SceneFormat& format) {
   SceneDesc scene;
   scene.source = file;
-  ParseContext ctx(file, scene);
-
-  std::vector<std::pair<std::string, SectionParser>> sections;
-  {
-    Registry& r = registry();
-    std::lock_guard lock(r.mutex);
-    sections = r.sections;
-  }
+  ParseContext ctx(file, scene, format);
+  const auto& sections = format.sections;
   for (auto&& [key, value] : root) {
     const std::string_view k = key.str();
     bool known = false;
@@ -492,7 +460,7 @@ SceneDesc parseTable(const toml::table& root, const std::filesystem::path& file)
 
 }  // namespace
 
-SceneDesc parseScene(std::string_view text, const std::filesystem::path& fileName) {
+SceneDesc parseScene(std::string_view text, const std::filesystem::path& fileName, const SceneFormat& format) {
   checkSceneText(text, fileName.string());  // before toml++ sees it: render/scene_text.hpp
   toml::table root;
   try {
@@ -502,12 +470,12 @@ SceneDesc parseScene(std::string_view text, const std::filesystem::path& fileNam
                                          static_cast<long>(e.source().begin.column),
                                          fmt::format("not valid TOML: {}", e.description())));
   }
-  return parseTable(root, fileName);
+  return parseTable(root, fileName, format);
 }
 
-SceneDesc loadScene(const std::filesystem::path& file) {
+SceneDesc loadScene(const std::filesystem::path& file, const SceneFormat& format) {
   // Read whole (at most kMaxSceneBytes), so the text can be checked first.
-  return parseScene(readSceneText(file.string()), file);
+  return parseScene(readSceneText(file.string()), file, format);
 }
 
 }  // namespace lattice

@@ -1,23 +1,21 @@
 #pragma once
 // Scene files (TOML, docs/scene-format.md) -> SceneDesc.
 //
-// Two registries make the format extensible without touching the loader:
+// What a file may say is a value, a SceneFormat, handed to the loader; there
+// is no global registry. builtinSceneFormat() holds the built-in shapes and
+// set operations (render/node_types.cpp). A module above render/ extends a
+// copy: lht/ adds the [[lattices]] section and the lattice object types
+// (lht/lattice_scene.hpp), with parsers that keep what one load defines in
+// state they own, so the load returns the scene and the lattices together.
 // * node types: `type = "sphere"` in [[objects]] (or in `children`) is looked
-//   up in ONE table of NodeParser functions. render/node_types.cpp registers
-//   the built-in shapes and set operations; other modules (lht/) add theirs
-//   with registerNodeType("lattice", ...).
-// * top-level sections: registerSection("lattices", ...) claims a section
-//   the loader does not know. Registered sections are parsed after [options],
-//   [materials.*], [camera] and [[lights]] and before [[objects]], in
-//   registration order, so node parsers can use what a section defined.
-//
-// Registration must happen before loadScene() is called (e.g. from main or a
-// module's init function); a static-library object that only registers
-// itself from a static initializer may be dropped by the linker.
+//   up in the format's table of NodeParser functions.
+// * top-level sections: a SectionParser claims a section the loader does not
+//   know. Sections are parsed after [options], [materials.*], [camera] and
+//   [[lights]] and before [[objects]], in the order they were added, so node
+//   parsers can use what a section defined.
 //
 // Every mistake in a file is a lattice::Error(ErrorKind::Input) whose message
 // starts "path:line:column:" and says what was expected.
-#include <any>
 #include <filesystem>
 #include <functional>
 #include <initializer_list>
@@ -25,6 +23,8 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include <toml++/toml.h>
 
@@ -42,19 +42,29 @@ using NodeParser = std::function<NodeDesc(const toml::table& table, ParseContext
 // Parses a registered top-level section (a table or an array of tables).
 using SectionParser = std::function<void(const toml::node& section, ParseContext& context)>;
 
-void registerNodeType(std::string type, NodeParser parser);
-void registerSection(std::string name, SectionParser parser);
-bool isNodeTypeRegistered(const std::string& type);
+// The object types and extra sections a scene file may use.
+struct SceneFormat {
+  std::map<std::string, NodeParser> nodeTypes;
+  std::vector<std::pair<std::string, SectionParser>> sections;  // in parsing order
 
-SceneDesc loadScene(const std::filesystem::path& file);
+  // Adds or replaces a type; adds a section (replacing one of that name in place).
+  void addNodeType(std::string type, NodeParser parser);
+  void addSection(std::string name, SectionParser parser);
+};
+
+// The built-in shapes and set operations, no extra sections.
+SceneFormat builtinSceneFormat();
+
+SceneDesc loadScene(const std::filesystem::path& file, const SceneFormat& format = builtinSceneFormat());
 // Same, from text in memory; `fileName` is used in messages.
-SceneDesc parseScene(std::string_view text, const std::filesystem::path& fileName);
+SceneDesc parseScene(std::string_view text, const std::filesystem::path& fileName,
+                     const SceneFormat& format = builtinSceneFormat());
 
-// What parsers get: the file, the scene so far, checked accessors that throw
-// located errors, and a place to keep per-load state of extension modules.
+// What parsers get: the file, the scene so far, and checked accessors that
+// throw located errors.
 class ParseContext {
  public:
-  ParseContext(std::filesystem::path file, SceneDesc& scene);
+  ParseContext(std::filesystem::path file, SceneDesc& scene, const SceneFormat& format);
 
   const std::filesystem::path& file() const { return file_; }
   SceneDesc& scene() { return scene_; }
@@ -99,13 +109,10 @@ class ParseContext {
   // `children = [ {...}, ... ]` of a set operation.
   std::vector<NodeDesc> parseChildren(const toml::table& table, std::string_view key = "children");
 
-  // Per-load state of extension modules, keyed by module name.
-  std::map<std::string, std::any>& extensions() { return extensions_; }
-
  private:
   std::filesystem::path file_;
   SceneDesc& scene_;
-  std::map<std::string, std::any> extensions_;
+  const SceneFormat& format_;
   int depth_ = 0;  // nesting guard: a runaway recursion is an error, not a crash
 };
 

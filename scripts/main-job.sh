@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The main job: install what is missing, build, and render the default scene
 # (the thesis's Plate 6, a sphere with 1000 lattice hairs) through the
-# Tektronix 4125 driver to a command stream file, plus the PNG the emulator
-# draws from that very stream, and a truecolour PNG for comparison.
+# Tektronix 4125 driver (its default, strict profile: docs/tek-sources.md) to a
+# command stream file, plus the PNG the emulator draws from that very stream,
+# and a truecolour PNG for comparison.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh

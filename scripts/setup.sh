@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# Installs the Debian packages Lattice builds with, only those missing, so it is
-# safe to run again and again. `--bench` adds the peers the benchmarks compare
-# against (POV-Ray, Embree, pngquant, GNU time).
+# Installs the Debian packages Lattice builds and tests with, only those
+# missing, so it is safe to run again and again. gnuplot-nox: the Tek 4125
+# emulator's tests decode the streams its tek410x and tek40xx terminals
+# write. `--bench` adds the peers the benchmarks compare against (POV-Ray,
+# Embree, pngquant, GNU time).
 set -euo pipefail
 
 packages=(cmake g++ make pkg-config git catch2 libglm-dev libpng-dev libusb-1.0-0-dev
-          libtomlplusplus-dev libcli11-dev libfmt-dev)
+          libtomlplusplus-dev libcli11-dev libfmt-dev gnuplot-nox)
 if [[ "${1:-}" == "--bench" ]]; then
   packages+=(povray libembree-dev pngquant time python3)
 fi

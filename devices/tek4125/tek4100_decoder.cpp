@@ -11,7 +11,7 @@ namespace lattice {
 
 namespace {
 
-constexpr std::uint8_t kEsc = 0x1B, kFF = 0x0C, kGS = 0x1D, kUS = 0x1F, kCR = 0x0D;
+constexpr std::uint8_t kEsc = 0x1B, kFF = 0x0C, kGS = 0x1D, kUS = 0x1F, kCR = 0x0D, kDel = 0x7F;
 constexpr std::size_t kMaxPanelPoints = 65536;  // bounds the fill work a stream can ask for
 
 std::uint8_t percentTo8(int percent) {
@@ -40,10 +40,14 @@ const std::vector<Tek4100Decoder::Spec>& Tek4100Decoder::commandTable() {
   static const std::vector<Spec> table = {
       {"TM", Action::TM, 1, {P::Int, P::Int, P::Int}},    // colour mode, overlay, grey
       {"TG", Action::TG, 2, {P::Int, P::IntArray}},       // surface, (index c1 c2 c3)...
+      {"TB", Action::TB, 3, {P::Int, P::Int, P::Int}},    // background colour
+      {"RD", Action::RD, 1, {P::IntArray}},               // planes of surface 1, 2, ...
+      {"KI", Action::KI, 1, {P::Int}},                    // 1: ignore DEL
       {"RU", Action::RU, 3, {P::Int, P::Int, P::Int}},    // surface, ALU mode, bits per pixel
       {"RS", Action::RS, 2, {P::Xy, P::Xy}},              // pixel viewport corners
       {"RH", Action::RH, 1, {P::Xy}},                     // beam position in the viewport
       {"RP", Action::RP, 2, {P::Int, P::Raster}},         // pixel count, packed string
+      {"RL", Action::RL, 1, {P::IntArray}},               // run codes: length * 2^bits + index
       {"RR", Action::RR, 3, {P::Xy, P::Xy, P::Int}},      // rectangle corners, index
       {"LF", Action::LF, 1, {P::Xy}},                     // move
       {"LG", Action::LG, 1, {P::Xy}},                     // draw (or panel point)
@@ -70,26 +74,55 @@ const std::vector<Tek4100Decoder::Spec>& Tek4100Decoder::commandTable() {
       {"SK", Action::Accept, 1, {P::Int}},                  // delete segment
       {"LH", Action::Accept, 1, {P::Xy}},                   // marker (not drawn)
       {"LT", Action::Accept, 1, {P::String}},               // graphic text (no font: not drawn)
+      // Set-up commands of PGPLOT, zebra, RAL-CGM, the RAL GKS driver and
+      // BRL-CAD (docs/tek-sources.md).
+      {"MB", Action::Accept, 2, {P::Int, P::Int}},  // background indices (text)
+      {"RE", Action::Accept, 1, {P::Int}},          // view border
+      {"RF", Action::Accept, 1, {P::Int}},          // fix-up level
+      {"RV", Action::Accept, 2, {P::Xy, P::Xy}},    // viewport (views are not emulated)
+      {"RW", Action::Accept, 2, {P::Xy, P::Xy}},    // window (not applied: docs/tek4125.md)
+      {"KN", Action::Accept, 1, {P::Int}},          // renew view
+      {"KE", Action::Accept, 1, {P::Int}},          // echo
+      {"KT", Action::Accept, 1, {P::Int}},          // error threshold
+      {"NT", Action::Accept, 1, {P::IntArray}},     // end-of-line string
+      {"NC", Action::Accept, 2, {P::Int, P::Int}},  // end-of-message characters
+      {"NQ", Action::Accept, 1, {P::Int}},          // queue size
+      {"SV", Action::Accept, 2, {P::Int, P::Int}},  // segment visibility
+      {"SO", Action::Accept, 1, {P::Int}},          // begin segment (zebra)
+      {"SC", Action::Accept, 0, {}},                // end segment
+      {"QA", Action::Accept, 1, {P::Int}},          // copy size
+      {"NF", Action::Accept, 1, {P::Int}},          // flagging (BRL-CAD dm-tek4109.c)
+      {"KC", Action::Accept, 0, {}},                // cancel crosshairs
+      {"TC", Action::Accept, 3, {P::Int, P::Int, P::Int}},  // GIN cursor colour
+      {"IJ", Action::Accept, 2, {P::Int, P::Int}},          // GIN cursor speed
   };
   return table;
 }
 
-Palette Tek4100Decoder::defaultColorMap(int entries) {
-  static const Rgb8 first16[16] = {{0, 0, 0},     {255, 255, 255}, {255, 0, 0},   {0, 255, 0},
-                                   {0, 0, 255},   {0, 255, 255},   {255, 0, 255}, {255, 255, 0},
-                                   {255, 128, 0}, {128, 255, 0},   {0, 255, 128}, {0, 128, 255},
-                                   {128, 0, 255}, {255, 0, 128},   {85, 85, 85},  {170, 170, 170}};
+Palette Tek4100Decoder::defaultColorMap(int entries, Tek4125PowerUpMap which) {
+  // Percent a gun. PGPLOT drivers/tkdriv.f (CTABLE) and RAL-CGM cgmtek.h
+  // (TEKdftcoltab) agree but for entries 5..7 and a few 50-versus-51s.
+  static const int pgplot[16][3] = {{0, 0, 0},    {100, 100, 100}, {100, 0, 0},  {0, 100, 0},
+                                    {0, 0, 100},  {0, 100, 100},   {100, 0, 100}, {100, 100, 0},
+                                    {100, 50, 0}, {50, 100, 0},    {0, 100, 50},  {0, 50, 100},
+                                    {50, 0, 100}, {100, 0, 50},    {33, 33, 33},  {67, 67, 67}};
+  static const int ralCgm[16][3] = {{0, 0, 0},    {100, 100, 100}, {100, 0, 0},  {0, 100, 0},
+                                    {0, 0, 100},  {100, 100, 0},   {0, 100, 100}, {100, 0, 100},
+                                    {100, 50, 0}, {51, 100, 0},    {0, 100, 51},  {0, 51, 100},
+                                    {50, 0, 100}, {100, 0, 50},    {33, 33, 33},  {67, 67, 67}};
+  const auto& table = which == Tek4125PowerUpMap::Pgplot ? pgplot : ralCgm;
   Palette map(static_cast<std::size_t>(entries));
-  for (int i = 0; i < entries && i < 16; ++i) map[static_cast<std::size_t>(i)] = first16[i];
+  for (int i = 0; i < entries && i < 16; ++i)
+    map[static_cast<std::size_t>(i)] = Rgb8{percentTo8(table[i][0]), percentTo8(table[i][1]), percentTo8(table[i][2])};
   return map;
 }
 
 Tek4100Decoder::Tek4100Decoder(const Tek4125Profile& profile)
     : profile_(profile), mask_(0), bitsPerPixel_(profile.planes) {
   profile_.validate();
-  mask_ = profile_.colorMapSize() - 1;
+  mask_ = (1 << (profile_.surfacePlanes > 0 ? profile_.surfacePlanes : profile_.planes)) - 1;
   screen_ = IndexedImage(profile_.width, profile_.height, 0);
-  screen_.colormap = defaultColorMap(profile_.colorMapSize());
+  screen_.colormap = defaultColorMap(profile_.colorMapSize(), profile_.powerUpMap);
   vx1_ = profile_.width - 1;
   vy1_ = profile_.height - 1;
 }
@@ -101,6 +134,10 @@ void Tek4100Decoder::feed(std::span<const std::uint8_t> bytes) {
 
 void Tek4100Decoder::finish() {
   if (state_ == State::Params) abandonCommand();
+  else if (state_ == State::ParamsEsc) {  // the command ends, the ESC is cut short
+    abandonCommand();
+    malformed();
+  }
   else if (state_ == State::Esc || state_ == State::Percent || state_ == State::PercentBang ||
            state_ == State::Name)
     malformed();
@@ -112,8 +149,13 @@ void Tek4100Decoder::finish() {
 void Tek4100Decoder::malformed() { ++report_.malformed; }
 
 void Tek4100Decoder::feedByte(std::uint8_t c) {
+  if (c == kDel && ignoreDel_) return;  // KI1: DEL is padding, ESC ? stands for it
   if (c == kEsc) {
-    if (state_ == State::Params) abandonCommand();
+    if (state_ == State::Params) {
+      state_ = State::ParamsEsc;  // ESC ? continues the command with a DEL; anything else ends it
+      return;
+    }
+    if (state_ == State::ParamsEsc) abandonCommand();
     else if (state_ == State::Percent || state_ == State::PercentBang || state_ == State::Name) malformed();
     state_ = State::Esc;
     return;
@@ -162,6 +204,14 @@ void Tek4100Decoder::feedByte(std::uint8_t c) {
       state_ = State::SkipToEsc;  // its parameters are unknown: resynchronise at the next ESC
       return;
     case State::Params: return parameter(c);
+    case State::ParamsEsc:
+      if (c == '?') {  // RAL-CGM cgmtek.h sends DEL as ESC ?
+        state_ = State::Params;
+        return parameter(kDel);
+      }
+      abandonCommand();
+      state_ = State::Esc;
+      return escape(c);
     case State::SkipToEsc: return;
   }
 }
@@ -190,6 +240,10 @@ void Tek4100Decoder::ground(std::uint8_t c) {
 }
 
 void Tek4100Decoder::escape(std::uint8_t c) {
+  if (c == '?') {  // a DEL outside a command (a vector's Lo-Y or Extra)
+    state_ = State::Ground;
+    return ground(kDel);
+  }
   if (c == '%') {
     state_ = State::Percent;
     return;
@@ -352,20 +406,49 @@ void Tek4100Decoder::rasterChar(std::uint8_t c) {
   while (rasterHeld_ >= bitsPerPixel_ && rasterPixels_ > 0) {
     rasterHeld_ -= bitsPerPixel_;
     const int value = static_cast<int>(rasterBits_ >> rasterHeld_) & ((1 << bitsPerPixel_) - 1);
-    if (beamX_ > vx1_) {  // the beam wraps to the viewport's next row down
-      beamX_ = vx0_;
-      --beamY_;
-    }
-    if (beamY_ >= vy0_ && beamY_ <= vy1_ && beamX_ >= vx0_) plot(beamX_, beamY_, value);
-    ++beamX_;
+    writeAtBeam(value, 1);
     --rasterPixels_;
   }
   if (rasterPixels_ == 0) rasterHeld_ = 0;  // padding bits of the last character
   rasterBits_ &= (1u << rasterHeld_) - 1u;
 }
 
+// The beam moves right and wraps to the viewport's next row down (assumed
+// for RP; the RAL GKS driver's RL relies on it, sending a whole raster after
+// one RS). Work is bounded by the viewport: once the beam is below it,
+// nothing more can be drawn.
+void Tek4100Decoder::writeAtBeam(int index, long count) {
+  while (count > 0 && beamY_ >= vy0_) {
+    if (beamX_ > vx1_) {
+      beamX_ = vx0_;
+      --beamY_;
+      continue;
+    }
+    const long n = std::min<long>(count, vx1_ - beamX_ + 1);
+    if (beamY_ <= vy1_)
+      for (long i = 0; i < n; ++i)
+        if (beamX_ + i >= vx0_) plot(beamX_ + static_cast<int>(i), beamY_, index);
+    beamX_ += static_cast<int>(n);
+    count -= n;
+  }
+}
+
+// ints_: count, run codes. A run code is length * 2^bits + index, bits as
+// the last RU set (RAL GKS driver, GK4TRO).
+void Tek4100Decoder::runLengthWrite() {
+  const int bits = bitsPerPixel_;
+  for (std::size_t i = 1; i < ints_.size(); ++i) {
+    const int code = ints_[i];
+    if (code < 0) {
+      malformed();
+      continue;
+    }
+    writeAtBeam(code & ((1 << bits) - 1), code >> bits);
+  }
+}
+
 void Tek4100Decoder::setColor(int index, int c1, int c2, int c3) {
-  if (index < 0 || index > mask_) return malformed();
+  if (index < 0 || index >= profile_.colorMapSize()) return malformed();
   Rgb8 rgb;
   if (colorMode_ == 3) rgb = hlsToRgb(c1, c2, c3);
   else if (colorMode_ == 2) rgb = Rgb8{percentTo8(100 - c1), percentTo8(100 - c2), percentTo8(100 - c3)};
@@ -392,6 +475,15 @@ void Tek4100Decoder::execute() {
         setColor(ints_[2 + i], ints_[3 + i], ints_[4 + i], ints_[5 + i]);
       break;
     }
+    case Action::TB:  // taken as colour map entry 0, the colour the screen is cleared to (RAL-CGM TEKclose)
+      setColor(0, intAt(0, 0), intAt(1, 0), intAt(2, 0));
+      break;
+    case Action::RD:  // ints_: count, planes of surface 1, ...; surface 1 keeps only its planes
+      if (ints_.size() >= 2 && ints_[1] >= 1) mask_ = (1 << std::min(ints_[1], profile_.planes)) - 1;
+      else malformed();
+      break;
+    case Action::KI: ignoreDel_ = intAt(0, 0) != 0; break;
+    case Action::RL: runLengthWrite(); break;
     case Action::RU:
       alu_ = intAt(1, 11);
       if (const int bits = intAt(2, bitsPerPixel_); bits >= 1 && bits <= 8) bitsPerPixel_ = bits;
@@ -405,17 +497,20 @@ void Tek4100Decoder::execute() {
       beamX_ = vx0_;
       beamY_ = vy1_;
       break;
-    case Action::RH:
-      beamX_ = vx0_ + xy(0);
-      beamY_ = vy0_ + xyY(0);
+    case Action::RH:  // relative to the viewport (zebra dev_4107.c), or as the profile reads it
+      beamX_ = (profile_.rhFromScreen ? 0 : vx0_) + xy(0);
+      beamY_ = (profile_.rhFromScreen ? 0 : vy0_) + xyY(0);
       break;
     case Action::RP:
       if (rasterPixels_ > 0) malformed();  // fewer characters than pixels
       rasterPixels_ = 0;
       break;
-    case Action::RR: {
-      const int x0 = std::max(std::min(xy(0), xy(1)), 0), x1 = std::min(std::max(xy(0), xy(1)), profile_.width - 1);
-      const int y0 = std::max(std::min(xyY(0), xyY(1)), 0), y1 = std::min(std::max(xyY(0), xyY(1)), profile_.height - 1);
+    case Action::RR: {  // screen pixels (PGPLOT tkdriv.f), or relative to the viewport as the profile reads it
+      const int ox = profile_.rrFromViewport ? vx0_ : 0, oy = profile_.rrFromViewport ? vy0_ : 0;
+      const int x0 = std::max(std::min(xy(0), xy(1)) + ox, 0);
+      const int x1 = std::min(std::max(xy(0), xy(1)) + ox, profile_.width - 1);
+      const int y0 = std::max(std::min(xyY(0), xyY(1)) + oy, 0);
+      const int y1 = std::min(std::max(xyY(0), xyY(1)) + oy, profile_.height - 1);
       if (x0 > x1 || y0 > y1) break;
       // Row by row, as plot() would set each pixel (mask, then XOR or copy):
       // a fill costs what copying its rows costs.

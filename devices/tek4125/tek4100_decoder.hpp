@@ -3,11 +3,13 @@
 // bytes in, in any chunking; a framebuffer of colour-map indices (the
 // profile's resolution) and the colour map out.
 //
-// It decodes everything Tek4125Driver emits (TM, TG, RU, RS, RH, RP, RR,
-// ESC FF, ESC %!0/1, LV) and what a plotting program sends: LF/LG vectors,
+// It decodes everything Tek4125Driver emits under either form set (TM, TG,
+// TB, RD, KI, RU, RS, RH, RP, RL, RR, ESC FF, ESC %!0/1, LV, and ESC ? for a
+// DEL inside a parameter) and what a plotting program sends: LF/LG vectors,
 // ML line index, LP..LG..LE panels filled with the MP pattern, 4010-style
-// GS xy runs ended by US, and the dialog-area and text-attribute commands
-// gnuplot's tek410x terminal uses (accepted by name, nothing drawn).
+// GS xy runs ended by US, the GKS driver's RL run-length writes, and the
+// set-up, dialog-area and text-attribute commands gnuplot, PGPLOT, zebra,
+// RAL-CGM and the RAL GKS driver send (accepted by name, nothing drawn).
 // A byte-at-a-time state machine: nothing is buffered beyond the parameters
 // of the command in hand (at most one 65535-entry integer array).
 #include <cstdint>
@@ -31,13 +33,13 @@ class Tek4100Decoder final : public StreamDecoder {
   const DecodeReport& report() const override { return report_; }
   bool inTekMode() const { return tekMode_; }
 
-  // The power-up colour map (assumed 4100-series defaults, docs/tek4125.md).
-  static Palette defaultColorMap(int entries);
+  // The power-up colour map (the profile's power-up-map, docs/tek4125.md).
+  static Palette defaultColorMap(int entries, Tek4125PowerUpMap map = Tek4125PowerUpMap::Pgplot);
 
  private:
-  enum class State : std::uint8_t { Ground, Esc, Percent, PercentBang, Name, Params, SkipToEsc };
+  enum class State : std::uint8_t { Ground, Esc, Percent, PercentBang, Name, Params, ParamsEsc, SkipToEsc };
   enum class Param : std::uint8_t { Int, IntArray, Xy, String, Raster };
-  enum class Action : std::uint8_t { TM, TG, RU, RS, RH, RP, RR, LF, LG, ML, MP, LP, LE, Accept };
+  enum class Action : std::uint8_t { TM, TG, TB, RD, KI, RU, RS, RH, RP, RL, RR, LF, LG, ML, MP, LP, LE, Accept };
   struct Spec {
     char name[3];
     Action action;
@@ -62,6 +64,8 @@ class Tek4100Decoder final : public StreamDecoder {
   void line(int x0, int y0, int x1, int y1, int index);  // terminal coordinates
   void fillPanel();
   void rasterChar(std::uint8_t c);
+  void writeAtBeam(int index, long count);  // raster pixels: right, wrapping down the viewport
+  void runLengthWrite();
   void setColor(int index, int c1, int c2, int c3);
   int pixelX(int x) const;
   int pixelY(int y) const;
@@ -69,10 +73,11 @@ class Tek4100Decoder final : public StreamDecoder {
   Tek4125Profile profile_;
   IndexedImage screen_;
   DecodeReport report_;
-  int mask_;
+  int mask_;  // planes of surface 1 (all at power-up; RD may give it fewer)
 
   State state_ = State::Ground;
   bool tekMode_ = true;
+  bool ignoreDel_ = false;   // KI1: raw DEL bytes are dropped; ESC ? stands for one
   bool graphMode_ = false;   // GS ... US vectors
   bool darkVector_ = false;  // next GS point moves rather than draws
 

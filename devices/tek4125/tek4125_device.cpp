@@ -10,17 +10,20 @@ namespace {
 
 class StreamDriver final : public devices::Driver {
  public:
-  StreamDriver(ByteSink& out, const Tek4125Profile& profile) : driver_(out, profile) {}
+  StreamDriver(ByteSink& out, const Tek4125Profile& profile) : driver_(out, profile), forms_(profile.forms) {}
   IndexedSink& sink() override { return driver_; }
   devices::DriverStats stats() const override {
     const Tek4125StreamStats& s = driver_.stats();
     return {s.bytes, s.seconds,
-            fmt::format("{} raster writes, {} rectangle fills, {} pixels left to the clear", s.rasterWrites,
-                        s.rectangleFills, s.skippedPixels)};
+            fmt::format("profile {}, {} bits a pixel, {} raster writes, {} run-length writes, {} rectangle fills, "
+                        "{} background pixels skipped ({})",
+                        forms_, s.rasterBits, s.rasterWrites, s.runLengthWrites, s.rectangleFills, s.skippedPixels,
+                        s.candidate)};
   }
 
  private:
   Tek4125Driver driver_;
+  std::string forms_;
 };
 
 }  // namespace
@@ -35,7 +38,11 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   d.height = profile.height;
   d.makeDriver = [profile](ByteSink& out) { return std::make_unique<StreamDriver>(out, profile); };
   d.makeEmulator = [profile] { return std::unique_ptr<StreamDecoder>(makeTek4100Decoder(profile)); };
-  d.driverMemory = [](int, int) { return std::uint64_t{0}; };  // it streams: a row at a time
+  // The driver keeps the frame (a byte a pixel) and encodes up to three
+  // candidate streams, holding the shortest beside the one being written
+  // (growing by doubling, then copied once to escape DEL): 8 B a pixel
+  // covers the example scenes (docs/memory.md, "Calibration").
+  d.driverMemory = [](int w, int h) { return 8 * static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h); };
   // The screen a byte a pixel, and its RGB copy for the PNG.
   d.emulatorMemory = 3 * static_cast<std::uint64_t>(profile.width) * static_cast<std::uint64_t>(profile.height);
   d.line = profile.line();

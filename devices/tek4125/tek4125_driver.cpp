@@ -3,8 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <limits>
 
+#include "devices/tek4125/tek4125_rows.hpp"
+#include "devices/tek4125/tek4125_writer.hpp"
 #include "foundation/error.hpp"
 
 namespace lattice {
@@ -14,14 +15,10 @@ namespace {
 constexpr int kSurface = 1;
 constexpr int kAluOverwrite = 11;
 
-// Estimated bytes of the fixed parts of a raster span and of a rectangle, for
-// choosing between them. The exact count depends on which xy bytes change
-// (1..5 each) and on the integers' sizes; these assume a short-form RH xy
-// within a row, 2-character counts, and an RR whose first corner changes
-// Extra/Lo-Y (its y is absolute, RH's is viewport-relative).
-constexpr double kSpanHeaderBytes = 3 + 3 + 3 + 2 + 2;  // ESC RH xy, ESC RP count strlen
-constexpr double kRectangleBytes = 3 + 5 + 3 + 1;      // ESC RR xy xy index
-constexpr double kExtendBytes = 0;  // growing an open rectangle by a row is free
+std::string describeOptions(const Tek4125DriverOptions& o) {
+  return fmt::format("{}{}{}{}", o.skipBackground ? "skip " : "", o.rectangles ? "RR " : "",
+                     o.mergeRows ? "merged " : "", o.runLength ? "RL" : "no-RL");
+}
 
 }  // namespace
 
@@ -29,16 +26,12 @@ Tek4125Placement placePicture(const Tek4125Profile& profile, int width, int heig
   return Tek4125Placement{(profile.width - width) / 2, (profile.height - height) / 2};
 }
 
+Tek4125Driver::Tek4125Driver(ByteSink& sink, const Tek4125Profile& profile)
+    : Tek4125Driver(sink, profile, tek4125Strategy(profile.strategy).options) {}
+
 Tek4125Driver::Tek4125Driver(ByteSink& sink, const Tek4125Profile& profile, Tek4125DriverOptions options)
     : sink_(sink), profile_(profile), options_(options) {
   profile_.validate();
-}
-
-void Tek4125Driver::send() {
-  if (buffer_.empty()) return;
-  sink_.write(std::span<const std::uint8_t>(buffer_));
-  stats_.bytes += buffer_.size();
-  buffer_.clear();
 }
 
 void Tek4125Driver::begin(const FrameInfo& frame) {
@@ -53,222 +46,171 @@ void Tek4125Driver::begin(const FrameInfo& frame) {
                 fmt::format("tek4125: the picture has {} colours but the profile allows 1..{} ({} planes, {} "
                             "reserved); quantize to at most {} colours or change planes=/reserved=",
                             frame.palette.size(), maxColors(), profile_.planes, profile_.reserved, maxColors()));
-  width_ = frame.width;
-  height_ = frame.height;
-  paletteSize_ = static_cast<int>(frame.palette.size());
-  place_ = placePicture(profile_, width_, height_);
-  // A picture whose indices fit in 4 bits is sent at 4 bits a pixel even on
-  // an 8-plane terminal: half the raster bytes. (4 and the plane count are
-  // the depths the public sources show; other depths are not used.)
-  rasterBits_ = paletteSize_ + profile_.reserved <= 16 ? 4 : profile_.planes;
+  frame_ = frame;
+  pixels_.assign(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0);
   nextRow_ = 0;
   stats_ = {};
-  open_.clear();
-  openAt_.assign(static_cast<std::size_t>(width_), -1);
-  xy_.reset();
   begun_ = true;
-
-  using namespace tek;
-  buffer_ = {kEsc, '%', '!', '0'};  // enter Tek mode
-  appendCommand(buffer_, "LV");     // dialog area invisible, so text cannot cover the picture
-  appendInt(buffer_, 0);
-  appendCommand(buffer_, "TM");  // colour map in RGB, opaque, normal
-  for (int i = 0; i < 3; ++i) appendInt(buffer_, 1);
-  appendCommand(buffer_, "TG");
-  appendInt(buffer_, kSurface);
-  std::vector<int> groups;
-  groups.reserve(frame.palette.size() * 4);
-  for (int i = 0; i < paletteSize_; ++i) {
-    const Rgb8 c = frame.palette[static_cast<std::size_t>(i)];
-    groups.insert(groups.end(), {i + profile_.reserved, percentFrom8(c.r), percentFrom8(c.g), percentFrom8(c.b)});
-  }
-  appendIntArray(buffer_, groups);
-  buffer_.insert(buffer_.end(), {kEsc, 0x0C});  // clear the page to index 0
-  appendCommand(buffer_, "RU");
-  appendInt(buffer_, kSurface);
-  appendInt(buffer_, kAluOverwrite);
-  appendInt(buffer_, rasterBits_);
-  appendCommand(buffer_, "RS");
-  xy_.append(buffer_, place_.left, place_.bottom);
-  xy_.append(buffer_, place_.left + width_ - 1, place_.bottom + height_ - 1);
-  if (options_.skipBackground && profile_.reserved > 0) {
-    // The clear painted a reserved entry, not the picture's index 0: paint that once.
-    appendCommand(buffer_, "RR");
-    xy_.append(buffer_, place_.left, place_.bottom);
-    xy_.append(buffer_, place_.left + width_ - 1, place_.bottom + height_ - 1);
-    appendInt(buffer_, profile_.reserved);
-    ++stats_.rectangleFills;
-  }
-  send();
-}
-
-// Per row, a two-state dynamic programme over the runs of equal index: after
-// each run the beam is either inside a raster span (bits are being sent) or
-// outside one. Starting a span costs its header; a run outside a span costs
-// nothing (background) or a rectangle. Linear in the runs, optimal for the
-// estimated costs.
-std::vector<Tek4125Driver::Way> Tek4125Driver::chooseWays(const std::vector<Run>& runs,
-                                                          const std::vector<int>& continuing) const {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  const double bitsCost = rasterBits_ / 6.0;
-  const int background = profile_.reserved;
-  const std::size_t n = runs.size();
-  std::vector<double> in(n + 1, inf), out(n + 1, inf);
-  std::vector<std::uint8_t> inFromIn(n + 1, 0), outFromIn(n + 1, 0);
-  out[0] = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const Run& r = runs[k];
-    const double raw = r.length * bitsCost;
-    const double viaIn = in[k] + raw, viaOut = out[k] + kSpanHeaderBytes + raw;
-    inFromIn[k + 1] = viaIn <= viaOut;
-    in[k + 1] = std::min(viaIn, viaOut);
-    double leave = inf;
-    if (options_.skipBackground && r.index == background) leave = 0;
-    else if (options_.rectangles) leave = continuing[k] >= 0 ? kExtendBytes : kRectangleBytes;
-    const double outIn = in[k] + leave, outOut = out[k] + leave;
-    outFromIn[k + 1] = outIn < outOut;
-    out[k + 1] = std::min(outIn, outOut);
-  }
-  std::vector<Way> ways(n);
-  bool inside = in[n] < out[n];
-  for (std::size_t k = n; k-- > 0;) {
-    if (inside) {
-      ways[k] = Way::Raster;
-      inside = inFromIn[k + 1];
-    } else {
-      const Run& r = runs[k];
-      ways[k] = (options_.skipBackground && r.index == background) ? Way::Skip : Way::Rectangle;
-      inside = outFromIn[k + 1];
-    }
-  }
-  return ways;
 }
 
 void Tek4125Driver::row(int y, std::span<const PaletteIndex> indices) {
-  if (!begun_ || y != nextRow_ || y >= height_ || indices.size() != static_cast<std::size_t>(width_))
+  if (!begun_ || y != nextRow_ || y >= frame_.height || indices.size() != static_cast<std::size_t>(frame_.width))
     throw Error(ErrorKind::Internal,
                 fmt::format("tek4125: row {} ({} pixels) out of order; expected row {} of {} pixels", y,
-                            indices.size(), nextRow_, width_));
-  ++nextRow_;
-  std::vector<Run> runs;
-  for (int x = 0; x < width_;) {
-    const int index = indices[static_cast<std::size_t>(x)];
-    if (index >= paletteSize_)
+                            indices.size(), nextRow_, frame_.width));
+  for (std::size_t x = 0; x < indices.size(); ++x)
+    if (indices[x] >= frame_.palette.size())
       throw Error(ErrorKind::Internal,
-                  fmt::format("tek4125: row {} pixel {} has index {} beyond the {}-entry palette", y, x, index,
-                              paletteSize_));
-    int end = x + 1;
-    while (end < width_ && indices[static_cast<std::size_t>(end)] == index) ++end;
-    runs.push_back(Run{x, end - x, index + profile_.reserved});
-    x = end;
+                  fmt::format("tek4125: row {} pixel {} has index {} beyond the {}-entry palette", y, x,
+                              indices[x], frame_.palette.size()));
+  std::copy(indices.begin(), indices.end(),
+            pixels_.begin() + static_cast<long>(y) * static_cast<long>(frame_.width));
+  ++nextRow_;
+}
+
+int Tek4125Driver::mostFrequentIndex() const {
+  std::vector<std::uint64_t> count(frame_.palette.size(), 0);
+  for (PaletteIndex p : pixels_) ++count[p];
+  return static_cast<int>(std::max_element(count.begin(), count.end()) - count.begin());
+}
+
+tek::Bytes Tek4125Driver::encode(const Tek4125DriverOptions& options, Tek4125StreamStats& stats) const {
+  const Tek4125Forms& forms = profile_.formSet();
+  const int reserved = profile_.reserved;
+  const int paletteSize = static_cast<int>(frame_.palette.size());
+  const int width = frame_.width, height = frame_.height;
+  const Tek4125Placement place = placePicture(profile_, width, height);
+
+  Tek4125RowLayout layout;
+  layout.left = place.left;
+  layout.bottom = place.bottom;
+  layout.width = width;
+  layout.height = height;
+  // A picture whose indices fit in 4 bits is sent at 4 bits a pixel even on
+  // an 8-plane terminal: half the raster bytes, and the one depth a source packs.
+  layout.bits = paletteSize + reserved <= 16 ? 4 : profile_.planes;
+  layout.raster = layout.bits == 4 || !forms.rasterOnlyAtFourBits;
+  layout.runLength = forms.runLength && (options.runLength || !layout.raster);
+  layout.background = options.skipBackground ? mostFrequentIndex() + reserved : -1;
+  if (forms.screenViewport) {
+    layout.viewportX = 0;
+    layout.viewportY = 0;
+  } else {
+    layout.viewportX = place.left;
+    layout.viewportY = place.bottom;
   }
-  const int tekRow = height_ - 1 - y;  // relative to the viewport's bottom
-  // Which runs repeat a rectangle left open by the row above.
-  std::vector<int> continuing(runs.size(), -1);
-  for (std::size_t k = 0; k < runs.size(); ++k) {
-    const int o = openAt_[static_cast<std::size_t>(runs[k].start)];
-    if (o >= 0 && open_[static_cast<std::size_t>(o)].run.length == runs[k].length &&
-        open_[static_cast<std::size_t>(o)].run.index == runs[k].index)
-      continuing[k] = o;
+  const int right = place.left + width - 1, top = place.bottom + height - 1;
+
+  Tek4125Writer out(forms);
+  out.bytes({tek::kEsc, '%', '!', '0'});  // enter Tek mode
+  out.command("LV");                      // dialog area invisible, so text cannot cover the picture
+  out.integer(0);
+  if (forms.escapeDel) {  // raw DEL is ignored from here; ESC ? stands for it
+    out.command("KI");
+    out.integer(1);
   }
-  const std::vector<Way> ways = chooseWays(runs, continuing);
-  std::vector<OpenRectangle> next;
-  for (std::size_t k = 0; k < runs.size();) {
-    if (ways[k] == Way::Skip) {
-      stats_.skippedPixels += static_cast<std::uint64_t>(runs[k].length);
-      ++k;
-    } else if (ways[k] == Way::Rectangle) {
-      if (continuing[k] >= 0) {
-        OpenRectangle& grown = open_[static_cast<std::size_t>(continuing[k])];
-        ++grown.rows;
-        next.push_back(grown);
-        grown.rows = 0;  // taken over by next: not to be sent when the old rectangles close
-      } else {
-        next.push_back(OpenRectangle{runs[k], tekRow, 1});
-      }
-      ++k;
-    } else {
-      std::size_t end = k;
-      while (end < runs.size() && ways[end] == Way::Raster) ++end;
-      emitSpan(std::span<const Run>(runs).subspan(k, end - k), tekRow);
-      k = end;
+  if (forms.defineSurfaces) {  // one surface holding every plane: no index is masked
+    out.command("RD");
+    out.integer(1);
+    out.integer(profile_.planes);
+  }
+  out.command("TM");  // colour map in RGB, opaque, normal
+  for (int i = 0; i < 3; ++i) out.integer(1);
+  auto colour = [&](int i) {
+    const Rgb8 c = frame_.palette[static_cast<std::size_t>(i)];
+    return std::array<int, 3>{percentFrom8(c.r), percentFrom8(c.g), percentFrom8(c.b)};
+  };
+  if (forms.explicitBackground && reserved == 0) {  // the colour the clear shows: picture colour 0
+    out.command("TB");
+    for (int g : colour(0)) out.integer(g);
+  }
+  const int perCommand = forms.colourEntriesPerTg > 0 ? forms.colourEntriesPerTg : paletteSize;
+  for (int first = 0; first < paletteSize; first += perCommand) {
+    const int n = std::min(perCommand, paletteSize - first);
+    out.command("TG");
+    out.integer(kSurface);
+    out.integer(4 * n);
+    for (int i = first; i < first + n; ++i) {
+      out.integer(i + reserved);
+      for (int g : colour(i)) out.integer(g);
     }
   }
-  if (!options_.mergeRows) {
-    for (const OpenRectangle& r : next) emitRectangle(r);
-    next.clear();
+  out.bytes({tek::kEsc, 0x0C});  // clear the page (to entry 0)
+  out.command("RU");
+  out.integer(kSurface);
+  out.integer(kAluOverwrite);
+  out.integer(layout.bits);
+  out.command("RS");
+  if (forms.screenViewport) {
+    out.xy(0, 0);
+    out.xy(profile_.width - 1, profile_.height - 1);
+  } else {
+    out.xy(place.left, place.bottom);
+    out.xy(right, top);
   }
-  closeRectangles(next);
-  send();
-}
-
-// Rectangles of the previous row that this row did not extend are final:
-// send them. Pixels of different rectangles and spans never overlap, so
-// sending a rectangle rows later paints the same picture.
-void Tek4125Driver::closeRectangles(std::vector<OpenRectangle>& next) {
-  for (const OpenRectangle& r : open_) {
-    if (r.rows > 0) emitRectangle(r);
-    openAt_[static_cast<std::size_t>(r.run.start)] = -1;
+  stats = {};
+  // The picture's background: one RR unless the clear already painted it.
+  if (layout.background >= 0 && (forms.explicitBackground || layout.background != 0)) {
+    out.command("RR");
+    out.xy(place.left, place.bottom);
+    out.xy(right, top);
+    out.integer(layout.background);
+    ++stats.rectangleFills;
   }
-  open_.swap(next);
-  for (std::size_t i = 0; i < open_.size(); ++i)
-    openAt_[static_cast<std::size_t>(open_[i].run.start)] = static_cast<int>(i);
-}
 
-void Tek4125Driver::emitRectangle(const OpenRectangle& rect) {
-  // RR corners are screen pixels (not viewport-relative, unlike RH).
-  const int x = place_.left + rect.run.start;
-  const int top = place_.bottom + rect.topTekRow;
-  tek::appendCommand(buffer_, "RR");
-  xy_.append(buffer_, x, top - rect.rows + 1);
-  xy_.append(buffer_, x + rect.run.length - 1, top);
-  tek::appendInt(buffer_, rect.run.index);
-  ++stats_.rectangleFills;
-}
-
-void Tek4125Driver::emitSpan(std::span<const Run> runs, int tekRow) {
-  const int start = runs.front().start;
-  const int count = runs.back().start + runs.back().length - start;
-  const int bits = rasterBits_;
-  const int chars = (count * bits + 5) / 6;
-  tek::appendCommand(buffer_, "RH");
-  xy_.append(buffer_, start, tekRow);
-  tek::appendCommand(buffer_, "RP");
-  tek::appendInt(buffer_, count);
-  tek::appendInt(buffer_, chars);
-  // Pixels MSB first into 6-bit groups, each sent as 0x20 + group.
-  unsigned accumulator = 0;
-  int held = 0;
-  for (const Run& r : runs) {
-    for (int i = 0; i < r.length; ++i) {
-      accumulator = accumulator << bits | static_cast<unsigned>(r.index);
-      held += bits;
-      while (held >= 6) {
-        held -= 6;
-        buffer_.push_back(static_cast<std::uint8_t>(0x20 + ((accumulator >> held) & 63u)));
-      }
-      accumulator &= (1u << held) - 1u;
-    }
+  Tek4125RowPlanner planner(out, layout, options);
+  std::vector<int> row(static_cast<std::size_t>(width));
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x)
+      row[static_cast<std::size_t>(x)] = pixels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                                                 static_cast<std::size_t>(x)] +
+                                         reserved;
+    planner.row(y, row);
   }
-  if (held > 0) buffer_.push_back(static_cast<std::uint8_t>(0x20 + ((accumulator << (6 - held)) & 63u)));
-  ++stats_.rasterWrites;
+  planner.finish();
+  const Tek4125RowStats& r = planner.stats();
+  stats.rasterWrites = r.rasterWrites;
+  stats.runLengthWrites = r.runLengthWrites;
+  stats.rectangleFills += r.rectangleFills;
+  stats.skippedPixels = r.skippedPixels;
+  stats.rasterBits = layout.bits;
+  stats.candidate = describeOptions(Tek4125DriverOptions{options.skipBackground, options.rectangles,
+                                                         options.mergeRows, layout.runLength, false});
+  tek::Bytes bytes = out.take();
+  stats.bytes = bytes.size();
+  stats.seconds = transmitSeconds(stats.bytes, profile_.line());
+  return bytes;
 }
 
 void Tek4125Driver::end() {
-  if (!begun_ || nextRow_ != height_)
-    throw Error(ErrorKind::Internal,
-                fmt::format("tek4125: end() after {} of {} rows", nextRow_, height_));
+  if (!begun_ || nextRow_ != frame_.height)
+    throw Error(ErrorKind::Internal, fmt::format("tek4125: end() after {} of {} rows", nextRow_, frame_.height));
   begun_ = false;
-  std::vector<OpenRectangle> none;
-  closeRectangles(none);
-  send();
+  std::vector<Tek4125DriverOptions> candidates{options_};
+  if (options_.shortest) {
+    // The row planner is optimal per row for estimated costs; these variants
+    // catch where the estimates or the greedy rectangle merging mislead it.
+    Tek4125DriverOptions noRuns = options_, unmerged = options_;
+    noRuns.runLength = false;
+    unmerged.mergeRows = false;
+    candidates.push_back(noRuns);
+    candidates.push_back(unmerged);
+  }
+  tek::Bytes best;
+  for (const Tek4125DriverOptions& c : candidates) {
+    Tek4125StreamStats s;
+    tek::Bytes bytes = encode(c, s);
+    if (best.empty() || bytes.size() < best.size()) {
+      best.swap(bytes);
+      stats_ = s;
+    }
+  }
+  sink_.write(std::span<const std::uint8_t>(best));
   sink_.flush();
-  stats_.seconds = transmitSeconds(stats_.bytes, profile_.line());
 }
 
-std::unique_ptr<Tek4125Driver> makeTek4125Driver(ByteSink& sink, const Tek4125Profile& profile,
-                                                 Tek4125DriverOptions options) {
-  return std::make_unique<Tek4125Driver>(sink, profile, options);
+std::unique_ptr<Tek4125Driver> makeTek4125Driver(ByteSink& sink, const Tek4125Profile& profile) {
+  return std::make_unique<Tek4125Driver>(sink, profile);
 }
 
 }  // namespace lattice

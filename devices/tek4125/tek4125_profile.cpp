@@ -10,7 +10,8 @@ namespace lattice {
 namespace {
 
 constexpr const char* kKeys =
-    "width, height, planes, palette-bits, reserved, baud, data-bits, parity, stop-bits, xon-xoff";
+    "profile, width, height, planes, palette-bits, reserved, baud, data-bits, parity, stop-bits, xon-xoff, "
+    "power-up-map, strategy, rr-origin, rh-origin, surface-planes";
 
 void requireRange(const char* key, int value, int lo, int hi) {
   if (value < lo || value > hi)
@@ -18,9 +19,18 @@ void requireRange(const char* key, int value, int lo, int hi) {
                 fmt::format("tek4125 profile: {}={} is out of range; use a value in {}..{}", key, value, lo, hi));
 }
 
+// false for `usual`, true for `other`.
+bool originSetting(const KeyValue& kv, std::string_view usual, std::string_view other) {
+  if (kv.value == usual) return false;
+  if (kv.value == other) return true;
+  throw Error(ErrorKind::Usage, fmt::format("tek4125 profile: {}={} must be {} or {}", kv.key, kv.value, usual, other));
+}
+
 }  // namespace
 
 void Tek4125Profile::validate() const {
+  (void)formSet();  // throws for an unknown form set
+  (void)tek4125Strategy(strategy);
   // 4095 is the largest 12-bit pixel coordinate the raster commands can address.
   requireRange("width", width, 1, 4096);
   requireRange("height", height, 1, 4096);
@@ -31,6 +41,7 @@ void Tek4125Profile::validate() const {
   requireRange("baud", baud, 50, 1000000);
   requireRange("data-bits", dataBits, 7, 8);
   requireRange("stop-bits", stopBits, 1, 2);
+  requireRange("surface-planes", surfacePlanes, 0, planes);
 }
 
 void applyOverride(Tek4125Profile& profile, std::string_view keyValue) {
@@ -38,7 +49,16 @@ void applyOverride(Tek4125Profile& profile, std::string_view keyValue) {
   Tek4125Profile p = profile;  // a rejected override leaves the profile as it was
   const KeyValue kv = splitKeyValue(kContext, keyValue, kKeys);
   const std::string_view key = kv.key;
-  if (key == "width") p.width = parseIntSetting(kContext, kv);
+  if (key == "profile") p.forms = tek4125Forms(kv.value).name;
+  else if (key == "strategy") p.strategy = tek4125Strategy(kv.value).name;
+  else if (key == "rr-origin") p.rrFromViewport = originSetting(kv, "screen", "viewport");
+  else if (key == "rh-origin") p.rhFromScreen = originSetting(kv, "viewport", "screen");
+  else if (key == "surface-planes") p.surfacePlanes = parseIntSetting(kContext, kv);
+  else if (key == "power-up-map") {
+    if (kv.value == "pgplot") p.powerUpMap = Tek4125PowerUpMap::Pgplot;
+    else if (kv.value == "ral-cgm") p.powerUpMap = Tek4125PowerUpMap::RalCgm;
+    else throw Error(ErrorKind::Usage, fmt::format("tek4125 profile: power-up-map={} must be pgplot or ral-cgm", kv.value));
+  } else if (key == "width") p.width = parseIntSetting(kContext, kv);
   else if (key == "height") p.height = parseIntSetting(kContext, kv);
   else if (key == "planes") p.planes = parseIntSetting(kContext, kv);
   else if (key == "palette-bits") p.paletteBits = parseIntSetting(kContext, kv);
@@ -64,10 +84,12 @@ void applyOverrides(Tek4125Profile& profile, const std::vector<std::string>& key
 
 std::string describe(const Tek4125Profile& p) {
   return fmt::format(
-      "width={}\nheight={}\nplanes={}\npalette-bits={}\nreserved={}\nbaud={}\ndata-bits={}\nparity={}\n"
-      "stop-bits={}\nxon-xoff={}\n",
-      p.width, p.height, p.planes, p.paletteBits, p.reserved, p.baud, p.dataBits, p.parity ? "even" : "none",
-      p.stopBits, p.xonXoff ? "on" : "off");
+      "profile={}\nwidth={}\nheight={}\nplanes={}\npalette-bits={}\nreserved={}\nbaud={}\ndata-bits={}\n"
+      "parity={}\nstop-bits={}\nxon-xoff={}\npower-up-map={}\nstrategy={}\nrr-origin={}\nrh-origin={}\n"
+      "surface-planes={}\n",
+      p.forms, p.width, p.height, p.planes, p.paletteBits, p.reserved, p.baud, p.dataBits, p.parity ? "even" : "none",
+      p.stopBits, p.xonXoff ? "on" : "off", p.powerUpMap == Tek4125PowerUpMap::Pgplot ? "pgplot" : "ral-cgm",
+      p.strategy, p.rrFromViewport ? "viewport" : "screen", p.rhFromScreen ? "screen" : "viewport", p.surfacePlanes);
 }
 
 }  // namespace lattice

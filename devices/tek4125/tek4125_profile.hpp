@@ -7,9 +7,16 @@
 #include <string_view>
 #include <vector>
 
+#include "devices/tek4125/tek4125_forms.hpp"
+#include "devices/tek4125/tek4125_strategy.hpp"
 #include "foundation/line_timing.hpp"
 
 namespace lattice {
+
+// The colour map a terminal shows before any TG: two public tables disagree
+// on entries 5..7 (PGPLOT drivers/tkdriv.f: 5 cyan, 6 magenta, 7 yellow;
+// RAL-CGM cgmtek.h: 5 yellow, 6 cyan, 7 magenta). Only the emulator uses it.
+enum class Tek4125PowerUpMap { Pgplot, RalCgm };
 
 struct Tek4125Profile {
   int width = 1280;          // visible pixels (assumed, as the sibling 4115B)
@@ -22,17 +29,29 @@ struct Tek4125Profile {
   bool parity = false;
   int stopBits = 1;
   bool xonXoff = true;       // DC1/DC3 flagging, the usual setting at these rates
+  std::string forms = "strict";  // the form set the driver may use (tek4125_forms.hpp)
+  std::string strategy = "shortest";  // how the driver chooses among those forms (tek4125_strategy.hpp)
+  // Readings no source settles, as the emulator applies them (the driver
+  // ignores these). A strict stream must draw the same under every one.
+  Tek4125PowerUpMap powerUpMap = Tek4125PowerUpMap::Pgplot;
+  bool rrFromViewport = false;  // rr-origin=screen|viewport: RR corners relative to the pixel viewport
+  bool rhFromScreen = false;    // rh-origin=viewport|screen: RH relative to the screen, not the viewport
+  int surfacePlanes = 0;        // surface-planes=N: planes of surface 1 before any RD (0 = all)
 
   int colorMapSize() const { return 1 << planes; }
   // Colours a picture may use: the map minus reserved entries.
   int maxColors() const { return colorMapSize() - reserved; }
   LineFormat line() const { return LineFormat{baud, dataBits, parity, stopBits}; }
+  const Tek4125Forms& formSet() const { return tek4125Forms(forms); }
   // Throws lattice::Error(Usage) naming the bad field and its legal range.
   void validate() const;
 };
 
-// Apply one "key=value" (keys: width, height, planes, palette-bits, reserved,
-// baud, data-bits, parity (none|even|odd), stop-bits, xon-xoff (on|off)).
+// Apply one "key=value" (keys: profile (strict|compact), width, height,
+// planes, palette-bits, reserved, baud, data-bits, parity (none|even|odd),
+// stop-bits, xon-xoff (on|off), power-up-map (pgplot|ral-cgm), strategy
+// (shortest|plain|skip|rectangles|spans|runs), rr-origin (screen|viewport),
+// rh-origin (viewport|screen), surface-planes (0..planes)).
 // Unknown keys and bad values throw lattice::Error(Usage) listing the keys.
 void applyOverride(Tek4125Profile& profile, std::string_view keyValue);
 void applyOverrides(Tek4125Profile& profile, const std::vector<std::string>& keyValues);

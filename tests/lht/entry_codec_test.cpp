@@ -120,7 +120,6 @@ TEST_CASE("LHT precision: normals along the axes are exact and the diagonals wit
 }
 
 TEST_CASE("LHT precision: normal error bounds hold over the sphere and at the octahedral fold") {
-  registerLatticeSceneTypes();
   for (const LhtPrecisionInfo& form : kLhtPrecisions) {
     INFO(form.name);
     double worst = 0.0;

@@ -521,8 +521,9 @@ lattice = "bead"
 }  // namespace
 
 TEST_CASE("lattice extremes: nearly singular lattice instance transforms are refused at load") {
-  registerLatticeSceneTypes();
-  const auto load = [](const std::string& keys) { return parseScene(std::string(kLatticeScene) + keys, "bead.toml"); };
+  const auto load = [](const std::string& keys) {
+    return parseSceneWithLattices(std::string(kLatticeScene) + keys, "bead.toml").scene;
+  };
   // The instance's keys are on line 8.
   REQUIRE_THROWS_WITH(load("scale = [1, 1, 1e-13]\n"),
                       Catch::StartsWith("bead.toml:8:") && Catch::Contains("nearly singular"));

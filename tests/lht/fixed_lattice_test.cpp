@@ -72,14 +72,14 @@ RgbImage render(const SceneDesc& scene, bool fixedPoint, bool full) {
 }  // namespace
 
 TEST_CASE("fixed point: a lattice scene matches the double render") {
-  lht::registerLatticeSceneTypes();
-  const SceneDesc scene = parseScene(kScene, "fuzzy.toml");
+  const SceneDesc scene = lht::parseSceneWithLattices(kScene, "fuzzy.toml").scene;
   // Measured (docs/fixed-point.md): the lattice render is identical to
   // double's; the full ray trace 46.8 dB, 0.02% of channels off by > 4.
   SECTION("lattices, at every entry precision (each decoded in integers for fixed point)") {
     for (const lht::LhtPrecisionInfo& form : lht::kLhtPrecisions) {
-      lht::SceneWithLattices loaded = lht::parseSceneWithLattices(kScene, "fuzzy.toml");
-      for (const auto& lattice : loaded.lattices) lattice->precision = form.precision;
+      lht::TableSettings tables;
+      tables.precision = form.precision;
+      const lht::SceneWithLattices loaded = lht::parseSceneWithLattices(kScene, "fuzzy.toml", tables);
       const testing::FixedVsDouble m =
           testing::compareRenders(render(loaded.scene, true, false), render(loaded.scene, false, false));
       INFO(form.name << ": PSNR " << m.psnr << " dB, channels off by > 4: " << 100 * m.farFraction << "%");

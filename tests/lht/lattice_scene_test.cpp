@@ -8,13 +8,16 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
 
 #include "io/image_metrics.hpp"
 #include "lht/canonical_toml.hpp"
+#include "lht/lattice_object.hpp"
 #include "lht/lattice_scene.hpp"
+#include "lht/table_build.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_loader.hpp"
 #include "tests/support/golden.hpp"
@@ -24,6 +27,14 @@ using namespace lattice;
 using namespace lattice::lht;
 
 namespace {
+
+// Table settings that force the entry form (and, with quiet, show no progress).
+TableSettings tablesIn(std::optional<LhtPrecision> form, bool quiet = false) {
+  TableSettings settings;
+  settings.precision = form;
+  settings.progress = !quiet;
+  return settings;
+}
 
 // A small fuzzy sphere (thesis sec. 3.4) with a floor, two lights.
 std::string fuzzyScene(int hairs, const std::string& extraLatticeKeys = "") {
@@ -82,7 +93,7 @@ RgbImage render(const SceneDesc& scene, bool full, bool latticeShadows = true) {
 
 std::string loadError(const std::string& text) {
   try {
-    parseScene(text, "bad.toml");
+    parseSceneWithLattices(text, "bad.toml").scene;
   } catch (const Error& e) {
     CHECK(e.kind() == ErrorKind::Input);
     return e.what();
@@ -94,8 +105,7 @@ std::string loadError(const std::string& text) {
 }  // namespace
 
 TEST_CASE("lattice scene: a lattice renders close to the full ray trace of its object") {
-  registerLatticeSceneTypes();
-  const SceneDesc scene = parseScene(fuzzyScene(300), "fuzzy.toml");
+  const SceneDesc scene = parseSceneWithLattices(fuzzyScene(300), "fuzzy.toml").scene;
   const RgbImage lattice = render(scene, false);
   const RgbImage full = render(scene, true);
   const testing::ImageDifference diff = testing::compareImages(lattice, full);
@@ -169,12 +179,11 @@ material = "shiny"
 )";
 
 TEST_CASE("lattice scene: the wide entry renders closer to the full ray trace than the thesis's") {
-  registerLatticeSceneTypes();
-  const RgbImage full = render(parseScene(kGridAlignedBall, "ball.toml"), true);
+  const RgbImage full = render(parseSceneWithLattices(kGridAlignedBall, "ball.toml").scene, true);
   std::map<LhtPrecision, ImageMetrics> error;
   for (const LhtPrecisionInfo& form : kLhtPrecisions) {
-    SceneWithLattices loaded = parseSceneWithLattices(kGridAlignedBall, "ball.toml");
-    loaded.lattices.at(0)->precision = form.precision;
+    const SceneWithLattices loaded =
+        parseSceneWithLattices(kGridAlignedBall, "ball.toml", tablesIn(form.precision));
     error[form.precision] = compareRgb(render(loaded.scene, false), full);
   }
   const ImageMetrics& thesis = error[LhtPrecision::Thesis];
@@ -196,8 +205,7 @@ TEST_CASE("lattice scene: the wide entry renders closer to the full ray trace th
 }
 
 TEST_CASE("lattice scene: lattice-lattice shadows can be switched off (plate 3 vs plate 4)") {
-  registerLatticeSceneTypes();
-  const SceneDesc scene = parseScene(fuzzyScene(300), "fuzzy.toml");
+  const SceneDesc scene = parseSceneWithLattices(fuzzyScene(300), "fuzzy.toml").scene;
   const RgbImage withShadows = render(scene, false, true);
   const RgbImage without = render(scene, false, false);
   const auto diff = testing::compareImages(withShadows, without);
@@ -210,13 +218,12 @@ TEST_CASE("lattice scene: lattice-lattice shadows can be switched off (plate 3 v
   }
   CHECK(brighter > 20 * darker);
   // The per-lattice switch does the same.
-  const SceneDesc off = parseScene(fuzzyScene(300, "shadows = false"), "fuzzy.toml");
+  const SceneDesc off = parseSceneWithLattices(fuzzyScene(300, "shadows = false"), "fuzzy.toml").scene;
   CHECK(testing::compareImages(render(off, false), without).differingPixels == 0);
 }
 
 TEST_CASE("lattice scene: scatter places N instances on the sphere") {
-  registerLatticeSceneTypes();
-  const SceneDesc scene = parseScene(fuzzyScene(50), "fuzzy.toml");
+  const SceneDesc scene = parseSceneWithLattices(fuzzyScene(50), "fuzzy.toml").scene;
   // root = union of the top-level objects; the scatter is the second one.
   REQUIRE(scene.root.children.size() == 3);
   const NodeDesc& scatter = scene.root.children[1];
@@ -234,7 +241,6 @@ TEST_CASE("lattice scene: scatter places N instances on the sphere") {
 }
 
 TEST_CASE("lattice scene: the cache file is written, reused, and refused when the object changes") {
-  registerLatticeSceneTypes();
   const auto dir = std::filesystem::temp_directory_path() / ("lattice-lht-scene-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const auto write = [&](const std::string& text) {
@@ -242,13 +248,13 @@ TEST_CASE("lattice scene: the cache file is written, reused, and refused when th
   };
   write(fuzzyScene(5, "cache = \"hair.lht\""));
   {
-    const SceneDesc scene = loadScene(dir / "s.toml");
+    const SceneDesc scene = loadSceneWithLattices(dir / "s.toml").scene;
     render(scene, false);  // builds the lattice: rasterizes and writes the cache
   }
   REQUIRE(std::filesystem::exists(dir / "hair.lht"));
   const auto firstWrite = std::filesystem::last_write_time(dir / "hair.lht");
   {
-    const SceneDesc scene = loadScene(dir / "s.toml");
+    const SceneDesc scene = loadSceneWithLattices(dir / "s.toml").scene;
     render(scene, false);  // reads the cache
   }
   CHECK(std::filesystem::last_write_time(dir / "hair.lht") == firstWrite);
@@ -256,7 +262,7 @@ TEST_CASE("lattice scene: the cache file is written, reused, and refused when th
   std::string changed = fuzzyScene(5, "cache = \"hair.lht\"");
   changed.replace(changed.find("radius = 0.015"), 14, "radius = 0.014");
   write(changed);
-  const SceneDesc scene = loadScene(dir / "s.toml");
+  const SceneDesc scene = loadSceneWithLattices(dir / "s.toml").scene;
   try {
     render(scene, false);
     FAIL("a stale cache was used");
@@ -270,7 +276,7 @@ TEST_CASE("lattice scene: the cache file is written, reused, and refused when th
 
 TEST_CASE("lattice scene: the precision key picks the entry form and the thesis's keeps the old object hash") {
   const auto definition = [](const std::string& keys) {
-    const auto defs = parseLatticeDefinitions(fuzzyScene(5, keys), "p.toml");
+    const auto defs = parseSceneWithLattices(fuzzyScene(5, keys), "p.toml").lattices;
     REQUIRE(defs.size() == 1);
     return defs[0];
   };
@@ -285,16 +291,15 @@ TEST_CASE("lattice scene: the precision key picks the entry form and the thesis'
     const LatticeDefinitionPtr d = definition(fmt::format("precision = \"{}\"", name));
     CHECK(lhtPrecisionName(d->precision) == name);
     CHECK(d->hash() != plain->hash());
-    CHECK(d->rasterizeNow(false).table.precision() == d->precision);
+    CHECK(buildLatticeTable(*d, tablesIn(std::nullopt, true)).lht.table.precision() == d->precision);
   }
 }
 
 TEST_CASE("lattice scene: a cache of another precision is refused and not silently used") {
-  registerLatticeSceneTypes();
   const auto dir = std::filesystem::temp_directory_path() / ("lattice-lht-precision-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "s.toml") << fuzzyScene(5, "cache = \"hair.lht\"");
-  render(loadScene(dir / "s.toml"), false);  // writes a thesis cache
+  render(loadSceneWithLattices(dir / "s.toml").scene, false);  // writes a thesis cache
   REQUIRE(readLhtFile(dir / "hair.lht").table.precision() == LhtPrecision::Thesis);
   const auto expectRefusal = [&](const SceneDesc& scene, const std::string& asked) {
     try {
@@ -309,18 +314,99 @@ TEST_CASE("lattice scene: a cache of another precision is refused and not silent
   };
   // In the scene file...
   std::ofstream(dir / "s.toml") << fuzzyScene(5, "cache = \"hair.lht\"\nprecision = \"wide\"");
-  expectRefusal(loadScene(dir / "s.toml"), "wide");
-  // ... or set on the definition before the render, as --lht-precision does.
+  expectRefusal(loadSceneWithLattices(dir / "s.toml").scene, "wide");
+  // ... or in the settings the scene is loaded with, as --lht-precision does...
   std::ofstream(dir / "s.toml") << fuzzyScene(5, "cache = \"hair.lht\"");
-  SceneWithLattices loaded = loadSceneWithLattices(dir / "s.toml");
+  const SceneWithLattices loaded = loadSceneWithLattices(dir / "s.toml", tablesIn(LhtPrecision::Compact));
   REQUIRE(loaded.lattices.size() == 1);
-  loaded.lattices[0]->precision = LhtPrecision::Compact;
   expectRefusal(loaded.scene, "compact");
+  // ... or rebound with later, leaving the loaded scene as it was.
+  const SceneWithLattices plain = loadSceneWithLattices(dir / "s.toml");
+  expectRefusal(withTableSettings(plain, tablesIn(LhtPrecision::Wide)).scene, "wide");
+  render(plain.scene, false);  // the thesis cache still serves the scene as loaded
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("lattice scene: the loader knows lattices only through the format it is handed") {
+  // The built-in format has no lattices, whatever was loaded before.
+  const SceneWithLattices first = parseSceneWithLattices(fuzzyScene(5), "a.toml");
+  REQUIRE_THROWS_WITH(parseScene(fuzzyScene(5), "b.toml"), Catch::Contains("unknown section 'lattices'"));
+  // Each load returns its own definitions, in file order.
+  const SceneWithLattices second = parseSceneWithLattices(fuzzyScene(5), "c.toml");
+  REQUIRE(first.lattices.size() == 1);
+  REQUIRE(second.lattices.size() == 1);
+  CHECK(first.lattices[0]->name == "hair");
+  CHECK(first.lattices[0] != second.lattices[0]);
+  CHECK(first.lattices[0]->hash() == second.lattices[0]->hash());
+}
+
+TEST_CASE("lattice scene: the packing hook of the table settings picks the form, and such a table is not cached") {
+  const auto dir = std::filesystem::temp_directory_path() / ("lattice-lht-packing-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "s.toml") << fuzzyScene(5, "cache = \"hair.lht\"");
+  int calls = 0;
+  std::uint64_t entriesSeen = 0;
+  TableSettings settings;
+  settings.progress = false;
+  settings.packing = [&](const LatticeDefinition& lattice, LhtPrecision requested, std::uint64_t entries,
+                         std::uint64_t hitListBytes) {
+    ++calls;
+    CHECK(lattice.name == "hair");
+    CHECK(requested == LhtPrecision::Thesis);
+    CHECK(hitListBytes >= entries);
+    entriesSeen = entries;
+    return LhtPrecision::Compact;
+  };
+  const SceneWithLattices loaded = loadSceneWithLattices(dir / "s.toml");
+  const BuiltTable built = buildLatticeTable(*loaded.lattices.at(0), settings);
+  CHECK(calls == 1);
+  CHECK(built.lht.table.precision() == LhtPrecision::Compact);
+  CHECK(built.lht.table.entryCount() == entriesSeen);
+  CHECK(built.lht.objectHash == loaded.lattices[0]->hashFor(LhtPrecision::Compact));
+  render(withTableSettings(loaded, settings).scene, false);  // five instances, one table
+  CHECK(calls == 2);
+  CHECK_FALSE(std::filesystem::exists(dir / "hair.lht"));  // packed otherwise than asked: not cached
+  render(loaded.scene, false);  // the scene as loaded packs as asked, and caches
+  CHECK(calls == 2);
+  CHECK(readLhtFile(dir / "hair.lht").table.precision() == LhtPrecision::Thesis);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("lattice scene: one call builds a table for a shape or a scene's entry") {
+  TableRequest sphere;
+  sphere.shape = "sphere";
+  sphere.radius = 2.0;
+  sphere.settings.progress = false;
+  const BuiltTable fromShape = buildLatticeTable(sphere);
+  CHECK(fromShape.lht.objectHash == sphereObject(2.0).hash());
+  CHECK(fromShape.lht.box.cells() == LatticeBox(sphereObject(2.0).bounds, 1.0, 1.0).cells());
+  CHECK(fromShape.lht.hits == fromShape.stats.hits);
+  CHECK(fromShape.lht.table.entryCount() > 0);
+  TableRequest wrong = sphere;
+  wrong.shape = "cube";
+  REQUIRE_THROWS_WITH(buildLatticeTable(wrong), Catch::Contains("unknown --shape 'cube'"));
+  TableRequest neither;
+  REQUIRE_THROWS_WITH(buildLatticeTable(neither), Catch::Contains("--scene FILE --name NAME or --shape"));
+
+  const auto dir = std::filesystem::temp_directory_path() / ("lattice-lht-request-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "s.toml") << fuzzyScene(5);
+  TableRequest entry;
+  entry.scene = dir / "s.toml";
+  entry.name = "hair";
+  entry.oversample = 1.0;  // the file says 2
+  entry.settings = tablesIn(LhtPrecision::Wide, true);
+  const BuiltTable fromScene = buildLatticeTable(entry);
+  LatticeDefinition expected = *loadSceneWithLattices(entry.scene).lattices.at(0);
+  expected.oversample = 1.0;
+  CHECK(fromScene.lht.objectHash == expected.hashFor(LhtPrecision::Wide));
+  CHECK(fromScene.lht.table.precision() == LhtPrecision::Wide);
+  entry.name = "fur";
+  REQUIRE_THROWS_WITH(buildLatticeTable(entry), Catch::Contains("no [[lattices]] entry named 'fur' (defined: hair)"));
   std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("lattice scene: mistakes are located errors") {
-  registerLatticeSceneTypes();
   CHECK(loadError("[[objects]]\ntype = \"lattice\"\nlattice = \"nope\"\n").find("no lattice named 'nope'") !=
         std::string::npos);
   CHECK(loadError("[[lattices]]\nname = \"a\"\nspacing = 1\n").find("object") != std::string::npos);
@@ -346,12 +432,11 @@ TEST_CASE("lattice scene: mistakes are located errors") {
 }
 
 TEST_CASE("lattice scene: lattice_scatter's count is capped at kMaxScatterCount with a located error") {
-  registerLatticeSceneTypes();
   std::string over = fuzzyScene(static_cast<int>(kMaxScatterCount) + 1);
   const std::string message = loadError(over);
   CHECK_THAT(message, Catch::Contains("bad.toml:") && Catch::Contains("between 1 and 100000") &&
                           Catch::Contains("docs/limits.md"));
   // The limit itself loads (placing is linear; nothing is rendered here).
-  const SceneDesc scene = parseScene(fuzzyScene(static_cast<int>(kMaxScatterCount)), "limit.toml");
+  const SceneDesc scene = parseSceneWithLattices(fuzzyScene(static_cast<int>(kMaxScatterCount)), "limit.toml").scene;
   CHECK(scene.root.children.size() == 3);
 }

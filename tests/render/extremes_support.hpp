@@ -17,16 +17,12 @@
 #include <type_traits>
 #include <utility>
 
+#include "foundation/arithmetics.hpp"
 #include "render/primitive.hpp"
 
 namespace lattice::testing {
 
-template <typename T>
-std::string arithmeticName() {
-  if constexpr (std::is_same_v<T, float>) return "float";
-  else if constexpr (std::is_same_v<T, double>) return "double";
-  else return "fixed";
-}
+using lattice::arithmeticName;  // foundation/arithmetics.hpp
 
 // A bound that depends on the arithmetic: bound<T>(float, double, fixed).
 template <typename T>

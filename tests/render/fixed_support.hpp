@@ -98,7 +98,9 @@ inline bool isSetUpFunction(const std::string& name) {
   static const std::vector<std::string> setUp = {"::Camera(", "::Renderer(", "::build(", "::Bvh(",
                                                  "makeQuarticLeaf<", "makeCapsule<", "paddedBox<",
                                                  "buildPrimitive<", "::QuarticLeaf(", "makeCsgNode<",
-                                                 "::LatticeLeaf(", "makePolyline<", "makeLatticeLeaf<"};
+                                                 "::LatticeLeaf(", "makePolyline<", "makeLatticeLeaf<",
+                                                 "::QuarticArithmetic(", "QuarticArithmetic<lattice::Fixed<32> >::prepare(",
+                                                 "::EntryReader(", "::buildInto(", "::buildAs<"};
   for (const std::string& s : setUp)
     if (name.find(s) != std::string::npos) return true;
   return false;

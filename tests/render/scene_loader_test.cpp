@@ -15,10 +15,11 @@ const char* kSphere = "[[objects]]\ntype = \"sphere\"\nradius = 1\n";
 
 // Loads `text` expecting an Input error whose message contains
 // "<file>:<line>:" and every one of `expected`.
-void requireInputError(const std::string& text, int line, std::initializer_list<std::string> expected) {
+void requireInputError(const std::string& text, int line, std::initializer_list<std::string> expected,
+                       const SceneFormat& format = builtinSceneFormat()) {
   TempScene scene(text);
   try {
-    scene.load();
+    scene.load(format);
     FAIL("expected an error for:\n" << text);
   } catch (const Error& e) {
     const std::string message = e.what();
@@ -121,7 +122,7 @@ bounds = { min = [-2, -2, -2], max = [2, 2, 2] }
   list += "]\n";
   TempScene asList(list);
   SceneDesc l = asList.load();
-  auto p = l.root.leaf->build(Mat4d(1.0), 0, BuildOptions{}, double{});
+  auto p = l.root.leaf->build<double>(Mat4d(1.0), 0, BuildOptions{});
   Hit<double> hit;
   REQUIRE(p->firstHit(Ray<double>{Vec3d(0, 0, -10), Vec3d(0, 0, 1)}, 0.0, 100.0, hit));
   REQUIRE(hit.t == Approx(8.0));
@@ -194,34 +195,38 @@ TEST_CASE("scene errors: a missing file names the file") {
                       Catch::Contains("/nonexistent/dir/scene.toml") && Catch::Contains("cannot read"));
 }
 
-TEST_CASE("scene: extension modules register node types and sections") {
+TEST_CASE("scene: a format value extends the loader with node types and sections") {
   // A generator node: `count` spheres in a row, returned as one union; and a
-  // section that defines the spacing, parsed before the objects.
-  registerSection("test_rows", [](const toml::node& section, ParseContext& ctx) {
+  // section that defines the spacing, parsed before the objects. The
+  // section's value lives in state the parsers share, not in the loader.
+  auto spacing = std::make_shared<double>(1.0);
+  SceneFormat format = builtinSceneFormat();
+  format.addSection("test_rows", [spacing](const toml::node& section, ParseContext& ctx) {
     const toml::table* t = section.as_table();
     if (!t) ctx.fail(section, "test_rows must be a table");
     ctx.checkKeys(*t, {"spacing"});
-    ctx.extensions()["test_rows"] = ctx.requiredNumber(*t, "spacing");
+    *spacing = ctx.requiredNumber(*t, "spacing");
   });
-  registerNodeType("test_row", [](const toml::table& t, ParseContext& ctx) {
+  format.addNodeType("test_row", [spacing](const toml::table& t, ParseContext& ctx) {
     ctx.checkKeys(t, {"count"}, true);
-    const double spacing = std::any_cast<double>(ctx.extensions().at("test_rows"));
     std::vector<NodeDesc> spheres;
     for (long long i = 0; i < ctx.integer(t, "count").value_or(1); ++i) {
       toml::table one{{"type", "sphere"}, {"radius", 0.25}};
       NodeDesc n = ctx.parseNode(one);
-      n.transform[3] = glm::dvec4(spacing * static_cast<double>(i), 0, 0, 1);
+      n.transform[3] = glm::dvec4(*spacing * static_cast<double>(i), 0, 0, 1);
       spheres.push_back(std::move(n));
     }
     return NodeDesc::makeOperation(NodeDesc::Kind::Union, std::move(spheres), ctx.where(t));
   });
-  REQUIRE(isNodeTypeRegistered("test_row"));
-  TempScene file("[test_rows]\nspacing = 2\n[[objects]]\ntype = \"test_row\"\ncount = 3\ntranslate = [0, 1, 0]\n");
-  SceneDesc s = file.load();
+  const std::string text = "[test_rows]\nspacing = 2\n[[objects]]\ntype = \"test_row\"\ncount = 3\ntranslate = [0, 1, 0]\n";
+  TempScene file(text);
+  SceneDesc s = file.load(format);
   REQUIRE(s.root.children.size() == 3);
   REQUIRE(s.root.transform[3] == glm::dvec4(0, 1, 0, 1));
   REQUIRE(s.root.children[2].transform[3] == glm::dvec4(4, 0, 0, 1));
   // A key the generator does not know is still an error at its line.
   requireInputError("[test_rows]\nspacing = 2\n[[objects]]\ntype = \"test_row\"\ncuont = 3\n", 5,
-                    {"unknown key 'cuont'", "count"});
+                    {"unknown key 'cuont'", "count"}, format);
+  // Nothing leaked into the loader: the built-in format knows neither.
+  requireInputError(text, 1, {"unknown section 'test_rows'"});
 }

@@ -28,7 +28,7 @@ class TempScene {
   TempScene(const TempScene&) = delete;
   TempScene& operator=(const TempScene&) = delete;
   const std::filesystem::path& path() const { return path_; }
-  SceneDesc load() const { return loadScene(path_); }
+  SceneDesc load(const SceneFormat& format = builtinSceneFormat()) const { return loadScene(path_, format); }
 
  private:
   std::filesystem::path path_;

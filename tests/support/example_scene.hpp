@@ -1,20 +1,18 @@
 #pragma once
-// The example scenes of scenes/ as the end-to-end suites render them: lattice
-// node types registered first (hook.toml holds a lattice leaf), then a
+// The example scenes of scenes/ as the end-to-end suites render them: loaded
+// with the lattice section and types (hook.toml holds a lattice leaf), then a
 // double-precision renderer at a small test size on two threads. Header-only:
 // only test binaries that link lattice_render and lattice_lht include it.
 #include <string>
 
 #include "lht/lattice_scene.hpp"
 #include "render/renderer.hpp"
-#include "render/scene_loader.hpp"
 #include "tests/support/golden.hpp"
 
 namespace lattice::testing {
 
 inline SceneDesc loadExampleScene(const std::string& fileName) {
-  lht::registerLatticeSceneTypes();
-  return loadScene(sourcePath("scenes/" + fileName));
+  return lht::loadSceneWithLattices(sourcePath("scenes/" + fileName)).scene;
 }
 
 inline Renderer<double> makeTestRenderer(const SceneDesc& scene, int width, int height) {

@@ -6,39 +6,13 @@
 
 #include "devices/tek4125/tek4100_decoder.hpp"
 #include "devices/tek4125/tek_encoding.hpp"
+#include "tests/devices/tek4125/stream_builder.hpp"
 
 using namespace lattice;
 using namespace lattice::tek;
+using namespace lattice::tektest;
 
 namespace {
-
-struct Stream {
-  Bytes bytes;
-  XyEncoder xy;
-  Stream& raw(std::string_view s) {
-    for (char ch : s) bytes.push_back(static_cast<std::uint8_t>(ch));  // (insert trips a GCC 12 false warning)
-    return *this;
-  }
-  Stream& cmd(std::string_view name) {
-    appendCommand(bytes, name);
-    return *this;
-  }
-  Stream& i(int v) {
-    appendInt(bytes, v);
-    return *this;
-  }
-  Stream& p(int x, int y) {
-    xy.append(bytes, x, y);
-    return *this;
-  }
-};
-
-Tek4100Decoder run(const Bytes& b, Tek4125Profile profile = {}) {
-  Tek4100Decoder d(profile);
-  d.feed(b);
-  d.finish();
-  return d;
-}
 
 // Screen pixel of terminal coordinate (x, y) on the default 1280x1024 screen.
 PaletteIndex at(const Tek4100Decoder& d, int x, int y) {

@@ -1,5 +1,6 @@
-// Byte-exact stream and decoded picture for one small synthetic image, so
-// any change to what goes down the wire is seen in review.
+// Byte-exact stream and decoded picture for one small synthetic image under
+// each form set (strict: no suffix; compact: _compact), so any change to what
+// goes down the wire is seen in review.
 // Regenerate: LATTICE_REGENERATE_GOLDENS=1 (scripts/regenerate-goldens.sh).
 #include <catch2/catch.hpp>
 
@@ -11,13 +12,16 @@
 using namespace lattice;
 using namespace lattice::tektest;
 
-TEST_CASE("golden: a 24x16 scene at 4 and 8 planes") {
+TEST_CASE("golden: a 24x16 scene at 4 and 8 planes, strict and compact") {
+  for (const std::string forms : {"strict", "compact"})
   for (int planes : {4, 8}) {
     Tek4125Profile profile;
+    profile.forms = forms;
     profile.planes = planes;
     const IndexedImage img = scene(24, 16, planes == 4 ? 16 : 40);
     const std::vector<std::uint8_t> bytes = encode(img, profile);
-    const std::string stem = fmt::format("tek4125/scene24x16_{}planes", planes);
+    const std::string stem =
+        fmt::format("tek4125/scene24x16_{}planes{}", planes, forms == "strict" ? "" : "_" + forms);
     lattice::testing::checkGoldenBytes(stem + ".tek", bytes);
     Tek4100Decoder decoder(profile);
     decoder.feed(bytes);

@@ -34,13 +34,15 @@ struct SceneCase {
   int width, height;
   int planes;
   Dither dither;
+  const char* forms = "strict";
 };
 
 std::string stemOf(const SceneCase& c) {
   std::string name = c.scene;
   name = name.substr(0, name.find('.'));
-  return fmt::format("tek4125/scenes/{}_{}x{}_{}planes{}", name, c.width, c.height, c.planes,
-                     c.dither == Dither::FloydSteinberg ? "_fs" : "");
+  return fmt::format("tek4125/scenes/{}_{}x{}_{}planes{}{}", name, c.width, c.height, c.planes,
+                     c.dither == Dither::FloydSteinberg ? "_fs" : "",
+                     std::string(c.forms) == "strict" ? "" : std::string("_") + c.forms);
 }
 
 // Feeds the stream in uneven chunks: a terminal gets it in whatever pieces
@@ -57,11 +59,11 @@ void feedChunked(StreamDecoder& decoder, const std::vector<std::uint8_t>& bytes)
 }
 
 void runSceneCase(const SceneCase& c) {
-  INFO("scene " << c.scene << " " << c.width << "x" << c.height << " planes " << c.planes);
+  INFO("scene " << c.scene << " " << c.width << "x" << c.height << " planes " << c.planes << " " << c.forms);
   const SceneDesc scene = testing::loadExampleScene(c.scene);
   Renderer<double> renderer = testing::makeTestRenderer(scene, c.width, c.height);
 
-  const std::vector<std::string> overrides{fmt::format("planes={}", c.planes)};
+  const std::vector<std::string> overrides{fmt::format("planes={}", c.planes), fmt::format("profile={}", c.forms)};
   const devices::Device device = devices::makeDevice("tek4125", overrides);
   Tek4125Profile profile;
   applyOverrides(profile, overrides);
@@ -139,27 +141,33 @@ void runSceneCase(const SceneCase& c) {
 }  // namespace
 
 TEST_CASE("scene goldens: the example scenes at 8 planes") {
-  const SceneCase cases[] = {
-      {"sphere-hole.toml", 64, 64, 8, Dither::None},
-      {"torus-floor.toml", 80, 60, 8, Dither::None},
-      {"thesis-camera.toml", 64, 64, 8, Dither::None},
-      {"hook.toml", 64, 64, 8, Dither::None},
-  };
-  for (const SceneCase& c : cases) runSceneCase(c);
+  for (const char* forms : {"strict", "compact"}) {
+    const SceneCase cases[] = {
+        {"sphere-hole.toml", 64, 64, 8, Dither::None, forms},
+        {"torus-floor.toml", 80, 60, 8, Dither::None, forms},
+        {"thesis-camera.toml", 64, 64, 8, Dither::None, forms},
+        {"hook.toml", 64, 64, 8, Dither::None, forms},
+    };
+    for (const SceneCase& c : cases) runSceneCase(c);
+  }
 }
 
 TEST_CASE("scene goldens: 4 planes gives 16 colours through the same chain") {
-  const SceneCase cases[] = {
-      {"sphere-hole.toml", 64, 64, 4, Dither::None},
-      {"torus-floor.toml", 80, 60, 4, Dither::None},
-  };
-  for (const SceneCase& c : cases) runSceneCase(c);
+  for (const char* forms : {"strict", "compact"}) {
+    const SceneCase cases[] = {
+        {"sphere-hole.toml", 64, 64, 4, Dither::None, forms},
+        {"torus-floor.toml", 80, 60, 4, Dither::None, forms},
+    };
+    for (const SceneCase& c : cases) runSceneCase(c);
+  }
 }
 
 TEST_CASE("scene goldens: Floyd-Steinberg dithered frames survive the stream") {
-  const SceneCase cases[] = {
-      {"torus-floor.toml", 80, 60, 4, Dither::FloydSteinberg},
-      {"torus-floor.toml", 80, 60, 8, Dither::FloydSteinberg},
-  };
-  for (const SceneCase& c : cases) runSceneCase(c);
+  for (const char* forms : {"strict", "compact"}) {
+    const SceneCase cases[] = {
+        {"torus-floor.toml", 80, 60, 4, Dither::FloydSteinberg, forms},
+        {"torus-floor.toml", 80, 60, 8, Dither::FloydSteinberg, forms},
+    };
+    for (const SceneCase& c : cases) runSceneCase(c);
+  }
 }

@@ -1,4 +1,4 @@
-#include "lht/polyline.hpp"
+#include "render/polyline.hpp"
 
 #include <fmt/format.h>
 
@@ -7,8 +7,9 @@
 #include "render/csg.hpp"
 #include "render/csg_shapes.hpp"
 #include "foundation/error.hpp"
+#include "foundation/arithmetics.hpp"
 
-namespace lattice::lht {
+namespace lattice {
 
 namespace {
 
@@ -26,17 +27,12 @@ Mat4d segmentFrame(const Vec3d& a, const Vec3d& b) {
   return m;
 }
 
-class PolylineLeafDesc final : public LeafDesc {
+class PolylineLeafDesc final : public LeafTemplate<PolylineLeafDesc> {
  public:
   PolylineLeafDesc(std::vector<Vec3d> points, double radius) : points_(std::move(points)), radius_(radius) {}
-  PrimitivePtr<float> build(const Mat4d& toWorld, MaterialId m, const BuildOptions&, float) const override {
-    return makePolyline<float>(points_, radius_, toWorld, m);
-  }
-  PrimitivePtr<double> build(const Mat4d& toWorld, MaterialId m, const BuildOptions&, double) const override {
-    return makePolyline<double>(points_, radius_, toWorld, m);
-  }
-  PrimitivePtr<Fixed32> build(const Mat4d& toWorld, MaterialId m, const BuildOptions&, Fixed32) const override {
-    return makePolyline<Fixed32>(points_, radius_, toWorld, m);
+  template <typename T>
+  PrimitivePtr<T> buildAs(const Mat4d& toWorld, MaterialId m, const BuildOptions&) const {
+    return makePolyline<T>(points_, radius_, toWorld, m);
   }
   Bounds<double> objectBounds() const override { return polylineBounds(points_, radius_); }
   std::string describe() const override { return fmt::format("polyline of {} points", points_.size()); }
@@ -63,9 +59,10 @@ PrimitivePtr<T> makePolyline(const std::vector<Vec3d>& points, double radius, co
   return makeCsgNode<T>(CsgOp::Union, std::move(pieces));
 }
 
-template PrimitivePtr<float> makePolyline<float>(const std::vector<Vec3d>&, double, const Mat4d&, MaterialId);
-template PrimitivePtr<double> makePolyline<double>(const std::vector<Vec3d>&, double, const Mat4d&, MaterialId);
-template PrimitivePtr<Fixed32> makePolyline<Fixed32>(const std::vector<Vec3d>&, double, const Mat4d&, MaterialId);
+#define LATTICE_INSTANTIATE(T) \
+  template PrimitivePtr<T> makePolyline<T>(const std::vector<Vec3d>&, double, const Mat4d&, MaterialId);
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_INSTANTIATE)
+#undef LATTICE_INSTANTIATE
 
 Bounds<double> polylineBounds(const std::vector<Vec3d>& points, double radius) {
   Bounds<double> box;
@@ -80,4 +77,4 @@ LeafDescPtr makePolylineLeafDesc(std::vector<Vec3d> points, double radius) {
   return std::make_shared<PolylineLeafDesc>(std::move(points), radius);
 }
 
-}  // namespace lattice::lht
+}  // namespace lattice

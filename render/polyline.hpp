@@ -6,8 +6,9 @@
 
 #include "render/primitive.hpp"
 #include "render/scene.hpp"
+#include "foundation/arithmetics.hpp"
 
-namespace lattice::lht {
+namespace lattice {
 
 // Throws lattice::Error(Input) for fewer than 2 points, coincident
 // neighbours or a bad radius.
@@ -15,9 +16,10 @@ template <typename T>
 PrimitivePtr<T> makePolyline(const std::vector<Vec3d>& points, double radius, const Mat4d& objectToWorld,
                              MaterialId material);
 
-extern template PrimitivePtr<float> makePolyline<float>(const std::vector<Vec3d>&, double, const Mat4d&, MaterialId);
-extern template PrimitivePtr<double> makePolyline<double>(const std::vector<Vec3d>&, double, const Mat4d&, MaterialId);
-extern template PrimitivePtr<Fixed32> makePolyline<Fixed32>(const std::vector<Vec3d>&, double, const Mat4d&, MaterialId);
+#define LATTICE_DECLARE(T) \
+  extern template PrimitivePtr<T> makePolyline<T>(const std::vector<Vec3d>&, double, const Mat4d&, MaterialId);
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_DECLARE)
+#undef LATTICE_DECLARE
 
 // The exact box: every point grown by the radius.
 Bounds<double> polylineBounds(const std::vector<Vec3d>& points, double radius);
@@ -25,4 +27,4 @@ Bounds<double> polylineBounds(const std::vector<Vec3d>& points, double radius);
 // A scene leaf: `type = "polyline"`, `points = [[x, y, z], ...]`, `radius`.
 LeafDescPtr makePolylineLeafDesc(std::vector<Vec3d> points, double radius);
 
-}  // namespace lattice::lht
+}  // namespace lattice

@@ -1,0 +1,47 @@
+#include "devices/tek4125/tek4125_writer.hpp"
+
+#include <algorithm>
+
+namespace lattice {
+
+namespace {
+constexpr std::uint8_t kDel = 0x7F;
+}
+
+void Tek4125Writer::countDels(std::size_t from) {
+  if (forms_.escapeDel)
+    dels_ += static_cast<std::size_t>(std::count(out_.begin() + static_cast<long>(from), out_.end(), kDel));
+}
+
+void Tek4125Writer::integer(int value) {
+  const std::size_t before = out_.size();
+  tek::appendInt(out_, value);
+  countDels(before);
+}
+
+void Tek4125Writer::xy(int x, int y) {
+  if (forms_.fullXy) xy_.reset();  // no register is relied on: all five bytes
+  const std::size_t before = out_.size();
+  xy_.append(out_, x, y);
+  countDels(before);
+}
+
+tek::Bytes Tek4125Writer::take() {
+  tek::Bytes result;
+  if (!forms_.escapeDel) {
+    result.swap(out_);
+  } else {
+    // Command names are capitals and raster characters stay below 0x60, so
+    // every DEL here is inside an integer or a coordinate.
+    result.reserve(out_.size() + out_.size() / 64);
+    for (std::uint8_t c : out_) {
+      if (c == kDel) result.insert(result.end(), {tek::kEsc, '?'});
+      else result.push_back(c);
+    }
+    out_.clear();
+  }
+  dels_ = 0;
+  return result;
+}
+
+}  // namespace lattice

@@ -1,0 +1,70 @@
+#pragma once
+// A [[lattices]] entry of a scene file (docs/lattices.md) and the settings a
+// lattice's table is built with.
+//
+// Method: a definition is what the file says, fixed once loaded; how its
+// table is built this run (an entry form forced from the command line, the
+// rasterizer's threads, a memory budget's packing) is a TableSettings value
+// handed in when the scene is loaded or its tables rebound
+// (lht/lattice_scene.hpp), never written into the definition.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include "lht/lht_precision.hpp"
+#include "render/scene.hpp"
+
+namespace lattice::lht {
+
+class LatticeDefinition;
+
+// Under a memory budget: the entry form to pack a freshly rasterized table
+// in, given the form asked for, its entry count and the bytes its hit list
+// holds meanwhile. A table packed in another form than asked is not written
+// to the lattice's cache.
+using TablePackingHook = std::function<LhtPrecision(const LatticeDefinition& lattice, LhtPrecision requested,
+                                                    std::uint64_t entries, std::uint64_t hitListBytes)>;
+
+struct TableSettings {
+  std::optional<LhtPrecision> precision;  // every table's entry form; unset: each definition's own
+  unsigned threads = 0;                   // rasterizer threads; 0: all cores
+  bool progress = true;                   // a progress bar while rasterizing (on a terminal)
+  TablePackingHook packing;               // unset: tables are packed as asked
+};
+
+class LatticeDefinition {
+ public:
+  std::string name;
+  double lambda = 1.0;
+  double oversample = 1.0;
+  NodeDesc object;
+  std::string objectText;  // canonical text of the object table (lht/canonical_toml.hpp)
+  std::optional<std::filesystem::path> cache;
+  bool shadows = true;  // false: this lattice casts no shadows (thesis plate 3)
+  LhtPrecision precision = LhtPrecision::Thesis;  // the entry form the file asks for
+  std::string origin;                             // "scene.toml:12:1"
+
+  // The entry form its table is built in under `settings`.
+  LhtPrecision precisionUnder(const TableSettings& settings) const { return settings.precision.value_or(precision); }
+  // Hash of everything that decides the table's contents (the entry form
+  // included, so a cache of another form is stale).
+  std::uint64_t hashFor(LhtPrecision form) const;
+  std::uint64_t hash() const { return hashFor(precision); }  // in the form the file asks for
+  // The object's box in its own coordinates (computed once, shared by copies).
+  const Bounds<double>& objectBounds() const;
+
+ private:
+  struct BoundsCache {
+    std::once_flag once;
+    Bounds<double> bounds;
+  };
+  std::shared_ptr<BoundsCache> bounds_ = std::make_shared<BoundsCache>();
+};
+
+using LatticeDefinitionPtr = std::shared_ptr<const LatticeDefinition>;
+
+}  // namespace lattice::lht

@@ -1,0 +1,180 @@
+// The forms other programs that drove 4100-series terminals send, built
+// here byte by byte as each source builds them (docs/tek-sources.md): the
+// RAL GKS 4200 driver's RL run-length writes, PGPLOT's set-up and RR erase,
+// RAL-CGM's KI1 + ESC ? for DEL and its RD/TB set-up, and the readings a
+// profile can switch (power-up colour map, RR and RH origins, surface planes).
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "devices/tek4125/tek4100_decoder.hpp"
+#include "devices/tek4125/tek_encoding.hpp"
+#include "tests/devices/tek4125/stream_builder.hpp"
+
+using namespace lattice;
+using namespace lattice::tek;
+using namespace lattice::tektest;
+
+namespace {
+
+// Screen pixel (x, y), Tek orientation (y = 0 is the bottom row).
+int px(const Tek4100Decoder& d, int x, int y) { return d.image().at(x, d.image().height - 1 - y); }
+
+}  // namespace
+
+TEST_CASE("RL run codes write length * 2^bits + index at the beam and wrap at the viewport edge") {
+  // GK4TRO: RU -1 11 <planes>, RS upper-left then lower-right, then RL
+  // arrays of run codes, one row after another with no RH.
+  Stream s;
+  s.cmd("RU").i(-1).i(11).i(4);
+  s.cmd("RS").full(100, 209).full(109, 200);  // 10 x 10, corners in GKS's order
+  s.cmd("RL").i(3).i(4 * 16 + 2).i(6 * 16 + 5).i(10 * 16 + 7);  // row 1: 4 of 2, 6 of 5; row 2: 10 of 7
+  s.cmd("RL").i(1).i(15 * 16 + 3);                               // rows 3 and 4 (5 of it)
+  const auto d = run(s.bytes);
+  CHECK(d.report().malformed == 0);
+  CHECK(d.report().unknownCommands == 0);
+  CHECK(px(d, 100, 209) == 2);
+  CHECK(px(d, 103, 209) == 2);
+  CHECK(px(d, 104, 209) == 5);
+  CHECK(px(d, 109, 209) == 5);
+  CHECK(px(d, 100, 208) == 7);
+  CHECK(px(d, 109, 208) == 7);
+  CHECK(px(d, 109, 207) == 3);
+  CHECK(px(d, 104, 206) == 3);
+  CHECK(px(d, 105, 206) == 0);
+  CHECK(px(d, 110, 209) == 0);  // nothing beyond the viewport
+}
+
+TEST_CASE("RL at 8 bits wraps a run across the viewport's edge") {
+  Stream s;
+  s.cmd("RU").i(1).i(11).i(8);
+  s.cmd("RS").full(0, 0).full(1279, 1023);
+  s.cmd("RH").full(1270, 500);
+  s.cmd("RL").i(2).i(12 * 256 + 200).i(255 * 256 + 9);
+  s.cmd("RH").full(0, 0);
+  s.cmd("RL").i(1).i(65535);  // the largest code: 255 pixels of index 255
+  const auto d = run(s.bytes);
+  CHECK(d.report().malformed == 0);
+  CHECK(px(d, 1279, 500) == 200);
+  CHECK(px(d, 1, 499) == 200);  // wrapped to the viewport's left edge, a row down
+  CHECK(px(d, 2, 499) == 9);
+  CHECK(px(d, 254, 0) == 255);
+}
+
+TEST_CASE("after KI1 a raw DEL is dropped and ESC ? stands for it inside a parameter") {
+  // RAL-CGM cgmtek.h: TEKCHOUT sends 0x7F as ESC ?. In (x, 127) Lo-Y is 31:
+  // a DEL; in (1023, 127) Extra is 0x6F.
+  auto escaped = [](Stream& s, int x, int y) {
+    Bytes b;
+    XyEncoder fresh;
+    fresh.append(b, x, y);
+    for (std::uint8_t c : b) {
+      if (c == 0x7F) s.raw("\x1b?");
+      else s.bytes.push_back(c);
+      s.bytes.push_back(0x7F);  // padding a line might add: ignored after KI1
+    }
+  };
+  Stream s;
+  s.cmd("KI").i(1).cmd("ML").i(1).cmd("LF");
+  escaped(s, 0, 127);
+  s.cmd("LG");
+  escaped(s, 1023, 127);
+  const auto d = run(s.bytes);
+  CHECK(d.report().malformed == 0);
+  CHECK(px(d, 0, 127 * 1280 / 4096) == 1);
+  CHECK(px(d, 1023 * 1280 / 4096, 127 * 1280 / 4096) == 1);
+  // Without KI1, DEL is data (gnuplot's tek40xx sends it raw as a Lo-Y).
+  Stream t;
+  t.cmd("ML").i(1).cmd("LF").full(0, 127).cmd("LG").full(1023, 127);
+  const auto e = run(t.bytes);
+  CHECK(e.report().malformed == 0);
+  CHECK(px(e, 0, 127 * 1280 / 4096) == 1);
+  CHECK(px(e, 1023 * 1280 / 4096, 127 * 1280 / 4096) == 1);
+}
+
+TEST_CASE("RD gives surface 1 its planes; fewer planes mask the indices drawn") {
+  Stream s;
+  s.cmd("RD").i(1).i(4);  // surface 1 owns 4 of the 8 planes
+  s.cmd("RU").i(1).i(11).i(8).cmd("RS").full(0, 0).full(1279, 1023);
+  s.cmd("RR").full(10, 10).full(11, 11).i(0x35);
+  auto d = run(s.bytes);
+  CHECK(d.report().malformed == 0);
+  CHECK(px(d, 10, 10) == 0x5);
+  // A terminal whose surface 1 starts with 4 planes masks too, until RD says 8.
+  Tek4125Profile fourPlaneSurface;
+  fourPlaneSurface.surfacePlanes = 4;
+  Stream t;
+  t.cmd("RR").full(10, 10).full(11, 11).i(0x35);
+  CHECK(px(run(t.bytes, fourPlaneSurface), 10, 10) == 0x5);
+  Stream u;
+  u.cmd("RD").i(1).i(8).cmd("RR").full(10, 10).full(11, 11).i(0x35);
+  CHECK(px(run(u.bytes, fourPlaneSurface), 10, 10) == 0x35);
+}
+
+TEST_CASE("TB sets the colour of entry 0, in the colour mode in force") {
+  Stream s;
+  s.cmd("TM").i(1).i(1).i(1).cmd("TB").i(0).i(50).i(100);
+  const auto d = run(s.bytes);
+  CHECK(d.report().malformed == 0);
+  CHECK(d.image().colormap[0] == Rgb8{0, 128, 255});
+}
+
+TEST_CASE("the power-up colour map follows PGPLOT's table or, as a profile key, RAL-CGM's") {
+  const Palette pgplot = Tek4100Decoder::defaultColorMap(256, Tek4125PowerUpMap::Pgplot);
+  const Palette ral = Tek4100Decoder::defaultColorMap(256, Tek4125PowerUpMap::RalCgm);
+  CHECK(pgplot[5] == Rgb8{0, 255, 255});
+  CHECK(pgplot[6] == Rgb8{255, 0, 255});
+  CHECK(pgplot[7] == Rgb8{255, 255, 0});
+  CHECK(ral[5] == Rgb8{255, 255, 0});
+  CHECK(ral[6] == Rgb8{0, 255, 255});
+  CHECK(ral[7] == Rgb8{255, 0, 255});
+  CHECK(pgplot[1] == ral[1]);
+  CHECK(pgplot[16] == Rgb8{0, 0, 0});
+  Tek4125Profile profile;
+  applyOverride(profile, "power-up-map=ral-cgm");
+  CHECK(Tek4100Decoder(profile).image().colormap[5] == Rgb8{255, 255, 0});
+}
+
+TEST_CASE("PGPLOT's, zebra's, RAL-CGM's and the GKS driver's set-up sequences are accepted whole") {
+  Stream s;
+  // PGPLOT tkdriv.f, begin picture: RU1;6, LL2, RS, TM111, TG14 per entry, RR erase, ML1.
+  s.raw("\x1b%!0").raw("\x1bRU1;6").raw("\x1bLL2").cmd("RS").full(0, 0).full(639, 479).raw("\x1bTM111");
+  s.cmd("TG").i(1).i(4).i(3).i(0).i(100).i(0);
+  s.cmd("RR").full(0, 0).full(639, 479).i(3).raw("\x1bML1");
+  // zebra dev_4107.c tek_open: NQ, RW, SK, SV.
+  s.cmd("NQ").i(32767).cmd("RW").full(0, 0).full(639, 479).cmd("SK").i(-1).raw("\x1bSV00");
+  // RAL-CGM TEKinit: KI1, TB000, MB00, RE0, TM111, NT, NC, KT2, ML1, MV0, RD1 4, RV, RW.
+  s.raw("\x1bKI1\x1bTB000\x1bMB00\x1bRE0\x1bTM111\x1bNT1=\x1bNC=0\x1bKT2\x1bML1\x1bMV0");
+  s.cmd("RD").i(1).i(8).cmd("RV").full(0, 0).full(4095, 3071).cmd("RW").full(0, 0).full(4095, 3071);
+  // GKS GK4TID: KE0, KT2, MB00, RE0, TB000, KA1, RF2, MG1.
+  s.raw("\x1bKE0\x1bKT2\x1bMB00\x1bRE0\x1bTB000\x1bKA1\x1bRF2\x1bMG1");
+  // BRL-CAD dm-tek4109.c T49_open: NF1, MC, LL, KI0, IJ5:, TCK4C2F4, ML2; and KC.
+  s.raw("\x1bNF1\x1bMCA>B8:\x1bLLA>\x1bKI0\x1bIJ5:\x1bTCK4C2F4\x1bML2\x1bKC");
+  // zebra segments: SO 1, SC, QA1.
+  s.raw("\x1bSO1\x1bSC\x1bQA1");
+  const auto d = run(s.bytes);
+  CHECK(d.report().malformed == 0);
+  CHECK(d.report().unknownCommands == 0);
+  CHECK(px(d, 0, 0) == 3);    // PGPLOT's erase in index 3
+  CHECK(px(d, 639, 479) == 3);
+  CHECK(px(d, 640, 479) == 0);
+  CHECK(d.image().colormap[3] == Rgb8{0, 255, 0});
+}
+
+TEST_CASE("RR and RH follow the profile's origin readings") {
+  Stream s;
+  s.cmd("RS").full(100, 100).full(199, 199).cmd("RR").full(0, 0).full(1, 1).i(4);
+  s.cmd("RU").i(1).i(11).i(4).cmd("RH").full(10, 10).cmd("RP").i(1).i(1).raw("\x50");  // index 12
+  const auto screen = run(s.bytes);
+  CHECK(px(screen, 0, 0) == 4);
+  CHECK(px(screen, 110, 110) == 12);
+  Tek4125Profile other;
+  applyOverrides(other, {"rr-origin=viewport", "rh-origin=screen"});
+  const auto viewport = run(s.bytes, other);
+  CHECK(px(viewport, 0, 0) == 0);
+  CHECK(px(viewport, 100, 100) == 4);
+  // RH from the screen puts the beam left of and below the viewport: RP
+  // writes nothing there, as nothing outside the viewport is drawn.
+  CHECK(px(viewport, 10, 10) == 0);
+  CHECK(px(viewport, 110, 110) == 0);
+}

@@ -1,0 +1,164 @@
+// The strict form set (tek4125_forms.hpp) checked on the bytes themselves,
+// not through our own emulator: what the stream contains and what it never
+// contains. Then through the emulator under every reading no source
+// settles (profile keys rr-origin, rh-origin, surface-planes,
+// power-up-map): a strict stream must draw the same picture under each,
+// while a compact one shows that it depends on them.
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+#include "tests/devices/tek4125/tek_test_support.hpp"
+
+using namespace lattice;
+using namespace lattice::tektest;
+
+namespace {
+
+// The stream with each ESC ? turned back into the DEL it stands for.
+std::vector<std::uint8_t> unescaped(const std::vector<std::uint8_t>& b) {
+  std::vector<std::uint8_t> out;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    if (b[i] == 0x1B && i + 1 < b.size() && b[i + 1] == '?') {
+      out.push_back(0x7F);
+      ++i;
+    } else {
+      out.push_back(b[i]);
+    }
+  }
+  return out;
+}
+
+struct Command {
+  std::string name;
+  std::size_t at;  // offset of the first parameter byte
+};
+
+std::vector<Command> commands(const std::vector<std::uint8_t>& b) {
+  std::vector<Command> out;
+  for (std::size_t i = 0; i + 2 < b.size(); ++i)
+    if (b[i] == 0x1B && b[i + 1] >= 'A' && b[i + 1] <= 'Z' && b[i + 2] >= 'A' && b[i + 2] <= 'Z')
+      out.push_back(Command{std::string{char(b[i + 1]), char(b[i + 2])}, i + 3});
+  return out;
+}
+
+bool fullXyAt(const std::vector<std::uint8_t>& b, std::size_t at) {
+  auto in = [&](std::size_t i, int lo, int hi) { return at + i < b.size() && b[at + i] >= lo && b[at + i] <= hi; };
+  return in(0, 0x20, 0x3F) && in(1, 0x60, 0x7F) && in(2, 0x60, 0x7F) && in(3, 0x20, 0x3F) && in(4, 0x40, 0x5F);
+}
+
+std::size_t firstOf(const std::vector<Command>& cs, std::initializer_list<const char*> names) {
+  for (std::size_t i = 0; i < cs.size(); ++i)
+    for (const char* n : names)
+      if (cs[i].name == n) return i;
+  return cs.size();
+}
+
+Tek4125Profile strictProfile(int planes = 8) {
+  Tek4125Profile p;
+  p.planes = planes;
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("a strict stream: set-up first, full xy, one colour per TG, no raw DEL, RP only at 4 bits") {
+  for (int colors : {12, 200}) {
+    INFO(colors << " colours");
+    const Tek4125Profile profile = strictProfile();
+    CHECK(profile.forms == "strict");  // the default
+    const IndexedImage img = scene(301, 97, colors);
+    const std::vector<std::uint8_t> raw = encode(img, profile);
+    for (std::uint8_t c : raw) REQUIRE(c != 0x7F);  // RAL-CGM's way: ESC ? instead
+    const std::vector<std::uint8_t> b = unescaped(raw);
+    const std::vector<Command> cs = commands(b);
+    REQUIRE(b.size() > 4);
+    CHECK(std::vector<std::uint8_t>(b.begin(), b.begin() + 4) == std::vector<std::uint8_t>{0x1B, '%', '!', '0'});
+    const std::size_t drawing = firstOf(cs, {"RP", "RL", "RR", "RH"});
+    for (const char* setUp : {"KI", "RD", "TM", "TB", "TG", "RU", "RS"}) {
+      INFO(setUp);
+      CHECK(firstOf(cs, {setUp}) < drawing);
+    }
+    const Command rd = cs[firstOf(cs, {"RD"})];
+    CHECK(b[rd.at] == '1');  // one surface ...
+    CHECK(b[rd.at + 1] == '8');  // ... of all 8 planes
+    int tgCommands = 0;
+    for (const Command& c : cs) {
+      if (c.name == "TG") {
+        ++tgCommands;
+        CHECK(b[c.at] == '1');  // surface 1
+        CHECK(b[c.at + 1] == '4');  // one entry: four integers
+      }
+      if (c.name == "RH" || c.name == "RR" || c.name == "RS") {
+        INFO(c.name << " at " << c.at);
+        CHECK(fullXyAt(b, c.at));
+        CHECK(fullXyAt(b, c.at + 5 * (c.name != "RH")));
+      }
+      if (colors > 16) CHECK(c.name != "RP");
+    }
+    CHECK(tgCommands == colors);
+    const Command rs = cs[firstOf(cs, {"RS"})];  // the whole screen: (0, 0) to (1279, 1023)
+    CHECK(std::vector<std::uint8_t>(b.begin() + static_cast<long>(rs.at), b.begin() + static_cast<long>(rs.at) + 10) ==
+          std::vector<std::uint8_t>{0x20, 0x60, 0x60, 0x20, 0x40, 0x27, 0x6F, 0x7F, 0x29, 0x5F});
+    const Command ru = cs[firstOf(cs, {"RU"})];
+    CHECK(b[ru.at + 2] == (colors > 16 ? '8' : '4'));
+  }
+}
+
+TEST_CASE("a strict stream draws the same picture under every unsettled reading; a compact one does not") {
+  const std::vector<std::vector<std::string>> readings = {
+      {"rr-origin=viewport"}, {"rh-origin=screen"}, {"surface-planes=4"}, {"power-up-map=ral-cgm"},
+      {"rr-origin=viewport", "rh-origin=screen", "surface-planes=1"}};
+  const IndexedImage img = scene(160, 120, 200);
+  auto screenUnder = [&](const std::vector<std::uint8_t>& bytes, Tek4125Profile p,
+                         const std::vector<std::string>& reading) {
+    applyOverrides(p, reading);
+    Tek4100Decoder d(p);
+    d.feed(bytes);
+    d.finish();
+    return d.image();
+  };
+  for (const std::string forms : {"strict", "compact"}) {
+    Tek4125Profile profile;
+    profile.forms = forms;
+    // Compact with the pre-issue-14 strategy, which uses RR for long runs.
+    const Tek4125DriverOptions options =
+        forms == "strict" ? Tek4125DriverOptions{} : tek4125Strategy("spans").options;
+    const auto bytes = encode(img, profile, options);
+    const IndexedImage usual = screenUnder(bytes, profile, {});
+    for (const auto& reading : readings) {
+      INFO(forms << " under " << reading.front());
+      const IndexedImage other = screenUnder(bytes, profile, reading);
+      long differing = 0;
+      for (std::size_t i = 0; i < usual.pixels.size(); ++i)
+        differing += !(usual.colormap[usual.pixels[i]] == other.colormap[other.pixels[i]]);
+      if (forms == "strict") CHECK(differing == 0);
+      else if (reading.front() != "power-up-map=ral-cgm") CHECK(differing > 0);
+    }
+  }
+}
+
+TEST_CASE("a DEL inside a parameter goes as ESC ? in strict, raw in compact, and both decode alike") {
+  // A y with (y >> 2) & 31 == 31 has Lo-Y = DEL: screen rows 508..511 for
+  // strict's screen-wide viewport, picture rows 124..127 for compact's.
+  const IndexedImage img = noise(1280, 140, 200, 4u);  // screen rows 442..581
+  Tek4125Profile strict, compact;
+  compact.forms = "compact";
+  const auto s = encode(img, strict), c = encode(img, compact);
+  long rawStrict = 0, escapes = 0, rawCompact = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    rawStrict += s[i] == 0x7F;
+    escapes += s[i] == 0x1B && i + 1 < s.size() && s[i + 1] == '?';
+  }
+  for (std::uint8_t b : c) rawCompact += b == 0x7F;
+  CHECK(rawStrict == 0);
+  CHECK(escapes > 0);
+  CHECK(rawCompact > 0);
+  Tek4100Decoder a(strict), b(compact);
+  a.feed(s);
+  b.feed(c);
+  CHECK(a.report().malformed == 0);
+  CHECK(cutPicture(a.image(), strict, img.width, img.height).pixels == img.pixels);
+  CHECK(cutPicture(b.image(), compact, img.width, img.height).pixels == img.pixels);
+}
