@@ -9,7 +9,7 @@
 #include <iterator>
 #include <string_view>
 
-namespace lattice {
+namespace lattice::tek4027 {
 
 namespace {
 
@@ -353,4 +353,4 @@ void Tek4027Decoder::line(long x0, long y0, long x1, long y1) {
   devices::drawLine(image_, x0, y0, x1, y1, static_cast<PaletteIndex>(pot_));
 }
 
-}  // namespace lattice
+}  // namespace lattice::tek4027

@@ -9,6 +9,7 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::tek4027;
 
 namespace {
 std::vector<std::uint8_t> repeat(const std::string& unit, std::uint64_t times) {

@@ -6,13 +6,13 @@
 
 #include <algorithm>
 
-#include "devices/tek4125/tek4100_decoder.hpp"
-#include "devices/tek4125/tek_encoding.hpp"
+#include "devices/tek4125/tek4125_decoder.hpp"
+#include "devices/tek4125/tek4125_encoding.hpp"
 #include "devices/work_budget.hpp"
 #include "foundation/error.hpp"
 
 using namespace lattice;
-using namespace lattice::tek;
+using namespace lattice::tek4125;
 
 namespace {
 
@@ -38,13 +38,13 @@ TEST_CASE("rectangle fills copy or XOR whole rows and are charged their area") {
   appendInt(b, 8);
   const Bytes fills = fullScreenFills(2, 0x5A);
   b.insert(b.end(), fills.begin(), fills.end());
-  Tek4100Decoder d{Tek4125Profile{}};
+  Tek4125Decoder d{Tek4125Profile{}};
   decodeBytes(d, b, "xor.tek");
   // XORed twice: back to the cleared screen.
   CHECK(std::all_of(d.image().pixels.begin(), d.image().pixels.end(), [](PaletteIndex p) { return p == 0; }));
   CHECK(d.report().pixelWork == 2u * 1280u * 1024u);
 
-  Tek4100Decoder copy{Tek4125Profile{}};
+  Tek4125Decoder copy{Tek4125Profile{}};
   decodeBytes(copy, fullScreenFills(1, 7), "copy.tek");
   CHECK(std::all_of(copy.image().pixels.begin(), copy.image().pixels.end(), [](PaletteIndex p) { return p == 7; }));
 }
@@ -53,11 +53,11 @@ TEST_CASE("a stream of full-screen fills is refused once it passes the drawing b
   const std::uint64_t screen = 1280u * 1024u;
   const int fit = static_cast<int>(kPixelWorkBudget / screen);  // 819
   {
-    Tek4100Decoder d{Tek4125Profile{}};
+    Tek4125Decoder d{Tek4125Profile{}};
     REQUIRE_NOTHROW(decodeBytes(d, fullScreenFills(fit, 3), "fits.tek"));
     CHECK(d.report().pixelWork == fit * screen);
   }
-  Tek4100Decoder d{Tek4125Profile{}};
+  Tek4125Decoder d{Tek4125Profile{}};
   Bytes over = fullScreenFills(fit, 3);
   const Bytes last = fullScreenFills(1, 9);
   over.insert(over.end(), last.begin(), last.end());
