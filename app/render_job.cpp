@@ -100,7 +100,7 @@ std::unique_ptr<ByteSink> openTransport(const RenderJob& job, const devices::Dev
 // and, when a picture is asked for, through the emulator on their way.
 template <typename T>
 devices::DriverStats renderToDevice(Renderer<T>& renderer, const RenderJob& job, const devices::Device& device,
-                                    const PipelineOptions& pipeline, std::string& where) {
+                                    const quantize::PipelineOptions& pipeline, std::string& where) {
   int replyFd = -1;
   std::unique_ptr<ByteSink> transport = openTransport(job, device, where, replyFd);
   std::unique_ptr<StreamDecoder> emulator;
@@ -110,7 +110,7 @@ devices::DriverStats renderToDevice(Renderer<T>& renderer, const RenderJob& job,
   });
   auto driver = device.makeDriver(tee);
   if (replyFd >= 0) driver->answerOn(replyFd, job.port->stallTimeoutSeconds);
-  runPipeline(renderer, driver->sink(), pipeline);
+  quantize::runPipeline(renderer, driver->sink(), pipeline);
   tee.close();  // renames the stream file into place, or drains the serial line
   const devices::DriverStats stats = driver->stats();
   if (device.line)
@@ -134,7 +134,7 @@ devices::DriverStats renderToDevice(Renderer<T>& renderer, const RenderJob& job,
 template <typename T>
 RenderResult renderWith(const lht::SceneWithLattices& loaded, const RenderJob& job) {
   const auto start = std::chrono::steady_clock::now();
-  PipelineOptions pipeline = job.pipeline;
+  quantize::PipelineOptions pipeline = job.pipeline;
   std::optional<devices::Device> device;
   if (!job.device.empty()) device = devices::makeDevice(job.device, job.settings);
   const RenderSettings settings =

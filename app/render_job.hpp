@@ -40,7 +40,7 @@ struct RenderJob {
   std::optional<lht::LhtPrecision> precision;  // every lattice's entry precision
   std::optional<std::uint64_t> memoryBudget;   // bytes of peak resident memory
   bool modeChosenByUser = false;               // the quantizer mode is the user's (not the budget's)
-  PipelineOptions pipeline;
+  quantize::PipelineOptions pipeline;
   bool quiet = false;  // no progress bars
 };
 

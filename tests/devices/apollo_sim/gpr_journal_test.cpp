@@ -15,6 +15,7 @@
 #include "tests/quantize/test_sources.hpp"
 
 using namespace lattice;
+using namespace lattice::quantize;
 using namespace lattice::apollo;
 using lattice::testing::FunctionSource;
 
