@@ -13,6 +13,7 @@
 
 #include "app/commands.hpp"
 #include "devices/device_table.hpp"
+#include "devices/work_budget.hpp"
 #include "io/png.hpp"
 #include "foundation/error.hpp"
 
@@ -32,19 +33,17 @@ void runEmulate(const EmulateOptions& o) {
   using lattice::ErrorKind;
   const lattice::devices::Device device = lattice::devices::makeDevice(o.device, o.settings);
   std::unique_ptr<lattice::StreamDecoder> decoder = device.makeEmulator();
-  // Read in pieces: a stream may be large, and the decoder takes any chunking.
+  // Read in pieces (a stream may be large, and the decoder takes any
+  // chunking), within the stream-size limit and the drawing budget.
   std::FILE* in = o.input == "-" ? stdin : std::fopen(o.input.c_str(), "rb");
   if (!in) throw Error(ErrorKind::Input, fmt::format("{}: cannot open the stream: {}", o.input, std::strerror(errno)));
-  std::vector<std::uint8_t> buffer(1 << 16);
-  while (true) {
-    const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), in);
-    if (n > 0) decoder->feed(std::span<const std::uint8_t>(buffer.data(), n));
-    if (n < buffer.size()) break;
+  try {
+    lattice::decodeStream(*decoder, in, o.input);
+  } catch (...) {
+    if (in != stdin) std::fclose(in);
+    throw;
   }
-  const bool failed = std::ferror(in) != 0;
   if (in != stdin) std::fclose(in);
-  if (failed) throw Error(ErrorKind::Input, fmt::format("{}: read error", o.input));
-  decoder->finish();
   lattice::writePng(o.output, decoder->image());
   const lattice::DecodeReport& report = decoder->report();
   if (o.report) fmt::print("{}", report.summary());
@@ -74,7 +73,8 @@ void addEmulate(CLI::App& root) {
   cmd->add_flag("--strict", o->strict, "Exit 3 if the stream holds unknown or malformed commands");
   cmd->footer(
       "The emulator never stops on bad bytes: unknown commands and garbage are skipped (resynchronising at the\n"
-      "next command) and counted. Example:\n"
+      "next command) and counted. Streams over 256 MiB, or asking for more than 2^30 pixels of drawing, are\n"
+      "refused with exit 3 (docs/limits.md). Example:\n"
       "  lattice emulate --device tek4125 fuzzy.tek -o fuzzy.png --report");
   cmd->callback([o] { runEmulate(*o); });
 }

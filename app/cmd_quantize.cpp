@@ -25,7 +25,7 @@ struct QuantizeArgs {
 };
 
 void runQuantize(const QuantizeArgs& args, const CLI::App& cmd) {
-  lattice::PipelineOptions options = lattice::app::toPipelineOptions(args.pipeline, cmd);
+  lattice::quantize::PipelineOptions options = lattice::app::toPipelineOptions(args.pipeline, cmd);
   std::filesystem::path output(args.output);
   if (std::filesystem::is_directory(output))
     throw lattice::Error(lattice::ErrorKind::Output,
@@ -34,13 +34,13 @@ void runQuantize(const QuantizeArgs& args, const CLI::App& cmd) {
   lattice::RgbImage image = lattice::readPng(args.input);  // Error(Input) naming the file
   lattice::RgbImageSource source(image);
   lattice::IndexedImageSink sink(args.pipeline.colors);
-  lattice::PipelineReport report = lattice::runPipeline(source, sink, options);
+  lattice::quantize::PipelineReport report = lattice::quantize::runPipeline(source, sink, options);
   lattice::writePng(output, sink.image());  // atomic; Error(Output) naming the file
   if (args.verbose)
     fmt::print("{}: {}x{}, {} distinct 18-bit colours -> {} palette entries ({} mode, {} rows rendered, {} KiB of "
                "pipeline buffers)\n",
                args.output, image.width, image.height, report.distinctColors, report.paletteSize,
-               lattice::pipelineModeName(options.mode), report.rowsRendered, (report.totalBytes() + 1023) / 1024);
+               lattice::quantize::pipelineModeName(options.mode), report.rowsRendered, (report.totalBytes() + 1023) / 1024);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "app/serial_args.hpp"
 #include "devices/apollo_sim/apollo_profile.hpp"
 #include "devices/device_table.hpp"
+#include "foundation/arithmetics.hpp"
 #include "foundation/resident_memory.hpp"
 
 namespace lattice::app {
@@ -23,7 +24,6 @@ namespace {
 struct RenderFlags {
   RenderJob job;
   std::string device = "png";
-  std::string arith = "double";
   bool noLatticeShadows = false;
   std::string lhtPrecision;  // empty: each lattice's own `precision`
   std::string apolloProfile = "dn660";
@@ -57,10 +57,11 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
                  "Worker threads for rendering and rasterizing lattices (default: all cores); the image does not "
                  "depend on it")
       ->check(CLI::Range(1, 256));
-  cmd.add_option("--arith", f.arith,
-                 "Arithmetic of the whole per-pixel path: float, double, or fixed (Q31.32 integers, no FPU; "
-                 "docs/fixed-point.md)")
-      ->check(CLI::IsMember({"float", "double", "fixed"}))
+  cmd.add_option("--arith", j.arithmetic,
+                 fmt::format("Arithmetic of the whole per-pixel path: {} (fixed: Q31.32 integers, no FPU; "
+                             "docs/fixed-point.md)",
+                             arithmeticNames()))
+      ->check([](const std::string& name) { return isArithmeticName(name) ? "" : "choose " + arithmeticNames(); })
       ->capture_default_str();
   cmd.add_flag("--full", j.fullRayTrace,
                "Full ray trace: replace every lattice by its exact CSG object (the thesis's reference column)");
@@ -83,7 +84,6 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
   RenderJob job = f.job;
   if (f.device != "png") job.device = f.device;
   if (f.device == "apollo") job.settings.insert(job.settings.begin(), "profile=" + f.apolloProfile);
-  job.arithmetic = f.arith == "float" ? Arithmetic::Float : f.arith == "fixed" ? Arithmetic::Fixed : Arithmetic::Double;
   job.latticeShadows = !f.noLatticeShadows;
   if (!f.lhtPrecision.empty()) job.precision = lht::parseLhtPrecision(f.lhtPrecision, "--lht-precision");
   if (!f.memoryBudget.empty()) job.memoryBudget = parseByteCount(f.memoryBudget, "--memory-budget");
@@ -117,7 +117,7 @@ void addRender(CLI::App& root) {
     const RenderJob job = jobFrom(*flags, *cmd);
     const RenderResult r = renderScene(job);
     fmt::print(stderr, "lattice render: {}: {}x{}, {:.2f} s, {} rays ({} arithmetic, {} threads){}\n", job.scene,
-               r.width, r.height, r.seconds, r.rays, flags->arith, r.threads,
+               r.width, r.height, r.seconds, r.rays, job.arithmetic, r.threads,
                job.picture.empty() ? "" : fmt::format(", picture {}", job.picture));
   });
 }

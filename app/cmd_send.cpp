@@ -8,6 +8,7 @@
 
 #include "app/commands.hpp"
 #include "app/serial_args.hpp"
+#include "devices/work_budget.hpp"
 #include "foundation/atomic_file.hpp"
 #include "io/serial_sink.hpp"
 #include "io/stream_sender.hpp"
@@ -23,7 +24,8 @@ struct SendArgs {
 };
 
 void runSend(const SendArgs& args) {
-  auto bytes = lattice::readWholeFile(args.stream);
+  // A stream the emulators would refuse as too long is no terminal stream.
+  auto bytes = lattice::readFileUpTo(args.stream, lattice::kMaxStreamBytes, "a stream to send");
   // Checked before the port is opened, so a typo does not touch the line.
   if (args.resume > bytes.size())
     throw lattice::Error(lattice::ErrorKind::Usage,
@@ -58,7 +60,7 @@ void addSend(CLI::App& root) {
       "Send a stored device command stream (e.g. a Tektronix 4125/4027 stream file) to a terminal over a serial line, through "
       "flow control, with a progress bar. If the line stalls (exit 6) or hangs up (exit 7) it prints how many "
       "bytes went out and the `--resume` command that continues exactly there.");
-  // Read (and refused with exit 3, naming the file) by readWholeFile, not by a CLI check.
+  // Read (and refused with exit 3, naming the file) by readFileUpTo, not by a CLI check.
   cmd->add_option("STREAM", args->stream, "The command stream file to send")->required();
   lattice::app::addSerialOptions(cmd, args->serial);
   cmd->add_option("--resume", args->resume, "Start at this byte offset, as printed by a failed send")

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <new>
 
 #include "app/commands.hpp"
 #include "foundation/error.hpp"
@@ -26,6 +27,14 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
     fmt::print(stderr, "lattice: error: {}\n", e.what());
     return e.exitCode();
+  } catch (const std::bad_alloc&) {
+    // Memory runs out when an input asks for more than the machine (or a
+    // ulimit) gives: a property of the input, so exit 3, not a bug (70).
+    std::fflush(stdout);
+    fmt::print(stderr,
+               "lattice: error: out of memory: the input asks for more memory than is available (limits: "
+               "docs/limits.md; a smaller --width/--height or count, or more memory, may help)\n");
+    return static_cast<int>(lattice::ErrorKind::Input);
   } catch (const std::exception& e) {
     std::fflush(stdout);
     fmt::print(stderr, "lattice: internal error: {}\n(please report this with the command line that caused it)\n", e.what());

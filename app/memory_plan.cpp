@@ -35,14 +35,14 @@ std::string listItems(const std::vector<MemoryItem>& items) {
   return out;
 }
 
-MemoryPlan costOf(const MemoryPlanRequest& request, PipelineMode mode) {
+MemoryPlan costOf(const MemoryPlanRequest& request, quantize::PipelineMode mode) {
   MemoryPlan plan;
   plan.mode = mode;
   plan.items.push_back({"resident after building the scene", request.resident});
   if (request.quantized) {
-    PipelineOptions options = request.pipeline;
+    quantize::PipelineOptions options = request.pipeline;
     options.mode = mode;
-    const PipelineReport buffers = pipelineBuffers(request.width, request.height, options);
+    const quantize::PipelineReport buffers = quantize::pipelineBuffers(request.width, request.height, options);
     plan.items.push_back({"histogram", buffers.histogramBytes});
     plan.items.push_back({"rows", buffers.rowBytes + buffers.errorRowBytes});
     plan.items.push_back({"frame buffer", buffers.frameBytes});
@@ -55,9 +55,9 @@ MemoryPlan costOf(const MemoryPlanRequest& request, PipelineMode mode) {
   return plan;
 }
 
-std::vector<PipelineMode> candidateModes(const MemoryPlanRequest& request) {
+std::vector<quantize::PipelineMode> candidateModes(const MemoryPlanRequest& request) {
   if (!request.quantized || request.modeChosenByUser) return {request.pipeline.mode};
-  return {PipelineMode::Frame, PipelineMode::TwoPass};  // fastest first
+  return {quantize::PipelineMode::Frame, quantize::PipelineMode::TwoPass};  // fastest first
 }
 
 }  // namespace
@@ -72,7 +72,7 @@ std::uint64_t leastOutputBytes(const MemoryPlanRequest& request) {
   outputOnly.resident = 0;
   outputOnly.peakSoFar = 0;
   std::uint64_t least = UINT64_MAX;
-  for (PipelineMode mode : candidateModes(request)) least = std::min(least, costOf(outputOnly, mode).predictedPeak);
+  for (quantize::PipelineMode mode : candidateModes(request)) least = std::min(least, costOf(outputOnly, mode).predictedPeak);
   return least;
 }
 
@@ -85,7 +85,7 @@ MemoryPlan planMemory(const MemoryPlanRequest& request) {
                             "the .lht in the scene's `cache =` key{} (docs/memory.md)",
                             budget, formatBytes(request.peakSoFar), formatBytes(request.resident), kBuildAdvice));
   std::vector<MemoryPlan> tried;
-  for (PipelineMode mode : candidateModes(request)) {
+  for (quantize::PipelineMode mode : candidateModes(request)) {
     MemoryPlan plan = costOf(request, mode);
     if (plan.predictedPeak <= request.budget) return plan;
     tried.push_back(std::move(plan));
@@ -93,10 +93,10 @@ MemoryPlan planMemory(const MemoryPlanRequest& request) {
   const MemoryPlan& smallest = *std::min_element(
       tried.begin(), tried.end(), [](const MemoryPlan& a, const MemoryPlan& b) { return a.predictedPeak < b.predictedPeak; });
   std::string advice;
-  if (request.modeChosenByUser && request.pipeline.mode != PipelineMode::TwoPass) {
+  if (request.modeChosenByUser && request.pipeline.mode != quantize::PipelineMode::TwoPass) {
     MemoryPlanRequest twoPass = request;
-    twoPass.pipeline.mode = PipelineMode::TwoPass;
-    const MemoryPlan other = costOf(twoPass, PipelineMode::TwoPass);
+    twoPass.pipeline.mode = quantize::PipelineMode::TwoPass;
+    const MemoryPlan other = costOf(twoPass, quantize::PipelineMode::TwoPass);
     if (other.predictedPeak <= request.budget) advice = " --mode passes would fit; drop --mode or choose it.";
   }
   if (advice.empty())

@@ -34,13 +34,13 @@ struct MemoryPlanRequest {
   std::uint64_t peakSoFar = 0;         // the high-water mark when planning
   int width = 0, height = 0;
   bool quantized = true;               // false: --device png, no pipeline
-  PipelineOptions pipeline;            // dither, the user's mode
+  quantize::PipelineOptions pipeline;            // dither, the user's mode
   bool modeChosenByUser = false;       // --mode given: check it, do not change it
   std::vector<MemoryItem> deviceItems; // images the output device will hold
 };
 
 struct MemoryPlan {
-  PipelineMode mode = PipelineMode::TwoPass;
+  quantize::PipelineMode mode = quantize::PipelineMode::TwoPass;
   std::uint64_t predictedPeak = 0;
   std::vector<MemoryItem> items;  // what predictedPeak adds up
   std::string summary() const;    // one line for the log

@@ -31,14 +31,14 @@ void addPipelineOptions(CLI::App* cmd, PipelineArgs& args) {
   cmd->add_flag("-q,--quiet", args.quiet, "no progress bars");
 }
 
-PipelineOptions toPipelineOptions(const PipelineArgs& args, const CLI::App& cmd) {
-  static const std::map<std::string, Dither> dithers{
-      {"none", Dither::None}, {"fs", Dither::FloydSteinberg}, {"bayer", Dither::Bayer}};
-  static const std::map<std::string, SplitRule> splits{{"median", SplitRule::Median},
-                                                       {"variance", SplitRule::Variance}};
-  static const std::map<std::string, PipelineMode> modes{
-      {"passes", PipelineMode::TwoPass}, {"frame", PipelineMode::Frame}, {"sample", PipelineMode::Sample}};
-  PipelineOptions options;
+quantize::PipelineOptions toPipelineOptions(const PipelineArgs& args, const CLI::App& cmd) {
+  static const std::map<std::string, quantize::Dither> dithers{
+      {"none", quantize::Dither::None}, {"fs", quantize::Dither::FloydSteinberg}, {"bayer", quantize::Dither::Bayer}};
+  static const std::map<std::string, quantize::SplitRule> splits{{"median", quantize::SplitRule::Median},
+                                                       {"variance", quantize::SplitRule::Variance}};
+  static const std::map<std::string, quantize::PipelineMode> modes{
+      {"passes", quantize::PipelineMode::TwoPass}, {"frame", quantize::PipelineMode::Frame}, {"sample", quantize::PipelineMode::Sample}};
+  quantize::PipelineOptions options;
   options.maxColors = args.colors;
   options.quantize.dither = dithers.at(args.dither);  // values checked by CLI::IsMember
   options.quantize.split = splits.at(args.split);
@@ -46,10 +46,10 @@ PipelineOptions toPipelineOptions(const PipelineArgs& args, const CLI::App& cmd)
   const bool sampleGiven = cmd.count("--sample") > 0;
   const bool modeGiven = cmd.count("--mode") > 0;
   options.mode = modes.at(args.mode);
-  if (sampleGiven && !modeGiven) options.mode = PipelineMode::Sample;
-  if (sampleGiven && options.mode != PipelineMode::Sample)
+  if (sampleGiven && !modeGiven) options.mode = quantize::PipelineMode::Sample;
+  if (sampleGiven && options.mode != quantize::PipelineMode::Sample)
     throw Error(ErrorKind::Usage, fmt::format("--sample only applies to --mode sample (got --mode {})", args.mode));
-  if (options.mode == PipelineMode::Sample) {
+  if (options.mode == quantize::PipelineMode::Sample) {
     options.sampleStep = sampleGiven ? args.sample : 4;
     if (options.sampleStep < 1)
       throw Error(ErrorKind::Usage, fmt::format("--sample {} is out of range: give a step of 1 or more", args.sample));

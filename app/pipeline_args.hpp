@@ -22,6 +22,6 @@ struct PipelineArgs {
 
 void addPipelineOptions(CLI::App* cmd, PipelineArgs& args);
 // Throws lattice::Error(Usage) for combinations CLI11 cannot check alone.
-PipelineOptions toPipelineOptions(const PipelineArgs& args, const CLI::App& cmd);
+quantize::PipelineOptions toPipelineOptions(const PipelineArgs& args, const CLI::App& cmd);
 
 }  // namespace lattice::app

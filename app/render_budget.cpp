@@ -21,7 +21,7 @@ std::uint64_t pixels(int w, int h) { return static_cast<std::uint64_t>(w) * stat
 
 }  // namespace
 
-MemoryPlanRequest renderBudgetRequest(std::uint64_t budget, int width, int height, const PipelineOptions& pipeline,
+MemoryPlanRequest renderBudgetRequest(std::uint64_t budget, int width, int height, const quantize::PipelineOptions& pipeline,
                                       bool modeChosenByUser, const devices::Device* device, bool writesPng) {
   MemoryPlanRequest request;
   request.budget = budget;

@@ -17,7 +17,7 @@ namespace lattice::app {
 // The request for a width x height picture, before anything is measured.
 // `device` is the device table's entry (its driver's and emulator's memory),
 // or nullptr for a truecolour picture; `writesPng`: a picture is saved (-o).
-MemoryPlanRequest renderBudgetRequest(std::uint64_t budget, int width, int height, const PipelineOptions& pipeline,
+MemoryPlanRequest renderBudgetRequest(std::uint64_t budget, int width, int height, const quantize::PipelineOptions& pipeline,
                                       bool modeChosenByUser, const devices::Device* device, bool writesPng);
 
 // The packing of lattices rasterized in this run: the form the budget can

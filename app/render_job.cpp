@@ -10,6 +10,7 @@
 
 #include "app/render_budget.hpp"
 #include "devices/device_table.hpp"
+#include "foundation/arithmetics.hpp"
 #include "foundation/atomic_file.hpp"
 #include "foundation/error.hpp"
 #include "foundation/progress.hpp"
@@ -99,7 +100,7 @@ std::unique_ptr<ByteSink> openTransport(const RenderJob& job, const devices::Dev
 // and, when a picture is asked for, through the emulator on their way.
 template <typename T>
 devices::DriverStats renderToDevice(Renderer<T>& renderer, const RenderJob& job, const devices::Device& device,
-                                    const PipelineOptions& pipeline, std::string& where) {
+                                    const quantize::PipelineOptions& pipeline, std::string& where) {
   int replyFd = -1;
   std::unique_ptr<ByteSink> transport = openTransport(job, device, where, replyFd);
   std::unique_ptr<StreamDecoder> emulator;
@@ -109,7 +110,7 @@ devices::DriverStats renderToDevice(Renderer<T>& renderer, const RenderJob& job,
   });
   auto driver = device.makeDriver(tee);
   if (replyFd >= 0) driver->answerOn(replyFd, job.port->stallTimeoutSeconds);
-  runPipeline(renderer, driver->sink(), pipeline);
+  quantize::runPipeline(renderer, driver->sink(), pipeline);
   tee.close();  // renames the stream file into place, or drains the serial line
   const devices::DriverStats stats = driver->stats();
   if (device.line)
@@ -133,7 +134,7 @@ devices::DriverStats renderToDevice(Renderer<T>& renderer, const RenderJob& job,
 template <typename T>
 RenderResult renderWith(const lht::SceneWithLattices& loaded, const RenderJob& job) {
   const auto start = std::chrono::steady_clock::now();
-  PipelineOptions pipeline = job.pipeline;
+  quantize::PipelineOptions pipeline = job.pipeline;
   std::optional<devices::Device> device;
   if (!job.device.empty()) device = devices::makeDevice(job.device, job.settings);
   const RenderSettings settings =
@@ -167,6 +168,7 @@ RenderResult renderWith(const lht::SceneWithLattices& loaded, const RenderJob& j
 }  // namespace
 
 void checkRenderJob(const RenderJob& job) {
+  if (!isArithmeticName(job.arithmetic)) throwUnknownArithmetic(job.arithmetic);
   if (job.device.empty()) {
     if (job.picture.empty()) throw Error(ErrorKind::Usage, "a truecolour render writes a PNG: give -o OUT.png");
     if (!job.stream.empty() || job.port)
@@ -198,15 +200,7 @@ RenderResult renderScene(const RenderJob& job) {
   tables.precision = job.precision;
   tables.threads = static_cast<unsigned>(job.threads);  // one thread means one thread throughout
   const lht::SceneWithLattices loaded = lht::loadSceneWithLattices(job.scene, tables);
-  switch (job.arithmetic) {
-    case Arithmetic::Float:
-      return renderWith<float>(loaded, job);
-    case Arithmetic::Fixed:
-      return renderWith<Fixed32>(loaded, job);
-    case Arithmetic::Double:
-      break;
-  }
-  return renderWith<double>(loaded, job);
+  return withArithmetic(job.arithmetic, [&](auto type) { return renderWith<typename decltype(type)::type>(loaded, job); });
 }
 
 }  // namespace lattice::app

@@ -23,8 +23,6 @@
 
 namespace lattice::app {
 
-enum class Arithmetic { Float, Double, Fixed };
-
 struct RenderJob {
   std::string scene;                  // scene file
   std::string device;                 // a device table name, or empty for a truecolour PNG
@@ -36,13 +34,13 @@ struct RenderJob {
   int width = 0;                      // 0: the scene's, fitted to the device's screen
   int height = 0;
   int threads = 0;                    // 0: all cores
-  Arithmetic arithmetic = Arithmetic::Double;
+  std::string arithmetic = "double";  // an arithmetic's name (foundation/arithmetics.hpp)
   bool fullRayTrace = false;          // lattices replaced by their exact CSG objects
   bool latticeShadows = true;
   std::optional<lht::LhtPrecision> precision;  // every lattice's entry precision
   std::optional<std::uint64_t> memoryBudget;   // bytes of peak resident memory
   bool modeChosenByUser = false;               // the quantizer mode is the user's (not the budget's)
-  PipelineOptions pipeline;
+  quantize::PipelineOptions pipeline;
   bool quiet = false;  // no progress bars
 };
 

@@ -292,28 +292,28 @@ ErrorSum eighteenBitFloor(const RgbImage& image) {
 
 struct Config {
   std::string name;
-  lattice::QuantizeOptions options;
-  lattice::PipelineMode mode = lattice::PipelineMode::TwoPass;
+  lattice::quantize::QuantizeOptions options;
+  lattice::quantize::PipelineMode mode = lattice::quantize::PipelineMode::TwoPass;
 };
 
 std::vector<Config> configs() {
-  using lattice::Dither;
-  using lattice::SplitRule;
+  using lattice::quantize::Dither;
+  using lattice::quantize::SplitRule;
   std::vector<Config> list;
-  auto add = [&](std::string name, SplitRule split, int refine, Dither dither) {
-    lattice::QuantizeOptions o;
+  auto add = [&](std::string name, lattice::quantize::SplitRule split, int refine, lattice::quantize::Dither dither) {
+    lattice::quantize::QuantizeOptions o;
     o.split = split;
     o.refineIterations = refine;
     o.dither = dither;
     list.push_back({std::move(name), o});
   };
-  add("median", SplitRule::Median, 0, Dither::None);
-  add("variance", SplitRule::Variance, 0, Dither::None);
-  add("median + refine 3", SplitRule::Median, 3, Dither::None);
-  add("variance + refine 3", SplitRule::Variance, 3, Dither::None);
-  add("median, fs", SplitRule::Median, 0, Dither::FloydSteinberg);
-  add("median, bayer", SplitRule::Median, 0, Dither::Bayer);
-  add("variance + refine 3, fs", SplitRule::Variance, 3, Dither::FloydSteinberg);
+  add("median", lattice::quantize::SplitRule::Median, 0, lattice::quantize::Dither::None);
+  add("variance", lattice::quantize::SplitRule::Variance, 0, lattice::quantize::Dither::None);
+  add("median + refine 3", lattice::quantize::SplitRule::Median, 3, lattice::quantize::Dither::None);
+  add("variance + refine 3", lattice::quantize::SplitRule::Variance, 3, lattice::quantize::Dither::None);
+  add("median, fs", lattice::quantize::SplitRule::Median, 0, lattice::quantize::Dither::FloydSteinberg);
+  add("median, bayer", lattice::quantize::SplitRule::Median, 0, lattice::quantize::Dither::Bayer);
+  add("variance + refine 3, fs", lattice::quantize::SplitRule::Variance, 3, lattice::quantize::Dither::FloydSteinberg);
   return list;
 }
 
@@ -329,14 +329,14 @@ Result runOurs(const RgbImage& image, int k, const Config& config, int repeats) 
   for (int i = 0; i < repeats; ++i) {
     lattice::RgbImageSource source(image);
     ErrorSink sink(image, k);
-    lattice::PipelineOptions options;
+    lattice::quantize::PipelineOptions options;
     options.mode = config.mode;
     options.quantize = config.options;
     options.progress = false;
     long long before = liveBytes.load();
     peakBytes = before;
     auto start = std::chrono::steady_clock::now();
-    lattice::runPipeline(source, sink, options);
+    lattice::quantize::runPipeline(source, sink, options);
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     result.milliseconds = std::min(result.milliseconds, ms);
     result.peakBytes = peakBytes.load() - before;
@@ -439,9 +439,9 @@ int main(int argc, char** argv) {
         }
     }
     // Pipeline modes at K = 256 (same palette for passes and frame).
-    for (auto [mode, label] : {std::pair{lattice::PipelineMode::TwoPass, "mode passes"},
-                               std::pair{lattice::PipelineMode::Frame, "mode frame"},
-                               std::pair{lattice::PipelineMode::Sample, "mode sample 4"}}) {
+    for (auto [mode, label] : {std::pair{lattice::quantize::PipelineMode::TwoPass, "mode passes"},
+                               std::pair{lattice::quantize::PipelineMode::Frame, "mode frame"},
+                               std::pair{lattice::quantize::PipelineMode::Sample, "mode sample 4"}}) {
       Config c{label, {}, mode};
       printRow(name, 256, label, runOurs(image, 256, c, repeats));
     }

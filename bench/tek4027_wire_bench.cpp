@@ -34,6 +34,8 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::quantize;
+using namespace lattice::tek4027;
 
 namespace {
 

@@ -13,6 +13,7 @@
 // that is exactly the pixel set of the integer Bresenham walk (checked
 // exhaustively for endpoints in [-6, 6] and on 200,000 random lines in
 // [-300, 300]), so either way of thinking about a line gives the same picture.
+#include <cstdint>
 #include <span>
 
 #include "foundation/indexed_image.hpp"
@@ -27,9 +28,15 @@ inline PaletteIndex* pixelAt(IndexedImage& screen, long px, long py) {
 
 // A line between pixel centres, both ends drawn, clipped to the screen.
 void drawLine(IndexedImage& screen, long px0, long py0, long px1, long py1, PaletteIndex index);
+// The steps drawLine visits for that line (its work, devices/work_budget.hpp).
+std::uint64_t lineWork(const IndexedImage& screen, long px0, long py0, long px1, long py1);
 
 // Even-odd fill of a polygon (x, y pairs in pixels, fractions allowed): a
-// pixel is inside when its centre is. Work is O(rows covered * points).
+// pixel is inside when its centre is. Work is O(rows covered * (points +
+// width)): each row is swept, never sorted.
 void fillPolygon(IndexedImage& screen, std::span<const double> xy, PaletteIndex index);
+// What fillPolygon will cost, in pixel units: per row it covers, one unit per
+// edge tested and one per pixel it may fill.
+std::uint64_t fillPolygonWork(const IndexedImage& screen, std::span<const double> xy);
 
 }  // namespace lattice::devices

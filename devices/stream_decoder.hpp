@@ -22,6 +22,10 @@ struct DecodeReport {
   std::uint64_t unknownCommands = 0;  // well-formed introducer, unknown name
   std::uint64_t malformed = 0;        // bad parameters, truncated commands, stray bytes
   std::map<std::string, std::uint64_t> unknownByName;  // name -> count, for --report
+  // Drawing charged against kPixelWorkBudget (devices/work_budget.hpp); once
+  // over it, nothing more is drawn.
+  std::uint64_t pixelWork = 0;
+  bool overBudget = false;
   std::string summary() const;                         // multi-line human-readable
 };
 

@@ -13,8 +13,10 @@
 //   FNV-1a checksum recomputed, so mutations also reach the checks behind it
 //   (a random flip almost never survives a 64-bit checksum). A table that
 //   parses is walked (chainStats) and probed with find().
-// * The PNG reader takes a path, so the bytes go through a scratch file in
-//   $TMPDIR named by the process id (one per fuzzing worker).
+// * The fixed .lht bytes also go through readLhtFile, the streamed reader the
+//   CLI uses, by way of a scratch file in $TMPDIR named by the process id
+//   (one per fuzzing worker). PNG bytes go to readPngBytes, the decoder
+//   readPng uses, in memory.
 #include "fuzz/entries.hpp"
 
 #include <unistd.h>
@@ -26,7 +28,7 @@
 #include <string>
 
 #include "devices/tek4027/tek4027_decoder.hpp"
-#include "devices/tek4125/tek4100_decoder.hpp"
+#include "devices/tek4125/tek4125_decoder.hpp"
 #include "io/png.hpp"
 #include "lht/lattice_scene.hpp"
 #include "lht/lht_file.hpp"
@@ -42,19 +44,24 @@ void decode(StreamDecoder& decoder, std::span<const std::uint8_t> bytes) {
   decoder.finish();
 }
 
-void probeLht(std::span<const std::uint8_t> bytes) {
+void probeLht(const lht::LhtFile& file) {
+  (void)file.table.chainStats();
+  const auto& cells = file.box.cells();
+  for (int i = 0; i < 64; ++i) {
+    const auto coord = [&](int axis, int salt) {
+      return static_cast<std::uint8_t>((i * 37 + salt) % (cells[static_cast<std::size_t>(axis)] + 1));
+    };
+    const lht::LatticePoint in{coord(0, 0), coord(1, 5), coord(2, 11)};
+    const lht::LatticePoint out{coord(0, 3), coord(1, 7), coord(2, 13)};
+    (void)file.table.find(in, out);
+  }
+}
+
+// Each parse of one input: a located Error is the expected answer.
+template <class Read>
+void readAndProbe(Read read) {
   try {
-    const lht::LhtFile file = lht::parseLht(bytes, "fuzz.lht");
-    (void)file.table.chainStats();
-    const auto& cells = file.box.cells();
-    for (int i = 0; i < 64; ++i) {
-      const auto coord = [&](int axis, int salt) {
-        return static_cast<std::uint8_t>((i * 37 + salt) % (cells[static_cast<std::size_t>(axis)] + 1));
-      };
-      const lht::LatticePoint in{coord(0, 0), coord(1, 5), coord(2, 11)};
-      const lht::LatticePoint out{coord(0, 3), coord(1, 7), coord(2, 13)};
-      (void)file.table.find(in, out);
-    }
+    probeLht(read());
   } catch (const Error&) {
   }
 }
@@ -70,37 +77,38 @@ void sceneLoader(std::span<const std::uint8_t> bytes) {
 }
 
 void lhtReader(std::span<const std::uint8_t> bytes) {
-  probeLht(bytes);
+  readAndProbe([&] { return lht::parseLht(bytes, "fuzz.lht"); });
   if (bytes.size() < lht::kLhtHeaderBytes + 8) return;
   std::vector<std::uint8_t> fixed(bytes.begin(), bytes.end());
   const std::size_t end = fixed.size() - 8;
   std::uint64_t sum = lht::fnv1a64(std::span<const std::uint8_t>(fixed).first(end));
   for (std::size_t i = 0; i < 8; ++i, sum >>= 8) fixed[end + i] = static_cast<std::uint8_t>(sum);
-  probeLht(fixed);
+  readAndProbe([&] { return lht::parseLht(fixed, "fuzz.lht"); });
+  static const std::filesystem::path scratch =
+      std::filesystem::temp_directory_path() / ("lattice-fuzz-" + std::to_string(::getpid()) + ".lht");
+  {
+    std::ofstream out(scratch, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(fixed.data()), static_cast<std::streamsize>(fixed.size()));
+  }
+  readAndProbe([&] { return lht::readLhtFile(scratch); });
 }
 
 void tek4125Decoder(std::span<const std::uint8_t> bytes) {
-  Tek4125Profile profile;
+  tek4125::Tek4125Profile profile;
   profile.rrFromViewport = (bytes.size() / 8) % 2 == 1;
   profile.rhFromScreen = (bytes.size() / 16) % 2 == 1;
-  const auto decoder = makeTek4100Decoder(profile);
+  const auto decoder = tek4125::makeTek4125Decoder(profile);
   decode(*decoder, bytes);
 }
 
 void tek4027Decoder(std::span<const std::uint8_t> bytes) {
-  Tek4027Decoder decoder{Tek4027Profile{}};
+  tek4027::Tek4027Decoder decoder{tek4027::Tek4027Profile{}};
   decode(decoder, bytes);
 }
 
 void pngReader(std::span<const std::uint8_t> bytes) {
-  static const std::filesystem::path scratch =
-      std::filesystem::temp_directory_path() / ("lattice-fuzz-" + std::to_string(::getpid()) + ".png");
-  {
-    std::ofstream out(scratch, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-  }
   try {
-    (void)readPng(scratch);
+    (void)readPngBytes(bytes, "fuzz.png");
   } catch (const Error&) {
   }
 }

@@ -61,24 +61,4 @@ void writePng(const std::filesystem::path& path, const IndexedImage& img) {
   encodeAndWrite(path, image, pixels.data(), cmap.data());
 }
 
-RgbImage readPng(const std::filesystem::path& path) {
-  std::vector<std::uint8_t> data = readWholeFile(path);
-  png_image image;
-  std::memset(&image, 0, sizeof image);
-  image.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_memory(&image, data.data(), data.size()))
-    throw Error(ErrorKind::Input, fmt::format("{}: not a readable PNG: {}", path.string(), image.message));
-  image.format = PNG_FORMAT_RGB;
-  if (image.width == 0 || image.height == 0 || image.width > 65535 || image.height > 65535) {
-    png_image_free(&image);
-    throw Error(ErrorKind::Input, fmt::format("{}: unsupported PNG size {}x{}", path.string(), image.width, image.height));
-  }
-  RgbImage out(static_cast<int>(image.width), static_cast<int>(image.height));
-  // Composite any alpha onto black, so transparent pixels have a defined colour.
-  png_color black{0, 0, 0};
-  if (!png_image_finish_read(&image, &black, out.rgb.data(), 0, nullptr))
-    throw Error(ErrorKind::Input, fmt::format("{}: PNG decoding failed: {}", path.string(), image.message));
-  return out;
-}
-
 }  // namespace lattice

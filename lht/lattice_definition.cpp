@@ -2,18 +2,23 @@
 
 #include <fmt/format.h>
 
+#include "lht/canonical_toml.hpp"
 #include "lht/lattice_object.hpp"
 #include "lht/lht_file.hpp"
 
 namespace lattice::lht {
 
 std::uint64_t LatticeDefinition::hashFor(LhtPrecision form) const {
-  // The thesis's precision adds nothing, so caches written before the
-  // precision existed (all of them thesis) keep their hash.
+  // From our canonical form of the values (lht/canonical_toml.hpp), never a
+  // formatter's output (toml++ 3.3.0's formatter overflowed a float-to-int
+  // cast on small numbers in nested arrays: issue 15). "lattice2" marks the
+  // key's second form: caches keyed by the formatter's text are refused as
+  // rasterized from another definition (docs/lattices.md). The thesis's
+  // precision adds nothing to the key.
   const std::string formText =
       form == LhtPrecision::Thesis ? "" : fmt::format(" precision={}", lhtPrecisionName(form));
-  return fnv1a64(fmt::format("lattice spacing={:.17g} oversample={:.17g}{} object={}", lambda, oversample, formText,
-                             objectText));
+  return fnv1a64(fmt::format("lattice2 spacing={} oversample={}{} object={}", canonicalDouble(lambda),
+                             canonicalDouble(oversample), formText, objectText));
 }
 
 const Bounds<double>& LatticeDefinition::objectBounds() const {

@@ -42,7 +42,7 @@ class LatticeDefinition {
   double lambda = 1.0;
   double oversample = 1.0;
   NodeDesc object;
-  std::string objectText;  // canonical TOML of the object table
+  std::string objectText;  // canonical text of the object table (lht/canonical_toml.hpp)
   std::optional<std::filesystem::path> cache;
   bool shadows = true;  // false: this lattice casts no shadows (thesis plate 3)
   LhtPrecision precision = LhtPrecision::Thesis;  // the entry form the file asks for

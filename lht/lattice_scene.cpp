@@ -6,10 +6,10 @@
 #include <map>
 #include <numbers>
 #include <random>
-#include <sstream>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "lht/canonical_toml.hpp"
 #include "lht/lattice_leaf.hpp"
 #include "lht/lattice_object.hpp"
 #include "lht/lattice_tables.hpp"
@@ -95,9 +95,7 @@ void parseLatticeSection(const toml::node& section, ParseContext& context, Latti
     if (!object || !object->is_table())
       context.fail(*table, "a [[lattices]] entry needs `object = { type = ..., ... }`, the solid to rasterize");
     def->object = context.parseNode(*object);
-    std::ostringstream text;
-    text << toml::toml_formatter(*object->as_table());
-    def->objectText = text.str();
+    def->objectText = canonicalToml(*object);
     if (load.byName.count(def->name))
       context.fail(*table->get("name"), fmt::format("lattice '{}' is defined twice", def->name));
     load.byName[def->name] = def;
@@ -128,8 +126,10 @@ NodeDesc parseScatterNode(const toml::table& table, ParseContext& context, const
   context.checkKeys(table, {"lattice", "count", "radius", "seed"}, true);
   const LatticeDefinitionPtr def = findDefinition(table, context, load);
   const long long count = context.integer(table, "count").value_or(0);
-  if (count < 1 || count > 1000000)
-    context.fail(table, "`count` must be an integer between 1 and 1000000 (how many instances to scatter)");
+  if (count < 1 || count > kMaxScatterCount)
+    context.fail(table, fmt::format("`count` must be an integer between 1 and {} (how many instances to scatter; "
+                                    "the limit is kMaxScatterCount, docs/limits.md)",
+                                    kMaxScatterCount));
   const double radius = context.positiveNumber(table, "radius");
   const auto seed = static_cast<std::uint64_t>(context.integer(table, "seed").value_or(1));
   std::mt19937_64 random(seed);

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <bit>
+#include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <string>
 
 #include "foundation/atomic_file.hpp"
@@ -97,77 +99,110 @@ std::vector<std::uint8_t> serializeLht(const LhtFile& lht) {
   return std::move(w.out);
 }
 
-LhtFile parseLht(std::span<const std::uint8_t> bytes, const std::string& name,
-                 std::optional<std::uint64_t> expectedObjectHash, std::optional<LhtPrecision> expectedPrecision) {
-  if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
-    throw bad(name, "not a lattice hash table file (wrong magic number)");
-  if (bytes.size() < kLhtHeaderBytes + 8)
-    throw bad(name, fmt::format("truncated: {} bytes, shorter than the {}-byte header and checksum", bytes.size(),
-                                kLhtHeaderBytes + 8));
-  Reader r(bytes);
-  r.at = sizeof kMagic;
-  const auto version = static_cast<std::uint32_t>(r.uint(4));
-  if (version != 1 && version != kLhtVersion)
-    throw bad(name, fmt::format("format version {} but this program reads versions 1 to {}", version, kLhtVersion));
+namespace {
+
+// What the 108-byte header says, checked on its own: magic, version,
+// precision code. The counts are checked against the file size by the caller.
+struct LhtHeader {
+  std::uint32_t version = 0;
   std::array<int, 3> cells{};
-  for (int a = 0; a < 3; ++a) cells[a] = static_cast<int>(r.uint(2));
+  LhtPrecision precision = LhtPrecision::Thesis;
+  std::size_t stride = 0;
+  double lambda = 0, oversample = 0;
+  Vec3d origin{0.0};
+  std::uint64_t objectHash = 0, pairs = 0, hits = 0, entries = 0, buckets = 0, slots = 0;
+};
+
+// `prefix` holds the first bytes of the file (up to the header's 108), `size`
+// the file's whole size: enough to refuse junk before reading anything else.
+LhtHeader parseHeader(std::span<const std::uint8_t> prefix, std::uint64_t size, const std::string& name) {
+  if (prefix.size() < sizeof kMagic || std::memcmp(prefix.data(), kMagic, sizeof kMagic) != 0)
+    throw bad(name, "not a lattice hash table file (wrong magic number)");
+  if (size < kLhtHeaderBytes + 8 || prefix.size() < kLhtHeaderBytes)
+    throw bad(name, fmt::format("truncated: {} bytes, shorter than the {}-byte header and checksum", size,
+                                kLhtHeaderBytes + 8));
+  Reader r(prefix);
+  r.at = sizeof kMagic;
+  LhtHeader h;
+  h.version = static_cast<std::uint32_t>(r.uint(4));
+  if (h.version != 1 && h.version != kLhtVersion)
+    throw bad(name, fmt::format("format version {} but this program reads versions 1 to {}", h.version, kLhtVersion));
+  for (int a = 0; a < 3; ++a) h.cells[a] = static_cast<int>(r.uint(2));
   const auto precisionCode = static_cast<std::uint16_t>(r.uint(2));
   // Version 1 had only the thesis's entry (and 0 in this field).
   const std::optional<LhtPrecision> precision =
-      version == 1 ? std::optional(LhtPrecision::Thesis) : lhtPrecisionFromCode(precisionCode);
+      h.version == 1 ? std::optional(LhtPrecision::Thesis) : lhtPrecisionFromCode(precisionCode);
   if (!precision)
     throw bad(name, fmt::format("unknown entry precision code {} at byte 18 (this program knows {})", precisionCode,
                                 precisionCodes()));
-  const std::size_t stride = entryBytes(*precision);
-  const double lambda = r.f64();
-  const double oversample = r.f64();
-  Vec3d origin;
-  for (int a = 0; a < 3; ++a) origin[a] = r.f64();
-  const std::uint64_t objectHash = r.uint(8);
-  const std::uint64_t pairs = r.uint(8);
-  const std::uint64_t hits = r.uint(8);
-  const std::uint64_t entries = r.uint(8);
-  const std::uint64_t buckets = r.uint(8);
-  const std::uint64_t slots = r.uint(8);
-  // Size first (it catches truncation with a clearer message than the
-  // checksum would), guarding the multiplication against absurd counts.
-  const std::uint64_t maxSlots = (bytes.size() - kLhtHeaderBytes - 8) / stride;
-  if (slots > maxSlots || kLhtHeaderBytes + slots * stride + 8 != bytes.size()) {
+  h.precision = *precision;
+  h.stride = entryBytes(h.precision);
+  h.lambda = r.f64();
+  h.oversample = r.f64();
+  for (int a = 0; a < 3; ++a) h.origin[a] = r.f64();
+  h.objectHash = r.uint(8);
+  h.pairs = r.uint(8);
+  h.hits = r.uint(8);
+  h.entries = r.uint(8);
+  h.buckets = r.uint(8);
+  h.slots = r.uint(8);
+  // Size before anything else is read (it catches truncation with a clearer
+  // message than the checksum would), guarding the multiplication against
+  // absurd counts.
+  const std::uint64_t maxSlots = (size - kLhtHeaderBytes - 8) / h.stride;
+  if (h.slots > maxSlots || kLhtHeaderBytes + h.slots * h.stride + 8 != size) {
     // slots comes from the file: keep the arithmetic for the message from overflowing.
-    const std::string expected = slots < (std::uint64_t(1) << 58)
-                                     ? fmt::format("{} bytes", kLhtHeaderBytes + slots * stride + 8)
+    const std::string expected = h.slots < (std::uint64_t(1) << 58)
+                                     ? fmt::format("{} bytes", kLhtHeaderBytes + h.slots * h.stride + 8)
                                      : std::string("an impossible size");
     throw bad(name, fmt::format("truncated or padded: {} bytes, but its header describes {} table slots of {} "
                                 "bytes ({})",
-                                bytes.size(), slots, stride, expected));
+                                size, h.slots, h.stride, expected));
   }
-  const std::size_t payloadEnd = bytes.size() - 8;
-  Reader tail(bytes);
-  tail.at = payloadEnd;
-  if (tail.uint(8) != fnv1a64(bytes.first(payloadEnd)))
-    throw bad(name, "checksum mismatch: the file is corrupted");
-  if (expectedPrecision && *expectedPrecision != *precision)
+  return h;
+}
+
+// The header and the table, once the checksum has matched.
+LhtFile assemble(const LhtHeader& h, std::vector<std::uint8_t> table, const std::string& name,
+                 std::optional<std::uint64_t> expectedObjectHash, std::optional<LhtPrecision> expectedPrecision) {
+  if (expectedPrecision && *expectedPrecision != h.precision)
     throw bad(name, fmt::format("holds '{}' entries ({} bytes each) but '{}' entries were asked for (the scene's "
                                 "`precision` or --lht-precision)",
-                                lhtPrecisionName(*precision), stride, lhtPrecisionName(*expectedPrecision)));
-  if (expectedObjectHash && *expectedObjectHash != objectHash)
+                                lhtPrecisionName(h.precision), h.stride, lhtPrecisionName(*expectedPrecision)));
+  if (expectedObjectHash && *expectedObjectHash != h.objectHash)
     throw bad(name, fmt::format("rasterized from a different object definition (object hash {:016x}, the scene's "
                                 "object has {:016x})",
-                                objectHash, *expectedObjectHash));
+                                h.objectHash, *expectedObjectHash));
   try {
     LhtFile lht;
-    lht.version = version;
-    lht.box = LatticeBox(cells, lambda, oversample, origin);
-    lht.objectHash = objectHash;
-    lht.pairs = pairs;
-    lht.hits = hits;
-    const auto* first = bytes.data() + kLhtHeaderBytes;
-    std::vector<std::uint8_t> table(first, first + slots * stride);
-    lht.table = LatticeHashTable(*precision, std::move(table), buckets, entries);
+    lht.version = h.version;
+    lht.box = LatticeBox(h.cells, h.lambda, h.oversample, h.origin);
+    lht.objectHash = h.objectHash;
+    lht.pairs = h.pairs;
+    lht.hits = h.hits;
+    lht.table = LatticeHashTable(h.precision, std::move(table), h.buckets, h.entries);
     return lht;
   } catch (const Error& e) {
     throw bad(name, fmt::format("inconsistent contents ({})", e.what()));
   }
+}
+
+std::uint64_t readChecksum(std::span<const std::uint8_t> eight) {
+  Reader r(eight);
+  return r.uint(8);
+}
+
+}  // namespace
+
+LhtFile parseLht(std::span<const std::uint8_t> bytes, const std::string& name,
+                 std::optional<std::uint64_t> expectedObjectHash, std::optional<LhtPrecision> expectedPrecision) {
+  const LhtHeader h = parseHeader(bytes.first(std::min(bytes.size(), kLhtHeaderBytes)), bytes.size(), name);
+  const std::size_t payloadEnd = bytes.size() - 8;
+  if (readChecksum(bytes.subspan(payloadEnd)) != fnv1a64(bytes.first(payloadEnd)))
+    throw bad(name, "checksum mismatch: the file is corrupted");
+  const auto* first = bytes.data() + kLhtHeaderBytes;
+  return assemble(h, std::vector<std::uint8_t>(first, first + h.slots * h.stride), name, expectedObjectHash,
+                  expectedPrecision);
 }
 
 void writeLhtFile(const std::filesystem::path& path, const LhtFile& lht) {
@@ -177,8 +212,29 @@ void writeLhtFile(const std::filesystem::path& path, const LhtFile& lht) {
 
 LhtFile readLhtFile(const std::filesystem::path& path, std::optional<std::uint64_t> expectedObjectHash,
                     std::optional<LhtPrecision> expectedPrecision) {
-  const std::vector<std::uint8_t> bytes = readWholeFile(path);
-  return parseLht(bytes, path.string(), expectedObjectHash, expectedPrecision);
+  // Streamed: the header is checked against the file's size before the
+  // table is allocated or read, so junk costs a few bytes of reading.
+  const std::string name = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(ErrorKind::Input, fmt::format("{}: cannot open: {}", name, std::strerror(errno)));
+  std::error_code ec;
+  const std::uint64_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw Error(ErrorKind::Input, fmt::format("{}: not a regular file: {}", name, ec.message()));
+  auto readInto = [&](std::uint8_t* to, std::size_t n) {
+    in.read(reinterpret_cast<char*>(to), static_cast<std::streamsize>(n));
+    if (static_cast<std::size_t>(in.gcount()) != n) throw bad(name, "truncated while reading (the file shrank?)");
+  };
+  std::uint8_t header[kLhtHeaderBytes];
+  in.read(reinterpret_cast<char*>(header), sizeof header);
+  const auto got = static_cast<std::size_t>(in.gcount());
+  const LhtHeader h = parseHeader(std::span<const std::uint8_t>(header, got), size, name);
+  std::vector<std::uint8_t> table(h.slots * h.stride);
+  readInto(table.data(), table.size());
+  std::uint8_t tail[8];
+  readInto(tail, sizeof tail);
+  if (readChecksum(tail) != fnv1a64(table, fnv1a64(std::span<const std::uint8_t>(header, sizeof header))))
+    throw bad(name, "checksum mismatch: the file is corrupted");
+  return assemble(h, std::move(table), name, expectedObjectHash, expectedPrecision);
 }
 
 }  // namespace lattice::lht

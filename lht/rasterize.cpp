@@ -4,6 +4,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <mutex>
 #include <thread>
 
 #include "foundation/progress.hpp"
@@ -64,9 +66,23 @@ class Rasterizer {
     if (threads == 1) {
       work(0);
     } else {
+      // An exception (std::bad_alloc) leaving a thread would end the process
+      // without a message: the first is carried to the caller instead.
+      std::exception_ptr failure;
+      std::mutex failureMutex;
+      const auto guarded = [&](unsigned w) {
+        try {
+          work(w);
+        } catch (...) {
+          std::lock_guard lock(failureMutex);
+          if (!failure) failure = std::current_exception();
+          next_.store(points_.size());
+        }
+      };
       std::vector<std::thread> workers;
-      for (unsigned w = 0; w < threads; ++w) workers.emplace_back(work, w);
+      for (unsigned w = 0; w < threads; ++w) workers.emplace_back(guarded, w);
       for (std::thread& t : workers) t.join();
+      if (failure) std::rethrow_exception(failure);
     }
     progress.finish();
 

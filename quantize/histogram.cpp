@@ -7,7 +7,7 @@
 
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::quantize {
 
 Histogram::Histogram() : counts_(kCells, 0) {}
 
@@ -39,4 +39,4 @@ std::vector<std::uint32_t> Histogram::releaseStorage() {
   return std::move(counts_);
 }
 
-}  // namespace lattice
+}  // namespace lattice::quantize

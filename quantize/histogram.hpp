@@ -15,7 +15,7 @@
 
 #include "foundation/scanline.hpp"
 
-namespace lattice {
+namespace lattice::quantize {
 
 class Histogram {
  public:
@@ -45,4 +45,4 @@ class Histogram {
   std::uint64_t total_ = 0;
 };
 
-}  // namespace lattice
+}  // namespace lattice::quantize

@@ -9,7 +9,7 @@
 #include "quantize/median_cut.hpp"
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::quantize {
 
 InverseColorMap::InverseColorMap(Palette palette, std::vector<std::uint32_t> storage)
     : palette_(std::move(palette)), cache_(std::move(storage)), resolved_(kCoarseCells, false) {
@@ -79,4 +79,4 @@ void InverseColorMap::resolveCoarseCell(unsigned coarse) {
   resolved_[coarse] = true;
 }
 
-}  // namespace lattice
+}  // namespace lattice::quantize

@@ -19,7 +19,7 @@
 
 #include "foundation/scanline.hpp"
 
-namespace lattice {
+namespace lattice::quantize {
 
 class InverseColorMap {
  public:
@@ -55,4 +55,4 @@ class InverseColorMap {
   std::vector<std::pair<int, int>> candidates_;
 };
 
-}  // namespace lattice
+}  // namespace lattice::quantize

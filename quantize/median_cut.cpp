@@ -8,7 +8,7 @@
 
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::quantize {
 namespace {
 
 // Channel order used for axes: 0 = red, 1 = green, 2 = blue (6-bit values).
@@ -220,4 +220,4 @@ void refinePalette(const Histogram& histogram, Palette& palette, int iterations)
   }
 }
 
-}  // namespace lattice
+}  // namespace lattice::quantize

@@ -15,7 +15,7 @@
 #include "quantize/histogram.hpp"
 #include "quantize/quantize_options.hpp"
 
-namespace lattice {
+namespace lattice::quantize {
 
 // At most maxColors entries (fewer when the histogram has fewer distinct
 // colours); an empty histogram gives an empty palette. maxColors must be
@@ -33,4 +33,4 @@ constexpr int distanceSquared(int r, int g, int b, Rgb8 c) {
 // nearest entry it is, `iterations` times (or until nothing moves).
 void refinePalette(const Histogram& histogram, Palette& palette, int iterations);
 
-}  // namespace lattice
+}  // namespace lattice::quantize

@@ -2,7 +2,7 @@
 // What a caller can choose about quantization. The defaults are Heckbert's
 // 1982 median cut with no dithering; everything else is a measured extension
 // (docs/quantize.md has the figures).
-namespace lattice {
+namespace lattice::quantize {
 
 // Where a box is cut along its longest dimension.
 enum class SplitRule {
@@ -22,4 +22,4 @@ struct QuantizeOptions {
   Dither dither = Dither::None;
 };
 
-}  // namespace lattice
+}  // namespace lattice::quantize

@@ -9,7 +9,7 @@
 #include "quantize/median_cut.hpp"
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::quantize {
 namespace {
 
 // Division by 16 rounding half away from zero, so positive and negative error
@@ -130,4 +130,4 @@ void RowMapper::mapFloydSteinberg(int y, std::span<const Color18> in, std::span<
   for (int ch = 0; ch < 3; ++ch) errors_[slot(last) + ch] = behind[ch];
 }
 
-}  // namespace lattice
+}  // namespace lattice::quantize

@@ -12,7 +12,7 @@
 #include "quantize/inverse_colormap.hpp"
 #include "quantize/quantize_options.hpp"
 
-namespace lattice {
+namespace lattice::quantize {
 
 class RowMapper {
  public:
@@ -36,4 +36,4 @@ class RowMapper {
   int bayerSpread_ = 0;      // Bayer only: half the palette spacing, 8-bit levels
 };
 
-}  // namespace lattice
+}  // namespace lattice::quantize

@@ -12,7 +12,7 @@
 #include "foundation/error.hpp"
 #include "foundation/progress.hpp"
 
-namespace lattice {
+namespace lattice::quantize {
 namespace {
 
 void checkOptions(const RowSource18& source, const IndexedSink& sink, const PipelineOptions& options) {
@@ -118,4 +118,4 @@ PipelineReport runPipeline(RowSource18& source, IndexedSink& sink, const Pipelin
   return report;
 }
 
-}  // namespace lattice
+}  // namespace lattice::quantize

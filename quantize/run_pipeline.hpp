@@ -20,7 +20,7 @@
 #include "foundation/scanline.hpp"
 #include "quantize/quantize_options.hpp"
 
-namespace lattice {
+namespace lattice::quantize {
 
 enum class PipelineMode { TwoPass, Frame, Sample };
 
@@ -55,4 +55,4 @@ PipelineReport pipelineBuffers(int width, int height, const PipelineOptions& opt
 
 const char* pipelineModeName(PipelineMode mode);
 
-}  // namespace lattice
+}  // namespace lattice::quantize

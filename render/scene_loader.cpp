@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/node_types.hpp"
+#include "render/scene_text.hpp"
 #include "foundation/transform_condition.hpp"
 #include "foundation/error.hpp"
 
@@ -460,6 +461,7 @@ SceneDesc parseTable(const toml::table& root, const std::filesystem::path& file,
 }  // namespace
 
 SceneDesc parseScene(std::string_view text, const std::filesystem::path& fileName, const SceneFormat& format) {
+  checkSceneText(text, fileName.string());  // before toml++ sees it: render/scene_text.hpp
   toml::table root;
   try {
     root = toml::parse(text, fileName.string());
@@ -472,19 +474,8 @@ SceneDesc parseScene(std::string_view text, const std::filesystem::path& fileNam
 }
 
 SceneDesc loadScene(const std::filesystem::path& file, const SceneFormat& format) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec))
-    throw Error(ErrorKind::Input, fmt::format("{}: cannot read the scene file (no such file, or not a regular file)",
-                                              file.string()));
-  toml::table root;
-  try {
-    root = toml::parse_file(file.string());
-  } catch (const toml::parse_error& e) {
-    throw Error(ErrorKind::Input, locate(file.string(), static_cast<long>(e.source().begin.line),
-                                         static_cast<long>(e.source().begin.column),
-                                         fmt::format("not valid TOML: {}", e.description())));
-  }
-  return parseTable(root, file, format);
+  // Read whole (at most kMaxSceneBytes), so the text can be checked first.
+  return parseScene(readSceneText(file.string()), file, format);
 }
 
 }  // namespace lattice

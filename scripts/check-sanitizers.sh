@@ -3,7 +3,9 @@
 # (-fno-sanitize-recover=all: the first report fails the test), in
 # build-asan/, every CTest test run. Tests whose figure the sanitizers make
 # meaningless (measured resident memory) are compiled with LATTICE_SANITIZED
-# and say so as they skip (docs/testing.md lists them).
+# and say so as they skip (docs/testing.md lists them). Warnings are not
+# errors here: clang warns where g++ does not, and the g++ build
+# (scripts/build.sh) is the one that keeps -Werror.
 #   scripts/check-sanitizers.sh        (scripts/setup.sh --fuzz installs clang)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -12,7 +14,7 @@ command -v clang++-14 >/dev/null ||
 launcher=()
 if [[ -n ${CCACHE_DIR:-} ]] && command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++-14 -DLATTICE_SANITIZE=ON \
-  -DLATTICE_WERROR=ON -DLATTICE_BUILD_BENCH=OFF "${launcher[@]}" >/dev/null
+  -DLATTICE_WERROR=OFF -DLATTICE_BUILD_BENCH=OFF "${launcher[@]}" >/dev/null
 cmake --build build-asan -j "$(nproc)"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:strict_string_checks=1:check_initialization_order=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}

@@ -5,12 +5,12 @@
 
 namespace lattice::apollo {
 
-ApolloScreen renderToApollo(RowSource18& source, const ApolloProfile& profile, const PipelineOptions& options) {
+ApolloScreen renderToApollo(RowSource18& source, const ApolloProfile& profile, const quantize::PipelineOptions& options) {
   GprDisplay display;
   display.init(GprDisplayMode::Borrow, profile);
   ApolloDriver sink(display);
   ApolloScreen result;
-  result.report = runPipeline(source, sink, options);
+  result.report = quantize::runPipeline(source, sink, options);
   result.screen = display.snapshot();
   display.terminate();
   return result;

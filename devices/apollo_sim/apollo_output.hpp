@@ -10,10 +10,10 @@ namespace lattice::apollo {
 
 struct ApolloScreen {
   IndexedImage screen;  // the whole screen, colour map included
-  PipelineReport report;
+  quantize::PipelineReport report;
 };
 
 // Draws the source on a simulated display of the given profile.
-ApolloScreen renderToApollo(RowSource18& source, const ApolloProfile& profile, const PipelineOptions& options);
+ApolloScreen renderToApollo(RowSource18& source, const ApolloProfile& profile, const quantize::PipelineOptions& options);
 
 }  // namespace lattice::apollo

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "devices/work_budget.hpp"
 #include "foundation/error.hpp"
 
 namespace lattice::apollo {
@@ -135,9 +136,10 @@ void GprJournalDecoder::replay(std::span<const std::uint8_t> r) {
       if (!display_.acquired()) return void(++report_.malformed);
       display_.releaseDisplay();
       break;
-    case 'K':
+    case 'K':  // two bytes that clear the whole screen: charged like a Tek page clear
       if (!drawable) return void(++report_.malformed);
-      display_.clear(r[1]);
+      if (chargePixelWork(report_, std::uint64_t(profile_.width) * std::uint64_t(profile_.height)))
+        display_.clear(r[1]);
       break;
     case 'M': {
       const std::size_t start = u16At(r, 1), n = u16At(r, 3);

@@ -1,6 +1,7 @@
 #include "devices/tek4027/tek4027_decoder.hpp"
 
 #include "devices/canvas.hpp"
+#include "devices/work_budget.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -8,7 +9,7 @@
 #include <iterator>
 #include <string_view>
 
-namespace lattice {
+namespace lattice::tek4027 {
 
 namespace {
 
@@ -318,7 +319,8 @@ bool Tek4027Decoder::erase() {
   if (args_.empty()) return true;  // the workspace text: nothing graphic
   const std::string& what = args_[0];
   if (what == "G" || what == "g") {
-    std::fill(image_.pixels.begin(), image_.pixels.end(), static_cast<PaletteIndex>(profile_.backgroundPot));
+    if (chargePixelWork(report_, image_.pixels.size()))
+      std::fill(image_.pixels.begin(), image_.pixels.end(), static_cast<PaletteIndex>(profile_.backgroundPot));
     return true;
   }
   return what == "W" || what == "w" || what == "M" || what == "m";
@@ -347,7 +349,8 @@ void Tek4027Decoder::plot(long x, long y) {
 }
 
 void Tek4027Decoder::line(long x0, long y0, long x1, long y1) {
+  if (!chargePixelWork(report_, devices::lineWork(image_, x0, y0, x1, y1))) return;
   devices::drawLine(image_, x0, y0, x1, y1, static_cast<PaletteIndex>(pot_));
 }
 
-}  // namespace lattice
+}  // namespace lattice::tek4027

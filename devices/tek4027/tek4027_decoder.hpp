@@ -20,7 +20,7 @@
 #include "devices/tek4027/tek4027_hls.hpp"
 #include "devices/tek4027/tek4027_profile.hpp"
 
-namespace lattice {
+namespace lattice::tek4027 {
 
 class Tek4027Decoder final : public StreamDecoder {
  public:
@@ -92,4 +92,4 @@ class Tek4027Decoder final : public StreamDecoder {
   int lineStyle_ = 1;
 };
 
-}  // namespace lattice
+}  // namespace lattice::tek4027

@@ -6,7 +6,7 @@
 
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::tek4027 {
 
 Tek4027Driver::Tek4027Driver(ByteSink& sink, Tek4027Profile profile, Tek4027Strategy strategy,
                              Tek4027Orientation orientation)
@@ -103,4 +103,4 @@ void Tek4027Driver::end() {
   nextRow_ = -1;
 }
 
-}  // namespace lattice
+}  // namespace lattice::tek4027

@@ -17,7 +17,7 @@
 #include "foundation/byte_sink.hpp"
 #include "foundation/scanline.hpp"
 
-namespace lattice {
+namespace lattice::tek4027 {
 
 class Tek4027Driver final : public IndexedSink {
  public:
@@ -57,4 +57,4 @@ class Tek4027Driver final : public IndexedSink {
   Tek4027Replies* replies_ = nullptr;
 };
 
-}  // namespace lattice
+}  // namespace lattice::tek4027

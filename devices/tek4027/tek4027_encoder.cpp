@@ -6,7 +6,7 @@
 
 #include "devices/tek4027/tek4027_pacing.hpp"
 
-namespace lattice {
+namespace lattice::tek4027 {
 
 const char* strategyName(Tek4027Strategy strategy) {
   switch (strategy) {
@@ -362,4 +362,4 @@ const char* orientationName(Tek4027Orientation orientation) {
   return "?";
 }
 
-}  // namespace lattice
+}  // namespace lattice::tek4027

@@ -11,7 +11,7 @@
 #include "devices/tek4027/tek4027_profile.hpp"
 #include "devices/tek4027/tek4027_runs.hpp"
 
-namespace lattice {
+namespace lattice::tek4027 {
 
 enum class Tek4027Strategy {
   RowOrder,         // rows top to bottom, !COL whenever the pot changes, one !VEC per run
@@ -69,4 +69,4 @@ std::string encodeTek4027(const Tek4027Picture& picture, const Tek4027Profile& p
                           Tek4027StreamStats* stats = nullptr,
                           Tek4027Orientation orientation = Tek4027Orientation::Rows);
 
-}  // namespace lattice
+}  // namespace lattice::tek4027

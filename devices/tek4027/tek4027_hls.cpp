@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace lattice {
+namespace lattice::tek4027 {
 
 namespace {
 
@@ -60,4 +60,4 @@ Rgb8 tekHlsToRgb(Hls hls) {
   return {gun(hlsGun(m1, m2, hue + 120.0)), gun(hlsGun(m1, m2, hue)), gun(hlsGun(m1, m2, hue - 120.0))};
 }
 
-}  // namespace lattice
+}  // namespace lattice::tek4027

@@ -12,7 +12,7 @@
 // is measured in tests/devices/tek4027/hls_test.cpp and given in docs/tek4027.md.
 #include "foundation/scanline.hpp"
 
-namespace lattice {
+namespace lattice::tek4027 {
 
 struct Hls {
   int hue = 0;         // 0..359, blue = 0
@@ -30,4 +30,4 @@ Rgb8 tekHlsToRgb(Hls hls);
 // tests guarantee over the whole 8-bit cube.
 constexpr int kHlsRoundTripMaxDelta = 5;
 
-}  // namespace lattice
+}  // namespace lattice::tek4027

@@ -9,7 +9,7 @@
 
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::tek4027 {
 
 void Tek4027FdReplies::awaitReply() {
   using Clock = std::chrono::steady_clock;
@@ -109,4 +109,4 @@ std::string paceWithReports(std::string text, const Tek4027Profile& profile) {
   return out;
 }
 
-}  // namespace lattice
+}  // namespace lattice::tek4027

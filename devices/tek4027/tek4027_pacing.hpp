@@ -19,7 +19,7 @@
 
 #include "devices/tek4027/tek4027_profile.hpp"
 
-namespace lattice {
+namespace lattice::tek4027 {
 
 // Something that can wait for the terminal's answer to one report request
 // (the serial line's input). Throws lattice::Error when none comes in time.
@@ -60,4 +60,4 @@ std::vector<std::size_t> reportRecordEnds(const std::string& paced, const Tek402
 // Returns it unchanged when the profile does not pace it.
 std::string paceWithReports(std::string text, const Tek4027Profile& profile);
 
-}  // namespace lattice
+}  // namespace lattice::tek4027

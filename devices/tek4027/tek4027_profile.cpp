@@ -7,7 +7,7 @@
 #include "foundation/error.hpp"
 #include "foundation/key_value.hpp"
 
-namespace lattice {
+namespace lattice::tek4027 {
 
 namespace {
 
@@ -156,4 +156,4 @@ std::string describe(const Tek4027Profile& p) {
       p.terminator == ';' ? "semicolon" : "cr", p.backgroundPot, p.maxPointsPerCommand);
 }
 
-}  // namespace lattice
+}  // namespace lattice::tek4027

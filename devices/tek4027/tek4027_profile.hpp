@@ -12,7 +12,7 @@
 
 #include "foundation/line_timing.hpp"
 
-namespace lattice {
+namespace lattice::tek4027 {
 
 // How a paint pot's colour is defined. Mix: `!MIX Cn r,g,b`, RGB percent
 // (sourced). Map: `!MAP Cn h l s`, Tektronix HLS (no source found).
@@ -88,4 +88,4 @@ void applyOverride(Tek4027Profile& profile, std::string_view keyValue);
 void applyOverrides(Tek4027Profile& profile, const std::vector<std::string>& keyValues);
 std::string describe(const Tek4027Profile& profile);
 
-}  // namespace lattice
+}  // namespace lattice::tek4027

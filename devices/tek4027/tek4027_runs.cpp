@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace lattice {
+namespace lattice::tek4027 {
 
 std::vector<PotRun> rowRuns(const PotFrame& frame, int y) {
   std::vector<PotRun> runs;
@@ -176,4 +176,4 @@ std::vector<std::vector<FramePoint>> chainRuns(const std::vector<std::vector<Pot
   return chains;
 }
 
-}  // namespace lattice
+}  // namespace lattice::tek4027

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace lattice {
+namespace lattice::tek4027 {
 
 // A frame whose pixels are pot numbers (0..7). Row 0 is the top.
 struct PotFrame {
@@ -68,4 +68,4 @@ struct ChainOptions {
 std::vector<std::vector<FramePoint>> chainRuns(const std::vector<std::vector<PotRun>>& runsByRow,
                                                const ChainOptions& options);
 
-}  // namespace lattice
+}  // namespace lattice::tek4027

@@ -9,7 +9,7 @@
 
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::tek4125 {
 
 // "a, b, c" from each entry's `name`.
 template <class T>
@@ -29,4 +29,4 @@ const T& findNamed(const std::vector<T>& table, std::string_view name, std::stri
                           namesOf(table)));
 }
 
-}  // namespace lattice
+}  // namespace lattice::tek4125

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "devices/tek4125/tek4100_decoder.hpp"
+#include "devices/tek4125/tek4125_decoder.hpp"
 #include "devices/tek4125/tek4125_driver.hpp"
 
 namespace lattice::tek4125 {
@@ -37,7 +37,7 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   d.width = profile.width;
   d.height = profile.height;
   d.makeDriver = [profile](ByteSink& out) { return std::make_unique<StreamDriver>(out, profile); };
-  d.makeEmulator = [profile] { return std::unique_ptr<StreamDecoder>(makeTek4100Decoder(profile)); };
+  d.makeEmulator = [profile] { return std::unique_ptr<StreamDecoder>(makeTek4125Decoder(profile)); };
   // The driver keeps the frame (a byte a pixel) and encodes up to three
   // candidate streams, holding the shortest beside the one being written
   // (growing by doubling, then copied once to escape DEL): 8 B a pixel

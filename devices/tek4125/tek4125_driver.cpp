@@ -8,7 +8,7 @@
 #include "devices/tek4125/tek4125_writer.hpp"
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::tek4125 {
 
 namespace {
 
@@ -74,7 +74,7 @@ int Tek4125Driver::mostFrequentIndex() const {
   return static_cast<int>(std::max_element(count.begin(), count.end()) - count.begin());
 }
 
-tek::Bytes Tek4125Driver::encode(const Tek4125DriverOptions& options, Tek4125StreamStats& stats) const {
+tek4125::Bytes Tek4125Driver::encode(const Tek4125DriverOptions& options, Tek4125StreamStats& stats) const {
   const Tek4125Forms& forms = profile_.formSet();
   const int reserved = profile_.reserved;
   const int paletteSize = static_cast<int>(frame_.palette.size());
@@ -102,7 +102,7 @@ tek::Bytes Tek4125Driver::encode(const Tek4125DriverOptions& options, Tek4125Str
   const int right = place.left + width - 1, top = place.bottom + height - 1;
 
   Tek4125Writer out(forms);
-  out.bytes({tek::kEsc, '%', '!', '0'});  // enter Tek mode
+  out.bytes({tek4125::kEsc, '%', '!', '0'});  // enter Tek mode
   out.command("LV");                      // dialog area invisible, so text cannot cover the picture
   out.integer(0);
   if (forms.escapeDel) {  // raw DEL is ignored from here; ESC ? stands for it
@@ -135,7 +135,7 @@ tek::Bytes Tek4125Driver::encode(const Tek4125DriverOptions& options, Tek4125Str
       for (int g : colour(i)) out.integer(g);
     }
   }
-  out.bytes({tek::kEsc, 0x0C});  // clear the page (to entry 0)
+  out.bytes({tek4125::kEsc, 0x0C});  // clear the page (to entry 0)
   out.command("RU");
   out.integer(kSurface);
   out.integer(kAluOverwrite);
@@ -176,7 +176,7 @@ tek::Bytes Tek4125Driver::encode(const Tek4125DriverOptions& options, Tek4125Str
   stats.rasterBits = layout.bits;
   stats.candidate = describeOptions(Tek4125DriverOptions{options.skipBackground, options.rectangles,
                                                          options.mergeRows, layout.runLength, false});
-  tek::Bytes bytes = out.take();
+  tek4125::Bytes bytes = out.take();
   stats.bytes = bytes.size();
   stats.seconds = transmitSeconds(stats.bytes, profile_.line());
   return bytes;
@@ -196,10 +196,10 @@ void Tek4125Driver::end() {
     candidates.push_back(noRuns);
     candidates.push_back(unmerged);
   }
-  tek::Bytes best;
+  tek4125::Bytes best;
   for (const Tek4125DriverOptions& c : candidates) {
     Tek4125StreamStats s;
-    tek::Bytes bytes = encode(c, s);
+    tek4125::Bytes bytes = encode(c, s);
     if (best.empty() || bytes.size() < best.size()) {
       best.swap(bytes);
       stats_ = s;
@@ -213,4 +213,4 @@ std::unique_ptr<Tek4125Driver> makeTek4125Driver(ByteSink& sink, const Tek4125Pr
   return std::make_unique<Tek4125Driver>(sink, profile);
 }
 
-}  // namespace lattice
+}  // namespace lattice::tek4125

@@ -29,11 +29,11 @@
 
 #include "devices/tek4125/tek4125_profile.hpp"
 #include "devices/tek4125/tek4125_strategy.hpp"
-#include "devices/tek4125/tek_encoding.hpp"
+#include "devices/tek4125/tek4125_encoding.hpp"
 #include "foundation/byte_sink.hpp"
 #include "foundation/scanline.hpp"
 
-namespace lattice {
+namespace lattice::tek4125 {
 
 // What a finished stream cost.
 struct Tek4125StreamStats {
@@ -74,7 +74,7 @@ class Tek4125Driver final : public IndexedSink {
   const Tek4125StreamStats& stats() const { return stats_; }
 
  private:
-  tek::Bytes encode(const Tek4125DriverOptions& options, Tek4125StreamStats& stats) const;
+  tek4125::Bytes encode(const Tek4125DriverOptions& options, Tek4125StreamStats& stats) const;
   int mostFrequentIndex() const;
 
   ByteSink& sink_;
@@ -89,4 +89,4 @@ class Tek4125Driver final : public IndexedSink {
 
 std::unique_ptr<Tek4125Driver> makeTek4125Driver(ByteSink& sink, const Tek4125Profile& profile);
 
-}  // namespace lattice
+}  // namespace lattice::tek4125

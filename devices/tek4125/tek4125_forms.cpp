@@ -2,7 +2,7 @@
 
 #include "devices/tek4125/named_table.hpp"
 
-namespace lattice {
+namespace lattice::tek4125 {
 
 const std::vector<Tek4125Forms>& tek4125FormSets() {
   static const std::vector<Tek4125Forms> sets = {
@@ -21,4 +21,4 @@ std::string tek4125FormSetNames() { return namesOf(tek4125FormSets()); }
 
 const Tek4125Forms& tek4125Forms(std::string_view name) { return findNamed(tek4125FormSets(), name, "profile"); }
 
-}  // namespace lattice
+}  // namespace lattice::tek4125

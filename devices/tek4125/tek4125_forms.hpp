@@ -23,7 +23,7 @@
 #include <string_view>
 #include <vector>
 
-namespace lattice {
+namespace lattice::tek4125 {
 
 struct Tek4125Forms {
   std::string name;
@@ -47,4 +47,4 @@ const Tek4125Forms& tek4125Forms(std::string_view name);
 // "strict, compact", for help texts and errors.
 std::string tek4125FormSetNames();
 
-}  // namespace lattice
+}  // namespace lattice::tek4125

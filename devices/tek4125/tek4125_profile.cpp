@@ -5,7 +5,7 @@
 #include "foundation/error.hpp"
 #include "foundation/key_value.hpp"
 
-namespace lattice {
+namespace lattice::tek4125 {
 
 namespace {
 
@@ -92,4 +92,4 @@ std::string describe(const Tek4125Profile& p) {
       p.strategy, p.rrFromViewport ? "viewport" : "screen", p.rhFromScreen ? "screen" : "viewport", p.surfacePlanes);
 }
 
-}  // namespace lattice
+}  // namespace lattice::tek4125

@@ -11,7 +11,7 @@
 #include "devices/tek4125/tek4125_strategy.hpp"
 #include "foundation/line_timing.hpp"
 
-namespace lattice {
+namespace lattice::tek4125 {
 
 // The colour map a terminal shows before any TG: two public tables disagree
 // on entries 5..7 (PGPLOT drivers/tkdriv.f: 5 cyan, 6 magenta, 7 yellow;
@@ -58,4 +58,4 @@ void applyOverrides(Tek4125Profile& profile, const std::vector<std::string>& key
 // One line per field, for `--help`-style listings and reports.
 std::string describe(const Tek4125Profile& profile);
 
-}  // namespace lattice
+}  // namespace lattice::tek4125

@@ -4,7 +4,7 @@
 #include <array>
 #include <limits>
 
-namespace lattice {
+namespace lattice::tek4125 {
 
 namespace {
 
@@ -45,7 +45,7 @@ double Tek4125RowPlanner::runCodeBytes(const Run& r) const {
   double bytes = 0;
   for (int left = r.length; left > 0;) {
     const int piece = std::min(left, maxRunLength_);
-    bytes += tek::intLength(piece << layout_.bits | r.index);
+    bytes += tek4125::intLength(piece << layout_.bits | r.index);
     left -= piece;
   }
   const int cap = out_.forms().runCodeBytesPerRl;
@@ -72,7 +72,7 @@ std::vector<Tek4125RowPlanner::Way> Tek4125RowPlanner::chooseWays(const std::vec
     const auto& c = cost[k];
     double leave = kInf;
     if (options_.skipBackground && r.index == layout_.background) leave = 0;
-    else if (options_.rectangles) leave = continuing[k] >= 0 ? 0 : h.rectangle + tek::intLength(r.index);
+    else if (options_.rectangles) leave = continuing[k] >= 0 ? 0 : h.rectangle + tek4125::intLength(r.index);
     for (int s = 0; s < 3; ++s) relax(k, Out, s, c[static_cast<std::size_t>(s)] + leave);
     if (layout_.raster) {
       const double raw = r.length * bitsCost;
@@ -196,8 +196,8 @@ void Tek4125RowPlanner::emitRuns(std::span<const Run> runs, int screenRow, bool 
   for (std::size_t i = 0; i < codes.size();) {
     std::size_t end = i;
     int bytes = 0;
-    while (end < codes.size() && (cap == 0 || end == i || bytes + tek::intLength(codes[end]) <= cap))
-      bytes += tek::intLength(codes[end++]);
+    while (end < codes.size() && (cap == 0 || end == i || bytes + tek4125::intLength(codes[end]) <= cap))
+      bytes += tek4125::intLength(codes[end++]);
     out_.command("RL");
     out_.integer(static_cast<int>(end - i));
     for (std::size_t j = i; j < end; ++j) out_.integer(codes[j]);
@@ -233,4 +233,4 @@ void Tek4125RowPlanner::emitRectangle(const OpenRectangle& rect) {
   ++stats_.rectangleFills;
 }
 
-}  // namespace lattice
+}  // namespace lattice::tek4125

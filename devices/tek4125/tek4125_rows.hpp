@@ -8,7 +8,7 @@
 // its header, which the form set decides (an RH before each span when the
 // beam is not trusted to continue). Linear in the runs; optimal for the
 // estimated costs. Tunables: the per-command byte estimates below, which
-// follow the encodings in tek_encoding.hpp.
+// follow the encodings in tek4125_encoding.hpp.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -16,7 +16,7 @@
 #include "devices/tek4125/tek4125_strategy.hpp"
 #include "devices/tek4125/tek4125_writer.hpp"
 
-namespace lattice {
+namespace lattice::tek4125 {
 
 struct Tek4125RowLayout {
   int left = 0, bottom = 0;          // screen pixel of the picture's lower-left corner
@@ -69,4 +69,4 @@ class Tek4125RowPlanner {
   std::vector<int> openAt_;  // image column -> entry of open_ starting there, or -1
 };
 
-}  // namespace lattice
+}  // namespace lattice::tek4125

@@ -2,7 +2,7 @@
 
 #include "devices/tek4125/named_table.hpp"
 
-namespace lattice {
+namespace lattice::tek4125 {
 
 const std::vector<Tek4125NamedStrategy>& tek4125Strategies() {
   // Fields: skipBackground, rectangles, mergeRows, runLength, shortest.
@@ -23,4 +23,4 @@ const Tek4125NamedStrategy& tek4125Strategy(std::string_view name) {
   return findNamed(tek4125Strategies(), name, "strategy");
 }
 
-}  // namespace lattice
+}  // namespace lattice::tek4125

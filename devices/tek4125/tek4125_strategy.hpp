@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-namespace lattice {
+namespace lattice::tek4125 {
 
 struct Tek4125DriverOptions {
   bool skipBackground = true;  // runs of the background colour are not sent (painted once, or the clear)
@@ -29,4 +29,4 @@ const std::vector<Tek4125NamedStrategy>& tek4125Strategies();
 const Tek4125NamedStrategy& tek4125Strategy(std::string_view name);
 std::string tek4125StrategyNames();
 
-}  // namespace lattice
+}  // namespace lattice::tek4125

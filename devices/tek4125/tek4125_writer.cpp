@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace lattice {
+namespace lattice::tek4125 {
 
 namespace {
 constexpr std::uint8_t kDel = 0x7F;
@@ -15,7 +15,7 @@ void Tek4125Writer::countDels(std::size_t from) {
 
 void Tek4125Writer::integer(int value) {
   const std::size_t before = out_.size();
-  tek::appendInt(out_, value);
+  tek4125::appendInt(out_, value);
   countDels(before);
 }
 
@@ -26,8 +26,8 @@ void Tek4125Writer::xy(int x, int y) {
   countDels(before);
 }
 
-tek::Bytes Tek4125Writer::take() {
-  tek::Bytes result;
+tek4125::Bytes Tek4125Writer::take() {
+  tek4125::Bytes result;
   if (!forms_.escapeDel) {
     result.swap(out_);
   } else {
@@ -35,7 +35,7 @@ tek::Bytes Tek4125Writer::take() {
     // every DEL here is inside an integer or a coordinate.
     result.reserve(out_.size() + out_.size() / 64);
     for (std::uint8_t c : out_) {
-      if (c == kDel) result.insert(result.end(), {tek::kEsc, '?'});
+      if (c == kDel) result.insert(result.end(), {tek4125::kEsc, '?'});
       else result.push_back(c);
     }
     out_.clear();
@@ -44,4 +44,4 @@ tek::Bytes Tek4125Writer::take() {
   return result;
 }
 
-}  // namespace lattice
+}  // namespace lattice::tek4125

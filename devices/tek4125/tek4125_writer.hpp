@@ -9,15 +9,15 @@
 #include <string_view>
 
 #include "devices/tek4125/tek4125_forms.hpp"
-#include "devices/tek4125/tek_encoding.hpp"
+#include "devices/tek4125/tek4125_encoding.hpp"
 
-namespace lattice {
+namespace lattice::tek4125 {
 
 class Tek4125Writer {
  public:
   explicit Tek4125Writer(const Tek4125Forms& forms) : forms_(forms) {}
 
-  void command(std::string_view name) { tek::appendCommand(out_, name); }
+  void command(std::string_view name) { tek4125::appendCommand(out_, name); }
   void integer(int value);
   void xy(int x, int y);
   void byte(std::uint8_t c) { out_.push_back(c); }
@@ -30,14 +30,14 @@ class Tek4125Writer {
   std::size_t size() const { return out_.size() + dels_; }
   const Tek4125Forms& forms() const { return forms_; }
   // The stream so far, DELs escaped as the form set asks; the writer is left empty.
-  tek::Bytes take();
+  tek4125::Bytes take();
 
  private:
   const Tek4125Forms& forms_;
-  tek::XyEncoder xy_;
-  tek::Bytes out_;
+  tek4125::XyEncoder xy_;
+  tek4125::Bytes out_;
   void countDels(std::size_t from);
   std::size_t dels_ = 0;  // extra bytes take() will add, so size() is exact
 };
 
-}  // namespace lattice
+}  // namespace lattice::tek4125

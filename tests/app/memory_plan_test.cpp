@@ -6,7 +6,7 @@
 #include "lht/table.hpp"
 #include "foundation/error.hpp"
 
-using lattice::PipelineMode;
+using lattice::quantize::PipelineMode;
 using lattice::app::kUntouchedAllowance;
 using lattice::app::MemoryPlanRequest;
 using lattice::app::planMemory;
@@ -83,7 +83,7 @@ TEST_CASE("app:memory_plan_keeps_the_users_mode") {
 
 TEST_CASE("app:memory_plan_counts_floyd_steinberg_rows") {
   auto r = request512(kPasses);
-  r.pipeline.quantize.dither = lattice::Dither::FloydSteinberg;
+  r.pipeline.quantize.dither = lattice::quantize::Dither::FloydSteinberg;
   CHECK_THAT(budgetError(r), Catch::Contains("passes mode"));  // the error rows no longer fit
   r.budget = kPasses + (512 + 2) * 3 * sizeof(int);
   CHECK(planMemory(r).mode == PipelineMode::TwoPass);

@@ -63,3 +63,14 @@ TEST_CASE("atomic file errors name the path") {
     CHECK(std::string(e.what()).find("in.bin") != std::string::npos);
   }
 }
+
+TEST_CASE("readFileUpTo refuses a file over its limit before reading it, and an endless one at the limit") {
+  const lattice::testing::TempDir scratch("read-up-to");
+  const fs::path small = scratch.path() / "small.bin";
+  writeFileAtomically(small, std::vector<std::uint8_t>(1000, 7));
+  CHECK(readFileUpTo(small, 1000, "a test file").size() == 1000);
+  CHECK_THROWS_WITH(readFileUpTo(small, 999, "a test file"),
+                    Catch::Contains("small.bin: 1000 bytes, more than the 999-byte limit for a test file"));
+  CHECK_THROWS_WITH(readFileUpTo("/dev/zero", 4096, "a test file"),
+                    Catch::Contains("/dev/zero: more than the 4096-byte limit"));
+}

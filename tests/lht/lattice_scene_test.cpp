@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "io/image_metrics.hpp"
+#include "lht/canonical_toml.hpp"
 #include "lht/lattice_object.hpp"
 #include "lht/lattice_scene.hpp"
 #include "lht/table_build.hpp"
@@ -282,9 +283,10 @@ TEST_CASE("lattice scene: the precision key picks the entry form and the thesis'
   const LatticeDefinitionPtr plain = definition("");
   CHECK(plain->precision == LhtPrecision::Thesis);
   CHECK(definition("precision = \"thesis\"")->hash() == plain->hash());
-  // Caches written before the knob existed hold this hash and must stay valid.
-  CHECK(plain->hash() == fnv1a64(fmt::format("lattice spacing={:.17g} oversample={:.17g} object={}", plain->lambda,
-                                             plain->oversample, plain->objectText)));
+  // The key of a thesis-precision lattice names no precision.
+  CHECK(plain->hash() == fnv1a64(fmt::format("lattice2 spacing={} oversample={} object={}",
+                                             canonicalDouble(plain->lambda), canonicalDouble(plain->oversample),
+                                             plain->objectText)));
   for (const char* name : {"wide", "compact"}) {
     const LatticeDefinitionPtr d = definition(fmt::format("precision = \"{}\"", name));
     CHECK(lhtPrecisionName(d->precision) == name);
@@ -427,4 +429,14 @@ TEST_CASE("lattice scene: mistakes are located errors") {
       "[[lattices]]\nname = \"a\"\nspacing = 1\nprecision = 16\nobject = { type = \"sphere\", radius = 1 }\n");
   CHECK(notAString.find("bad.toml:4:") != std::string::npos);
   CHECK(notAString.find("precision") != std::string::npos);
+}
+
+TEST_CASE("lattice scene: lattice_scatter's count is capped at kMaxScatterCount with a located error") {
+  std::string over = fuzzyScene(static_cast<int>(kMaxScatterCount) + 1);
+  const std::string message = loadError(over);
+  CHECK_THAT(message, Catch::Contains("bad.toml:") && Catch::Contains("between 1 and 100000") &&
+                          Catch::Contains("docs/limits.md"));
+  // The limit itself loads (placing is linear; nothing is rendered here).
+  const SceneDesc scene = parseSceneWithLattices(fuzzyScene(static_cast<int>(kMaxScatterCount)), "limit.toml").scene;
+  CHECK(scene.root.children.size() == 3);
 }

@@ -9,7 +9,9 @@
 #include "foundation/atomic_file.hpp"
 #include "lht/lattice_object.hpp"
 #include "lht/lht_file.hpp"
+#include "tests/support/temp_dir.hpp"
 #include "foundation/error.hpp"
+#include "foundation/resident_memory.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;
@@ -177,4 +179,71 @@ TEST_CASE("lht file: every kind of bad file is refused with a message naming it 
   SECTION("a missing file") {
     CHECK_THROWS_AS(readLhtFile("/nonexistent/dir/x.lht"), Error);
   }
+}
+
+TEST_CASE("lht file: the streamed file reader agrees with parseLht on good and bad files") {
+  const lattice::testing::TempDir scratch("lht-stream");
+  const LhtFile lht = makeSphereLht();
+  const std::vector<std::uint8_t> good = serializeLht(lht);
+  const std::string path = scratch / "bad.lht";
+  writeFileAtomically(path, good);
+  const LhtFile back = readLhtFile(path, lht.objectHash);
+  CHECK(back.table.slotBytes() == lht.table.slotBytes());
+  CHECK(back.objectHash == lht.objectHash);
+
+  std::vector<std::vector<std::uint8_t>> bad;
+  for (std::size_t keep : {std::size_t(0), std::size_t(5), kLhtHeaderBytes - 1, kLhtHeaderBytes + 20, good.size() - 1})
+    bad.emplace_back(good.begin(), good.begin() + static_cast<std::ptrdiff_t>(keep));
+  for (std::size_t at : {std::size_t(0), std::size_t(9), std::size_t(18), kLhtHeaderBytes + 3, good.size() - 1}) {
+    bad.push_back(good);
+    bad.back()[at] ^= 0x10;
+  }
+  bad.push_back(good);
+  bad.back().push_back(0);  // padded
+  for (const auto& bytes : bad) {
+    writeFileAtomically(path, bytes);
+    const std::string expected = refusal(bytes);
+    try {
+      readLhtFile(path);
+      FAIL("the file reader accepted a file parseLht refuses");
+    } catch (const Error& e) {
+      CHECK(e.kind() == ErrorKind::Input);
+      // parseLht names the file "bad.lht"; the reader names it by its path.
+      CHECK(std::string(e.what()).substr(path.size()) == expected.substr(std::strlen("bad.lht")));
+    }
+  }
+}
+
+TEST_CASE("lht file: a huge junk file is refused from its first bytes, without reading it (issue 15)") {
+  // 256 MiB, sparse: reading it whole, as the reader once did, would raise
+  // the peak resident memory by as much.
+  const lattice::testing::TempDir scratch("lht-junk");
+  const std::string path = scratch / "junk.lht";
+  const std::uint64_t size = std::uint64_t(256) << 20;
+  {
+    std::vector<std::uint8_t> start(4096, 0xA5);
+    writeFileAtomically(path, start);
+    std::filesystem::resize_file(path, size);
+  }
+  const auto before = lattice::residentMemory();
+  try {
+    readLhtFile(path);
+    FAIL("junk was accepted");
+  } catch (const Error& e) {
+    CHECK(std::string(e.what()).find("wrong magic") != std::string::npos);
+  }
+  // With the right magic and version but a table the header does not
+  // describe, the size check refuses it, again before reading the table.
+  std::vector<std::uint8_t> header = serializeLht(makeSphereLht());
+  header.resize(kLhtHeaderBytes);
+  writeFileAtomically(path, header);
+  std::filesystem::resize_file(path, size);
+  try {
+    readLhtFile(path);
+    FAIL("a header with the wrong size was accepted");
+  } catch (const Error& e) {
+    CHECK(std::string(e.what()).find("truncated or padded: 268435456 bytes") != std::string::npos);
+  }
+  const auto after = lattice::residentMemory();
+  if (before && after) CHECK(after->peak < before->peak + (std::uint64_t(32) << 20));
 }

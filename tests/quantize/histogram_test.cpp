@@ -6,6 +6,7 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::quantize;
 
 TEST_CASE("histogram counts every pixel of a row in its 18-bit cell") {
   Histogram h;

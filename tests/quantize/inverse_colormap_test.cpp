@@ -9,6 +9,7 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::quantize;
 using lattice::testing::hash2;
 
 namespace {

@@ -10,6 +10,7 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::quantize;
 using lattice::testing::photoLike;
 
 namespace {

@@ -7,6 +7,7 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::quantize;
 
 namespace {
 

@@ -11,6 +11,7 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::quantize;
 using lattice::testing::FunctionSource;
 using lattice::testing::photoLike;
 

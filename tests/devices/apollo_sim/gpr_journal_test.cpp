@@ -9,11 +9,13 @@
 #include "devices/apollo_sim/apollo_output.hpp"
 #include "devices/apollo_sim/gpr_journal.hpp"
 #include "devices/device_table.hpp"
+#include "devices/work_budget.hpp"
 #include "foundation/error.hpp"
 #include "quantize/run_pipeline.hpp"
 #include "tests/quantize/test_sources.hpp"
 
 using namespace lattice;
+using namespace lattice::quantize;
 using namespace lattice::apollo;
 using lattice::testing::FunctionSource;
 
@@ -86,4 +88,23 @@ TEST_CASE("garbage into the journal decoder is counted, never thrown") {
   CHECK_NOTHROW(decoder.finish());
   CHECK(decoder.report().bytes == noise.size());
   CHECK(decoder.report().unknownCommands + decoder.report().malformed > 0);
+}
+
+TEST_CASE("GPR journal: two-byte clears are charged to the drawing budget (issue 15)") {
+  // Each 'K' record clears 1024 x 1024 pixels: 1,024 fit in kPixelWorkBudget,
+  // the next is refused.
+  auto journal = [](int clears) {
+    std::vector<std::uint8_t> bytes(std::begin(kGprJournalHeader), std::end(kGprJournalHeader));
+    bytes.push_back('A');
+    for (int i = 0; i < clears; ++i) bytes.insert(bytes.end(), {'K', static_cast<std::uint8_t>(i % 2)});
+    return bytes;
+  };
+  {
+    GprJournalDecoder decoder(dn660Profile());
+    REQUIRE_NOTHROW(decodeBytes(decoder, journal(1024), "fits.gpr"));
+    CHECK(decoder.report().pixelWork == kPixelWorkBudget);
+  }
+  GprJournalDecoder decoder(dn660Profile());
+  CHECK_THROWS_WITH(decodeBytes(decoder, journal(1025), "clears.gpr"),
+                    Catch::Contains("clears.gpr") && Catch::Contains("kPixelWorkBudget"));
 }

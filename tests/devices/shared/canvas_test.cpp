@@ -2,6 +2,9 @@
 // and lines that are exactly the Bresenham walk.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <utility>
 #include <vector>
@@ -106,4 +109,55 @@ TEST_CASE("a line far longer than the screen costs only its visible steps and dr
   IndexedImage s(16, 16, 2);
   drawLine(s, -2000000000L, 8, 2000000000L, 8, 1);  // 4e9 steps, 16 on the screen
   CHECK(count(s, 1) == 16);
+}
+
+namespace {
+// The even-odd fill as it was first written (sort each row's crossings, fill
+// between pairs): fillPolygon's sweep must give the same pixels.
+void referenceFill(IndexedImage& screen, const std::vector<double>& xy, PaletteIndex index) {
+  const std::size_t n = xy.size() / 2;
+  for (int row = 0; row < screen.height; ++row) {
+    const double yc = row + 0.5;
+    std::vector<double> crossings;
+    for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+      const double xi = xy[2 * i], yi = xy[2 * i + 1], xj = xy[2 * j], yj = xy[2 * j + 1];
+      if ((yi > yc) != (yj > yc)) crossings.push_back(xj + (yc - yj) * (xi - xj) / (yi - yj));
+    }
+    std::sort(crossings.begin(), crossings.end());
+    for (std::size_t k = 0; k + 1 < crossings.size(); k += 2) {
+      const int from = std::max(0, static_cast<int>(std::ceil(crossings[k] - 0.5)));
+      const int to = std::min(screen.width - 1, static_cast<int>(std::floor(crossings[k + 1] - 0.5)));
+      for (int x = from; x <= to; ++x) *pixelAt(screen, x, row) = index;
+    }
+  }
+}
+}  // namespace
+
+TEST_CASE("the sweep fill gives the same pixels as sorting the crossings") {
+  // Random polygons on a half-pixel grid (so crossings land exactly on pixel
+  // centres and edges), many self-intersecting, some reaching off the screen.
+  std::uint32_t state = 12345;
+  auto next = [&](int range) {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<int>((state >> 8) % static_cast<std::uint32_t>(range));
+  };
+  for (int trial = 0; trial < 400; ++trial) {
+    const int points = 3 + next(12);
+    std::vector<double> xy;
+    for (int p = 0; p < 2 * points; ++p) xy.push_back((next(60) - 10) * 0.5 + (trial % 3 == 0 ? 0.25 : 0.0));
+    IndexedImage fast(24, 20, 4), slow(24, 20, 4);
+    fillPolygon(fast, xy, 1);
+    referenceFill(slow, xy, 1);
+    REQUIRE(fast.pixels == slow.pixels);
+  }
+}
+
+TEST_CASE("lineWork counts the steps drawLine visits") {
+  IndexedImage s(40, 30, 4);
+  CHECK(lineWork(s, 0, 0, 39, 0) == 40);
+  CHECK(lineWork(s, 5, 5, 5, 5) == 1);
+  CHECK(lineWork(s, -100, -100, -50, -60) == 0);
+  // A vector 130,000 pixels long costs the screen's width and two steps each side
+  // (the widening that keeps rounding from losing a visible point).
+  CHECK(lineWork(s, -65000, 10, 65000, 10) <= 44);
 }

@@ -8,7 +8,7 @@
 #include "foundation/byte_sink.hpp"
 #include "foundation/indexed_image.hpp"
 
-namespace lattice::testing {
+namespace lattice::tek4027::test {
 
 inline void feedFrame(Tek4027Driver& driver, const IndexedImage& img) {
   driver.begin({img.width, img.height, img.colormap});
@@ -27,4 +27,4 @@ inline std::string driveFrame(const IndexedImage& img, const Tek4027Profile& pro
   return {sink.data().begin(), sink.data().end()};
 }
 
-}  // namespace lattice::testing
+}  // namespace lattice::tek4027::test

@@ -15,6 +15,8 @@
 #include "tests/devices/tek4027/synthetic_images.hpp"
 
 using namespace lattice;
+using namespace lattice::tek4027;
+using namespace lattice::tek4027::test;
 
 namespace {
 
@@ -57,7 +59,7 @@ TEST_CASE("random streams over the command alphabet never break the emulator") {
 }
 
 TEST_CASE("mutated driver streams never break the emulator") {
-  const std::string text = testing::driveFrame(testing::ringsImage(64, 48), Tek4027Profile{});
+  const std::string text = test::driveFrame(testing::ringsImage(64, 48), Tek4027Profile{});
   const std::vector<std::uint8_t> original(text.begin(), text.end());
   REQUIRE(original.size() > 500);
 

@@ -17,11 +17,13 @@
 #include "tests/support/golden.hpp"
 
 using namespace lattice;
+using namespace lattice::tek4027;
+using namespace lattice::tek4027::test;
 
 namespace {
 
 std::vector<std::uint8_t> drive(const IndexedImage& img, const Tek4027Profile& profile) {
-  const std::string text = testing::driveFrame(img, profile);
+  const std::string text = test::driveFrame(img, profile);
   return {text.begin(), text.end()};
 }
 

@@ -5,6 +5,7 @@
 #include "devices/tek4027/tek4027_hls.hpp"
 
 using namespace lattice;
+using namespace lattice::tek4027;
 
 TEST_CASE("Tek HLS puts blue at hue 0, red at 120, green at 240") {
   CHECK(rgbToTekHls({0, 0, 255}) == Hls{0, 50, 100});

@@ -28,12 +28,14 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::tek4027;
+using namespace lattice::tek4027::test;
 
 namespace {
 
-using testing::feedFrame;
+using test::feedFrame;
 
-std::string drive(const IndexedImage& img, const Tek4027Profile& profile) { return testing::driveFrame(img, profile); }
+std::string drive(const IndexedImage& img, const Tek4027Profile& profile) { return test::driveFrame(img, profile); }
 
 Tek4027Profile alwaysPaced() {
   Tek4027Profile profile;

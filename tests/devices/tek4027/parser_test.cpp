@@ -8,6 +8,7 @@
 #include "devices/tek4027/tek4027_decoder.hpp"
 
 using namespace lattice;
+using namespace lattice::tek4027;
 
 namespace {
 

@@ -14,10 +14,12 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::tek4027;
+using namespace lattice::tek4027::test;
 
 namespace {
 
-std::string drive(const IndexedImage& img, const Tek4027Profile& profile) { return testing::driveFrame(img, profile); }
+std::string drive(const IndexedImage& img, const Tek4027Profile& profile) { return test::driveFrame(img, profile); }
 
 // The three-letter keys of every command in a stream.
 std::set<std::string> commandNames(const std::string& text) {

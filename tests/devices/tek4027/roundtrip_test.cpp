@@ -13,6 +13,8 @@
 #include "tests/devices/tek4027/synthetic_images.hpp"
 
 using namespace lattice;
+using namespace lattice::tek4027;
+using namespace lattice::tek4027::test;
 using namespace lattice::testing;
 
 namespace {

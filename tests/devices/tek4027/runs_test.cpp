@@ -7,6 +7,7 @@
 #include "devices/tek4027/tek4027_runs.hpp"
 
 using namespace lattice;
+using namespace lattice::tek4027;
 
 namespace {
 

@@ -27,6 +27,8 @@
 #include "tests/support/golden.hpp"
 
 using namespace lattice;
+using namespace lattice::quantize;
+using namespace lattice::tek4027;
 
 namespace {
 

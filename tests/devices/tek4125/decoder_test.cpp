@@ -4,22 +4,22 @@
 
 #include <string>
 
-#include "devices/tek4125/tek4100_decoder.hpp"
-#include "devices/tek4125/tek_encoding.hpp"
+#include "devices/tek4125/tek4125_decoder.hpp"
+#include "devices/tek4125/tek4125_encoding.hpp"
 #include "tests/devices/tek4125/stream_builder.hpp"
 
 using namespace lattice;
-using namespace lattice::tek;
-using namespace lattice::tektest;
+using namespace lattice::tek4125;
+using namespace lattice::tek4125::test;
 
 namespace {
 
 // Screen pixel of terminal coordinate (x, y) on the default 1280x1024 screen.
-PaletteIndex at(const Tek4100Decoder& d, int x, int y) {
+PaletteIndex at(const Tek4125Decoder& d, int x, int y) {
   return d.image().at(x * 1280 / 4096, 1023 - y * 1280 / 4096);
 }
 
-long countIndex(const Tek4100Decoder& d, int index) {
+long countIndex(const Tek4125Decoder& d, int index) {
   long n = 0;
   for (PaletteIndex p : d.image().pixels) n += p == index;
   return n;
@@ -43,7 +43,7 @@ TEST_CASE("a gnuplot tek410x-style stream draws its vectors in the line index") 
   s.cmd("LF").p(2000, 2900).raw("\x1bLT").i(5).raw("title");
   s.raw("\x1bLV1\x1b%!1");
   s.raw("gnuplot> ");  // the dialog text that follows in ANSI mode is not graphics
-  const Tek4100Decoder d = run(s.bytes);
+  const Tek4125Decoder d = run(s.bytes);
   CHECK(d.report().unknownCommands == 0);
   CHECK(d.report().malformed == 0);
   CHECK_FALSE(d.inTekMode());
@@ -60,7 +60,7 @@ TEST_CASE("ML with the encoding of 15 and LF/LG clip to the screen without faili
   Stream s;
   s.raw("\x1bML?");
   s.cmd("LF").p(0, 4095).cmd("LG").p(4095, 0);  // y above 3276 lies above the 1024-row screen
-  const Tek4100Decoder d = run(s.bytes);
+  const Tek4125Decoder d = run(s.bytes);
   CHECK(d.report().malformed == 0);
   CHECK(countIndex(d, 15) > 1000);
   CHECK(d.image().at(1279, 1023) == 15);  // the end point (4095, 0) is the bottom-right pixel
@@ -72,7 +72,7 @@ TEST_CASE("4010-style GS runs move to the first point and draw to the rest until
   s.raw("\x1d").p(100, 100).p(1000, 100).p(1000, 1000);
   s.raw("\x1f");
   s.p(2000, 2000);  // alpha mode: these bytes are text, not a vector
-  const Tek4100Decoder d = run(s.bytes);
+  const Tek4125Decoder d = run(s.bytes);
   CHECK(at(d, 500, 100) == 3);
   CHECK(at(d, 1000, 500) == 3);
   CHECK(at(d, 500, 500) == 0);  // no line from (100,100) to (1000,1000)... the move was dark
@@ -86,7 +86,7 @@ TEST_CASE("panels fill solid with the MP pattern index and draw their boundary i
   s.cmd("LP").p(800, 800).i(1).cmd("LG").p(2400, 800).cmd("LG").p(2400, 2000).cmd("LG").p(800, 2000).cmd("LE");
   s.cmd("MP").i(-7);
   s.cmd("LP").p(3000, 200).i(0).cmd("LG").p(3800, 200).cmd("LG").p(3400, 900).cmd("LE");  // triangle
-  const Tek4100Decoder d = run(s.bytes);
+  const Tek4125Decoder d = run(s.bytes);
   CHECK(at(d, 1600, 1400) == 4);  // inside the rectangle
   CHECK(at(d, 800, 1400) == 6);   // its boundary in the line index
   CHECK(at(d, 2600, 1400) == 0);
@@ -107,7 +107,7 @@ TEST_CASE("page clear, mode switches and ignored dialog-area commands") {
   s.raw("\x1b[2J");
   s.raw("\x1b%!0");
   s.cmd("LF").p(0, 200).cmd("LG").p(4000, 200);
-  const Tek4100Decoder d = run(s.bytes);
+  const Tek4125Decoder d = run(s.bytes);
   CHECK(at(d, 2000, 0) == 0);
   CHECK(at(d, 2000, 100) == 0);
   CHECK(at(d, 2000, 200) == 1);
@@ -121,7 +121,7 @@ TEST_CASE("the colour map loads in RGB, HLS and CMY modes") {
   s.cmd("TM").i(1).i(1).i(1).cmd("TG").i(1).i(4).i(2).i(100).i(50).i(0);
   s.cmd("TM").i(3).i(1).i(1).cmd("TG").i(1).i(8).i(3).i(120).i(50).i(100).i(4).i(0).i(50).i(100);
   s.cmd("TM").i(2).i(1).i(1).cmd("TG").i(1).i(4).i(5).i(0).i(100).i(100);
-  const Tek4100Decoder d = run(s.bytes, Tek4125Profile{});
+  const Tek4125Decoder d = run(s.bytes, Tek4125Profile{});
   const Palette& m = d.image().colormap;
   CHECK(m[2] == Rgb8{255, 128, 0});
   CHECK(m[3] == Rgb8{255, 0, 0});  // Tek hue 120 is red
@@ -134,7 +134,7 @@ TEST_CASE("unknown commands are counted by name and skipped to the next ESC") {
   Stream s;
   s.raw("\x1bQQ123abc\x1bZZ\x1bQQ");
   s.cmd("ML").i(9).cmd("LF").p(0, 0).cmd("LG").p(4000, 0);
-  const Tek4100Decoder d = run(s.bytes);
+  const Tek4125Decoder d = run(s.bytes);
   CHECK(d.report().unknownCommands == 3);
   CHECK(d.report().unknownByName.at("QQ") == 2);
   CHECK(d.report().unknownByName.at("ZZ") == 1);
@@ -148,7 +148,7 @@ TEST_CASE("commands cut short are malformed, parameters may be split by control 
   s.raw("\x1bML").raw("\r\n").i(12);  // a line break inside a command is ignored
   s.cmd("LF").p(0, 0).cmd("LG").p(4000, 0);
   s.raw("\x1bRP").i(10);  // the end arrives before the raster string
-  const Tek4100Decoder d = run(s.bytes);
+  const Tek4125Decoder d = run(s.bytes);
   CHECK(d.report().malformed == 2);
   CHECK(at(d, 2000, 0) == 12);
 }
@@ -163,7 +163,7 @@ TEST_CASE("raster writes wrap at the viewport edge and XOR with ALU mode 7") {
                                         char(0x20 + 0x16)});
   s.cmd("RU").i(1).i(7).i(4);
   s.cmd("RR").p(10, 10).p(10, 10).i(15);
-  const Tek4100Decoder d = run(s.bytes);
+  const Tek4125Decoder d = run(s.bytes);
   const IndexedImage& img = d.image();
   CHECK(img.at(10, 1023 - 11) == 1);
   CHECK(img.at(11, 1023 - 11) == 2);

@@ -8,13 +8,14 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
-using namespace lattice::tektest;
+using namespace lattice::tek4125;
+using namespace lattice::tek4125::test;
 
 namespace {
 
 IndexedImage decode(const std::vector<std::uint8_t>& bytes, const Tek4125Profile& profile,
                     int w, int h, DecodeReport* report = nullptr) {
-  Tek4100Decoder decoder(profile);
+  Tek4125Decoder decoder(profile);
   decoder.feed(bytes);
   decoder.finish();
   if (report) *report = decoder.report();
@@ -80,7 +81,7 @@ TEST_CASE("synthetic pictures survive driver -> emulator at 4 and 8 planes, ever
 TEST_CASE("a full 1280x1024 picture fills the screen exactly") {
   Tek4125Profile profile;
   const IndexedImage img = gradient(1280, 1024, 256);
-  Tek4100Decoder decoder(profile);
+  Tek4125Decoder decoder(profile);
   decoder.feed(encode(img, profile));
   decoder.finish();
   CHECK(decoder.image().pixels == img.pixels);
@@ -94,10 +95,10 @@ TEST_CASE("reserved colour-map entries are left alone and the picture is shifted
     profile.planes = 4;
     profile.reserved = 2;
     const IndexedImage img = scene(90, 50, profile.maxColors());
-    Tek4100Decoder decoder(profile);
+    Tek4125Decoder decoder(profile);
     decoder.feed(encode(img, profile));
     checkSamePicture(img, cutPicture(decoder.image(), profile, img.width, img.height), profile);
-    const Palette defaults = Tek4100Decoder::defaultColorMap(16);
+    const Palette defaults = Tek4125Decoder::defaultColorMap(16);
     CHECK(decoder.image().colormap[0] == defaults[0]);
     CHECK(decoder.image().colormap[1] == defaults[1]);
   }
@@ -109,7 +110,7 @@ TEST_CASE("the picture is centred and the rest of the screen is cleared to index
     Tek4125Profile profile;
     profile.forms = forms;
     const IndexedImage img = flat(100, 50, 4, 3);
-    Tek4100Decoder decoder(profile);
+    Tek4125Decoder decoder(profile);
     decoder.feed(encode(img, profile));
     const IndexedImage& screen = decoder.image();
     long lit = 0;
@@ -129,10 +130,10 @@ TEST_CASE("the decoded picture does not depend on how the stream is chunked") {
   profile.planes = 4;
   const IndexedImage img = scene(120, 80, 16);
   const std::vector<std::uint8_t> bytes = encode(img, profile);
-  Tek4100Decoder whole(profile);
+  Tek4125Decoder whole(profile);
   whole.feed(bytes);
   whole.finish();
-  Tek4100Decoder single(profile);
+  Tek4125Decoder single(profile);
   for (std::uint8_t b : bytes) single.feed(std::span<const std::uint8_t>(&b, 1));
   single.finish();
   CHECK(single.image().pixels == whole.image().pixels);
@@ -140,7 +141,7 @@ TEST_CASE("the decoded picture does not depend on how the stream is chunked") {
   CHECK(single.report().commands == whole.report().commands);
   std::mt19937 rng(42);
   for (int trial = 0; trial < 5; ++trial) {
-    Tek4100Decoder chunked(profile);
+    Tek4125Decoder chunked(profile);
     for (std::size_t pos = 0; pos < bytes.size();) {
       const std::size_t n = std::min<std::size_t>(bytes.size() - pos, 1 + rng() % 200);
       chunked.feed(std::span<const std::uint8_t>(bytes).subspan(pos, n));

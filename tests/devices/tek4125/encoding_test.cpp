@@ -5,12 +5,12 @@
 #include <random>
 #include <string>
 
-#include "devices/tek4125/tek_encoding.hpp"
-#include "devices/tek4125/tek_params.hpp"
+#include "devices/tek4125/tek4125_encoding.hpp"
+#include "devices/tek4125/tek4125_params.hpp"
 #include "foundation/error.hpp"
 
 using namespace lattice;
-using namespace lattice::tek;
+using namespace lattice::tek4125;
 
 namespace {
 

@@ -10,7 +10,8 @@
 #include "tests/devices/tek4125/tek_test_support.hpp"
 
 using namespace lattice;
-using namespace lattice::tektest;
+using namespace lattice::tek4125;
+using namespace lattice::tek4125::test;
 
 namespace {
 
@@ -33,7 +34,7 @@ TEST_CASE("thousands of random streams decode without failing and are counted") 
     const auto bytes = randomStream(rng, 50 + rng() % 400);
     Tek4125Profile profile;
     profile.planes = trial % 2 ? 4 : 8;
-    Tek4100Decoder d(profile);
+    Tek4125Decoder d(profile);
     d.feed(bytes);
     d.finish();
     REQUIRE(d.report().bytes == bytes.size());
@@ -67,7 +68,7 @@ TEST_CASE("mutated driver streams decode without failing, byte by byte too") {
       }
       if (bytes.empty()) bytes.push_back(0x1b);
     }
-    Tek4100Decoder d(profile);
+    Tek4125Decoder d(profile);
     if (trial % 10 == 0)
       for (std::uint8_t b : bytes) d.feed(std::span<const std::uint8_t>(&b, 1));
     else
@@ -80,7 +81,7 @@ TEST_CASE("mutated driver streams decode without failing, byte by byte too") {
 }
 
 TEST_CASE("pathological but legal parameters stay within the screen and bounded work") {
-  using namespace lattice::tek;
+  using namespace lattice::tek4125;
   Bytes s;
   XyEncoder xy;
   appendCommand(s, "RS");  // viewport far beyond the screen
@@ -110,7 +111,7 @@ TEST_CASE("pathological but legal parameters stay within the screen and bounded 
     xy.append(s, (i * 37) % 4096, (i * 91) % 4096);
   }
   appendCommand(s, "LE");
-  Tek4100Decoder d(Tek4125Profile{});
+  Tek4125Decoder d(Tek4125Profile{});
   d.feed(s);
   d.finish();
   CHECK(d.report().malformed == 4);  // short RP, two bad TG indices, ragged TG array

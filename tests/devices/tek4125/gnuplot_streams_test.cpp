@@ -13,10 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "devices/tek4125/tek4100_decoder.hpp"
+#include "devices/tek4125/tek4125_decoder.hpp"
 #include "tests/support/temp_dir.hpp"
 
 using namespace lattice;
+using namespace lattice::tek4125;
 
 namespace {
 
@@ -72,7 +73,7 @@ bool near(const IndexedImage& img, int px, int py, int index, int r) {
 }
 
 void checkPlot(const std::vector<std::uint8_t>& stream, const Geometry& g, int lineIndex, int frameIndex) {
-  Tek4100Decoder decoder{Tek4125Profile{}};
+  Tek4125Decoder decoder{Tek4125Profile{}};
   decoder.feed(stream);
   decoder.finish();
   CHECK(decoder.report().unknownCommands == 0);

@@ -10,7 +10,8 @@
 #include <fmt/format.h>
 
 using namespace lattice;
-using namespace lattice::tektest;
+using namespace lattice::tek4125;
+using namespace lattice::tek4125::test;
 
 TEST_CASE("golden: a 24x16 scene at 4 and 8 planes, strict and compact") {
   for (const std::string forms : {"strict", "compact"})
@@ -23,7 +24,7 @@ TEST_CASE("golden: a 24x16 scene at 4 and 8 planes, strict and compact") {
     const std::string stem =
         fmt::format("tek4125/scene24x16_{}planes{}", planes, forms == "strict" ? "" : "_" + forms);
     lattice::testing::checkGoldenBytes(stem + ".tek", bytes);
-    Tek4100Decoder decoder(profile);
+    Tek4125Decoder decoder(profile);
     decoder.feed(bytes);
     decoder.finish();
     const IndexedImage picture = cutPicture(decoder.image(), profile, img.width, img.height);

@@ -7,18 +7,18 @@
 
 #include <string>
 
-#include "devices/tek4125/tek4100_decoder.hpp"
-#include "devices/tek4125/tek_encoding.hpp"
+#include "devices/tek4125/tek4125_decoder.hpp"
+#include "devices/tek4125/tek4125_encoding.hpp"
 #include "tests/devices/tek4125/stream_builder.hpp"
 
 using namespace lattice;
-using namespace lattice::tek;
-using namespace lattice::tektest;
+using namespace lattice::tek4125;
+using namespace lattice::tek4125::test;
 
 namespace {
 
 // Screen pixel (x, y), Tek orientation (y = 0 is the bottom row).
-int px(const Tek4100Decoder& d, int x, int y) { return d.image().at(x, d.image().height - 1 - y); }
+int px(const Tek4125Decoder& d, int x, int y) { return d.image().at(x, d.image().height - 1 - y); }
 
 }  // namespace
 
@@ -120,8 +120,8 @@ TEST_CASE("TB sets the colour of entry 0, in the colour mode in force") {
 }
 
 TEST_CASE("the power-up colour map follows PGPLOT's table or, as a profile key, RAL-CGM's") {
-  const Palette pgplot = Tek4100Decoder::defaultColorMap(256, Tek4125PowerUpMap::Pgplot);
-  const Palette ral = Tek4100Decoder::defaultColorMap(256, Tek4125PowerUpMap::RalCgm);
+  const Palette pgplot = Tek4125Decoder::defaultColorMap(256, Tek4125PowerUpMap::Pgplot);
+  const Palette ral = Tek4125Decoder::defaultColorMap(256, Tek4125PowerUpMap::RalCgm);
   CHECK(pgplot[5] == Rgb8{0, 255, 255});
   CHECK(pgplot[6] == Rgb8{255, 0, 255});
   CHECK(pgplot[7] == Rgb8{255, 255, 0});
@@ -132,7 +132,7 @@ TEST_CASE("the power-up colour map follows PGPLOT's table or, as a profile key, 
   CHECK(pgplot[16] == Rgb8{0, 0, 0});
   Tek4125Profile profile;
   applyOverride(profile, "power-up-map=ral-cgm");
-  CHECK(Tek4100Decoder(profile).image().colormap[5] == Rgb8{255, 255, 0});
+  CHECK(Tek4125Decoder(profile).image().colormap[5] == Rgb8{255, 255, 0});
 }
 
 TEST_CASE("PGPLOT's, zebra's, RAL-CGM's and the GKS driver's set-up sequences are accepted whole") {

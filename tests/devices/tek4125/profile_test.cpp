@@ -5,6 +5,7 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::tek4125;
 
 TEST_CASE("the default profile is a 1280x1024, 8-plane terminal at 38400 8N1") {
   Tek4125Profile p;

@@ -26,6 +26,8 @@
 #include "tests/support/golden.hpp"
 
 using namespace lattice;
+using namespace lattice::quantize;
+using namespace lattice::tek4125;
 
 namespace {
 

@@ -3,24 +3,24 @@
 // write them, and decoding them whole.
 #include <string_view>
 
-#include "devices/tek4125/tek4100_decoder.hpp"
-#include "devices/tek4125/tek_encoding.hpp"
+#include "devices/tek4125/tek4125_decoder.hpp"
+#include "devices/tek4125/tek4125_encoding.hpp"
 
-namespace lattice::tektest {
+namespace lattice::tek4125::test {
 
 struct Stream {
-  tek::Bytes bytes;
-  tek::XyEncoder xy;  // short forms: the registers the terminal keeps
+  tek4125::Bytes bytes;
+  tek4125::XyEncoder xy;  // short forms: the registers the terminal keeps
   Stream& raw(std::string_view s) {
     for (char ch : s) bytes.push_back(static_cast<std::uint8_t>(ch));  // (insert trips a GCC 12 false warning)
     return *this;
   }
   Stream& cmd(std::string_view name) {
-    tek::appendCommand(bytes, name);
+    tek4125::appendCommand(bytes, name);
     return *this;
   }
   Stream& i(int v) {
-    tek::appendInt(bytes, v);
+    tek4125::appendInt(bytes, v);
     return *this;
   }
   Stream& p(int x, int y) {  // short form
@@ -28,17 +28,17 @@ struct Stream {
     return *this;
   }
   Stream& full(int x, int y) {  // all five bytes, as GKS, zebra and RAL-CGM send them
-    tek::XyEncoder fresh;
+    tek4125::XyEncoder fresh;
     fresh.append(bytes, x, y);
     return *this;
   }
 };
 
-inline Tek4100Decoder run(const tek::Bytes& b, Tek4125Profile profile = {}) {
-  Tek4100Decoder d(profile);
+inline Tek4125Decoder run(const tek4125::Bytes& b, Tek4125Profile profile = {}) {
+  Tek4125Decoder d(profile);
   d.feed(b);
   d.finish();
   return d;
 }
 
-}  // namespace lattice::tektest
+}  // namespace lattice::tek4125::test

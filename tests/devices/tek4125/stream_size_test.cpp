@@ -9,7 +9,8 @@
 #include "tests/devices/tek4125/tek_test_support.hpp"
 
 using namespace lattice;
-using namespace lattice::tektest;
+using namespace lattice::tek4125;
+using namespace lattice::tek4125::test;
 
 namespace {
 
@@ -54,7 +55,7 @@ TEST_CASE("the savings are real: the shortest stream beats one raster write per 
   const Tek4125Profile strict = profileWith("strict", 8), compact = profileWith("compact", 8);
   const auto strictBytes = encode(img, strict), compactBytes = encode(img, compact);
   CHECK(compactBytes.size() < strictBytes.size());
-  Tek4100Decoder a(strict), b(compact);
+  Tek4125Decoder a(strict), b(compact);
   a.feed(strictBytes);
   b.feed(compactBytes);
   CHECK(cutPicture(a.image(), strict, img.width, img.height).pixels ==
@@ -98,7 +99,7 @@ TEST_CASE("a picture of at most 16 colours is sent at 4 bits a pixel on an 8-pla
     CHECK(smallStats.rasterBits == 4);
     CHECK(largeStats.rasterBits == 8);
     CHECK(smallBytes.size() * 10 < largeBytes.size() * 7);
-    Tek4100Decoder decoder(profile);
+    Tek4125Decoder decoder(profile);
     decoder.feed(smallBytes);
     CHECK(cutPicture(decoder.image(), profile, small.width, small.height).pixels == small.pixels);
   }

@@ -12,7 +12,8 @@
 #include "tests/devices/tek4125/tek_test_support.hpp"
 
 using namespace lattice;
-using namespace lattice::tektest;
+using namespace lattice::tek4125;
+using namespace lattice::tek4125::test;
 
 namespace {
 
@@ -114,7 +115,7 @@ TEST_CASE("a strict stream draws the same picture under every unsettled reading;
   auto screenUnder = [&](const std::vector<std::uint8_t>& bytes, Tek4125Profile p,
                          const std::vector<std::string>& reading) {
     applyOverrides(p, reading);
-    Tek4100Decoder d(p);
+    Tek4125Decoder d(p);
     d.feed(bytes);
     d.finish();
     return d.image();
@@ -155,7 +156,7 @@ TEST_CASE("a DEL inside a parameter goes as ESC ? in strict, raw in compact, and
   CHECK(rawStrict == 0);
   CHECK(escapes > 0);
   CHECK(rawCompact > 0);
-  Tek4100Decoder a(strict), b(compact);
+  Tek4125Decoder a(strict), b(compact);
   a.feed(s);
   b.feed(c);
   CHECK(a.report().malformed == 0);

@@ -6,12 +6,12 @@
 #include <random>
 #include <vector>
 
-#include "devices/tek4125/tek4100_decoder.hpp"
+#include "devices/tek4125/tek4125_decoder.hpp"
 #include "devices/tek4125/tek4125_driver.hpp"
 #include "foundation/byte_sink.hpp"
 #include "foundation/indexed_image.hpp"
 
-namespace lattice::tektest {
+namespace lattice::tek4125::test {
 
 // A palette of n distinct colours spread over the RGB cube.
 inline Palette spreadPalette(int n) {
@@ -93,4 +93,4 @@ inline IndexedImage cutPicture(const IndexedImage& screen, const Tek4125Profile&
   return out;
 }
 
-}  // namespace lattice::tektest
+}  // namespace lattice::tek4125::test

@@ -20,7 +20,7 @@
 #include <string_view>
 #include <vector>
 
-namespace lattice::tek {
+namespace lattice::tek4125 {
 
 using Bytes = std::vector<std::uint8_t>;
 
@@ -66,4 +66,4 @@ class XyEncoder {
   bool known_ = false;
 };
 
-}  // namespace lattice::tek
+}  // namespace lattice::tek4125

@@ -20,13 +20,13 @@
 
 #include "devices/stream_decoder.hpp"
 #include "devices/tek4125/tek4125_profile.hpp"
-#include "devices/tek4125/tek_params.hpp"
+#include "devices/tek4125/tek4125_params.hpp"
 
-namespace lattice {
+namespace lattice::tek4125 {
 
-class Tek4100Decoder final : public StreamDecoder {
+class Tek4125Decoder final : public StreamDecoder {
  public:
-  explicit Tek4100Decoder(const Tek4125Profile& profile);
+  explicit Tek4125Decoder(const Tek4125Profile& profile);
   void feed(std::span<const std::uint8_t> bytes) override;
   void finish() override;
   const IndexedImage& image() const override { return screen_; }
@@ -84,9 +84,9 @@ class Tek4100Decoder final : public StreamDecoder {
   // The command in hand.
   const Spec* spec_ = nullptr;
   std::size_t paramIndex_ = 0;
-  tek::IntReader int_;
-  tek::XyReader xyReader_;
-  tek::XyRegisters xy_;
+  tek4125::IntReader int_;
+  tek4125::XyReader xyReader_;
+  tek4125::XyRegisters xy_;
   long remaining_ = -1;  // array entries or string chars still to come; -1 = count not read yet
   std::vector<int> ints_;
   std::vector<int> xys_;  // x0, y0, x1, y1, ...
@@ -109,6 +109,6 @@ class Tek4100Decoder final : public StreamDecoder {
   std::vector<int> panel_;  // terminal coordinates x0, y0, x1, y1, ...
 };
 
-std::unique_ptr<Tek4100Decoder> makeTek4100Decoder(const Tek4125Profile& profile);
+std::unique_ptr<Tek4125Decoder> makeTek4125Decoder(const Tek4125Profile& profile);
 
-}  // namespace lattice
+}  // namespace lattice::tek4125

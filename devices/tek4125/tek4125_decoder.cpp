@@ -1,12 +1,13 @@
-#include "devices/tek4125/tek4100_decoder.hpp"
+#include "devices/tek4125/tek4125_decoder.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
 #include "devices/canvas.hpp"
+#include "devices/work_budget.hpp"
 
-namespace lattice {
+namespace lattice::tek4125 {
 
 namespace {
 
@@ -34,7 +35,7 @@ Rgb8 hlsToRgb(int hue, int lightness, int saturation) {
 
 }  // namespace
 
-const std::vector<Tek4100Decoder::Spec>& Tek4100Decoder::commandTable() {
+const std::vector<Tek4125Decoder::Spec>& Tek4125Decoder::commandTable() {
   using P = Param;
   static const std::vector<Spec> table = {
       {"TM", Action::TM, 1, {P::Int, P::Int, P::Int}},    // colour mode, overlay, grey
@@ -98,7 +99,7 @@ const std::vector<Tek4100Decoder::Spec>& Tek4100Decoder::commandTable() {
   return table;
 }
 
-Palette Tek4100Decoder::defaultColorMap(int entries, Tek4125PowerUpMap which) {
+Palette Tek4125Decoder::defaultColorMap(int entries, Tek4125PowerUpMap which) {
   // Percent a gun. PGPLOT drivers/tkdriv.f (CTABLE) and RAL-CGM cgmtek.h
   // (TEKdftcoltab) agree but for entries 5..7 and a few 50-versus-51s.
   static const int pgplot[16][3] = {{0, 0, 0},    {100, 100, 100}, {100, 0, 0},  {0, 100, 0},
@@ -116,7 +117,7 @@ Palette Tek4100Decoder::defaultColorMap(int entries, Tek4125PowerUpMap which) {
   return map;
 }
 
-Tek4100Decoder::Tek4100Decoder(const Tek4125Profile& profile)
+Tek4125Decoder::Tek4125Decoder(const Tek4125Profile& profile)
     : profile_(profile), mask_(0), bitsPerPixel_(profile.planes) {
   profile_.validate();
   mask_ = (1 << (profile_.surfacePlanes > 0 ? profile_.surfacePlanes : profile_.planes)) - 1;
@@ -126,12 +127,12 @@ Tek4100Decoder::Tek4100Decoder(const Tek4125Profile& profile)
   vy1_ = profile_.height - 1;
 }
 
-void Tek4100Decoder::feed(std::span<const std::uint8_t> bytes) {
+void Tek4125Decoder::feed(std::span<const std::uint8_t> bytes) {
   for (std::uint8_t c : bytes) feedByte(c);
   report_.bytes += bytes.size();
 }
 
-void Tek4100Decoder::finish() {
+void Tek4125Decoder::finish() {
   if (state_ == State::Params) abandonCommand();
   else if (state_ == State::ParamsEsc) {  // the command ends, the ESC is cut short
     abandonCommand();
@@ -145,9 +146,9 @@ void Tek4100Decoder::finish() {
   state_ = State::Ground;
 }
 
-void Tek4100Decoder::malformed() { ++report_.malformed; }
+void Tek4125Decoder::malformed() { ++report_.malformed; }
 
-void Tek4100Decoder::feedByte(std::uint8_t c) {
+void Tek4125Decoder::feedByte(std::uint8_t c) {
   if (c == kDel && ignoreDel_) return;  // KI1: DEL is padding, ESC ? stands for it
   if (c == kEsc) {
     if (state_ == State::Params) {
@@ -173,10 +174,10 @@ void Tek4100Decoder::feedByte(std::uint8_t c) {
       return;
     case State::PercentBang: {
       if (c < 0x20) return;
-      const tek::ReadStatus s = int_.feed(c);
-      if (s == tek::ReadStatus::More) return;
+      const tek4125::ReadStatus s = int_.feed(c);
+      if (s == tek4125::ReadStatus::More) return;
       state_ = State::Ground;
-      if (s == tek::ReadStatus::Bad) return malformed();
+      if (s == tek4125::ReadStatus::Bad) return malformed();
       const int mode = int_.value();
       if (mode == 0 || mode == 1) {
         tekMode_ = mode == 0;
@@ -215,7 +216,7 @@ void Tek4100Decoder::feedByte(std::uint8_t c) {
   }
 }
 
-void Tek4100Decoder::ground(std::uint8_t c) {
+void Tek4125Decoder::ground(std::uint8_t c) {
   if (!tekMode_) return;  // ANSI mode: text for the dialog area, not graphics
   if (c == kGS) {
     graphMode_ = true;
@@ -229,8 +230,8 @@ void Tek4100Decoder::ground(std::uint8_t c) {
     return;
   }
   if (!graphMode_ || c < 0x20) return;  // alpha text is not drawn; other controls ignored
-  const tek::ReadStatus s = xyReader_.feed(c, xy_);
-  if (s != tek::ReadStatus::Done) return;
+  const tek4125::ReadStatus s = xyReader_.feed(c, xy_);
+  if (s != tek4125::ReadStatus::Done) return;
   xyReader_.reset();
   if (darkVector_) darkVector_ = false;
   else line(penX_, penY_, xy_.x(), xy_.y(), lineIndex_);
@@ -238,7 +239,7 @@ void Tek4100Decoder::ground(std::uint8_t c) {
   penY_ = xy_.y();
 }
 
-void Tek4100Decoder::escape(std::uint8_t c) {
+void Tek4125Decoder::escape(std::uint8_t c) {
   if (c == '?') {  // a DEL outside a command (a vector's Lo-Y or Extra)
     state_ = State::Ground;
     return ground(kDel);
@@ -252,7 +253,8 @@ void Tek4100Decoder::escape(std::uint8_t c) {
     return;
   }
   if (c == kFF) {  // page clear, back to alpha mode
-    std::fill(screen_.pixels.begin(), screen_.pixels.end(), PaletteIndex{0});
+    if (chargePixelWork(report_, screen_.pixels.size()))
+      std::fill(screen_.pixels.begin(), screen_.pixels.end(), PaletteIndex{0});
     graphMode_ = false;
     ++report_.commands;
     state_ = State::Ground;
@@ -268,7 +270,7 @@ void Tek4100Decoder::escape(std::uint8_t c) {
   state_ = State::SkipToEsc;
 }
 
-void Tek4100Decoder::startCommand(const Spec& spec) {
+void Tek4125Decoder::startCommand(const Spec& spec) {
   spec_ = &spec;
   paramIndex_ = 0;
   ints_.clear();
@@ -280,11 +282,11 @@ void Tek4100Decoder::startCommand(const Spec& spec) {
   if (spec.params.empty()) execute();
 }
 
-bool Tek4100Decoder::paramInProgress() const {
+bool Tek4125Decoder::paramInProgress() const {
   return int_.started() || xyReader_.started() || remaining_ >= 0;
 }
 
-void Tek4100Decoder::abandonCommand() {
+void Tek4125Decoder::abandonCommand() {
   if (paramIndex_ >= spec_->required && !paramInProgress()) {
     execute();
   } else {
@@ -293,14 +295,14 @@ void Tek4100Decoder::abandonCommand() {
   }
 }
 
-void Tek4100Decoder::nextParameter() {
+void Tek4125Decoder::nextParameter() {
   int_.reset();
   xyReader_.reset();
   remaining_ = -1;
   if (++paramIndex_ == spec_->params.size()) execute();
 }
 
-void Tek4100Decoder::parameter(std::uint8_t c) {
+void Tek4125Decoder::parameter(std::uint8_t c) {
   const Param p = spec_->params[paramIndex_];
   const bool inBody = remaining_ >= 0;
   if (p == Param::String && inBody) {  // string characters are taken raw
@@ -314,20 +316,20 @@ void Tek4100Decoder::parameter(std::uint8_t c) {
     return;
   }
   if (p == Param::Xy) {
-    const tek::ReadStatus s = xyReader_.feed(c, xy_);
-    if (s == tek::ReadStatus::Done) {
+    const tek4125::ReadStatus s = xyReader_.feed(c, xy_);
+    if (s == tek4125::ReadStatus::Done) {
       xys_.push_back(xy_.x());
       xys_.push_back(xy_.y());
       nextParameter();
-    } else if (s == tek::ReadStatus::Bad) {
+    } else if (s == tek4125::ReadStatus::Bad) {
       malformed();
       state_ = State::SkipToEsc;
     }
     return;
   }
-  const tek::ReadStatus s = int_.feed(c);
-  if (s == tek::ReadStatus::More) return;
-  if (s == tek::ReadStatus::Bad) {
+  const tek4125::ReadStatus s = int_.feed(c);
+  if (s == tek4125::ReadStatus::More) return;
+  if (s == tek4125::ReadStatus::Bad) {
     malformed();
     state_ = State::SkipToEsc;
     return;
@@ -361,12 +363,12 @@ void Tek4100Decoder::parameter(std::uint8_t c) {
   remaining_ = v;
 }
 
-int Tek4100Decoder::pixelX(int x) const { return x * profile_.width / 4096; }
+int Tek4125Decoder::pixelX(int x) const { return x * profile_.width / 4096; }
 // The same scale vertically, so terminal space keeps its aspect ratio; y
 // beyond the screen's top (above 3276 on a 1280x1024 screen) is clipped.
-int Tek4100Decoder::pixelY(int y) const { return y * profile_.width / 4096; }
+int Tek4125Decoder::pixelY(int y) const { return y * profile_.width / 4096; }
 
-void Tek4100Decoder::plot(int px, int py, int index) {
+void Tek4125Decoder::plot(int px, int py, int index) {
   PaletteIndex* p = devices::pixelAt(screen_, px, py);
   if (p == nullptr) return;
   const int v = index & mask_;
@@ -374,27 +376,30 @@ void Tek4100Decoder::plot(int px, int py, int index) {
 }
 
 // Vectors overwrite: the ALU mode belongs to pixel operations.
-void Tek4100Decoder::line(int x0, int y0, int x1, int y1, int index) {
-  devices::drawLine(screen_, pixelX(x0), pixelY(y0), pixelX(x1), pixelY(y1), static_cast<PaletteIndex>(index & mask_));
+void Tek4125Decoder::line(int x0, int y0, int x1, int y1, int index) {
+  const int px0 = pixelX(x0), py0 = pixelY(y0), px1 = pixelX(x1), py1 = pixelY(y1);
+  if (!chargePixelWork(report_, devices::lineWork(screen_, px0, py0, px1, py1))) return;
+  devices::drawLine(screen_, px0, py0, px1, py1, static_cast<PaletteIndex>(index & mask_));
 }
 
 // Patterns above 0 are drawn solid in the line index (no pattern bitmaps
 // are emulated); the fill uses the same scale as vectors.
-void Tek4100Decoder::fillPanel() {
+void Tek4125Decoder::fillPanel() {
   panelOpen_ = false;
   const std::size_t n = panel_.size() / 2;
   const int index = fillPattern_ <= 0 ? -fillPattern_ : lineIndex_;
   const double scale = profile_.width / 4096.0;
   std::vector<double> points(panel_.size());
   for (std::size_t i = 0; i < panel_.size(); ++i) points[i] = panel_[i] * scale;
-  devices::fillPolygon(screen_, points, static_cast<PaletteIndex>(index & mask_));
+  if (chargePixelWork(report_, devices::fillPolygonWork(screen_, points)))
+    devices::fillPolygon(screen_, points, static_cast<PaletteIndex>(index & mask_));
   if (panelBoundary_ && n >= 2)
     for (std::size_t i = 0, j = n - 1; i < n; j = i++)
       line(panel_[2 * j], panel_[2 * j + 1], panel_[2 * i], panel_[2 * i + 1], lineIndex_);
   panel_.clear();
 }
 
-void Tek4100Decoder::rasterChar(std::uint8_t c) {
+void Tek4125Decoder::rasterChar(std::uint8_t c) {
   if (c > 0x5F) return malformed();  // not a 6-bit group character
   rasterBits_ = (rasterBits_ << 6 | (c - 0x20u)) & 0xFFFu;  // at most 8 + 6 - 1 bits are ever held
   rasterHeld_ += 6;
@@ -412,7 +417,7 @@ void Tek4100Decoder::rasterChar(std::uint8_t c) {
 // for RP; the RAL GKS driver's RL relies on it, sending a whole raster after
 // one RS). Work is bounded by the viewport: once the beam is below it,
 // nothing more can be drawn.
-void Tek4100Decoder::writeAtBeam(int index, long count) {
+void Tek4125Decoder::writeAtBeam(int index, long count) {
   while (count > 0 && beamY_ >= vy0_) {
     if (beamX_ > vx1_) {
       beamX_ = vx0_;
@@ -430,7 +435,7 @@ void Tek4100Decoder::writeAtBeam(int index, long count) {
 
 // ints_: count, run codes. A run code is length * 2^bits + index, bits as
 // the last RU set (RAL GKS driver, GK4TRO).
-void Tek4100Decoder::runLengthWrite() {
+void Tek4125Decoder::runLengthWrite() {
   const int bits = bitsPerPixel_;
   for (std::size_t i = 1; i < ints_.size(); ++i) {
     const int code = ints_[i];
@@ -442,7 +447,7 @@ void Tek4100Decoder::runLengthWrite() {
   }
 }
 
-void Tek4100Decoder::setColor(int index, int c1, int c2, int c3) {
+void Tek4125Decoder::setColor(int index, int c1, int c2, int c3) {
   if (index < 0 || index >= profile_.colorMapSize()) return malformed();
   Rgb8 rgb;
   if (colorMode_ == 3) rgb = hlsToRgb(c1, c2, c3);
@@ -451,7 +456,7 @@ void Tek4100Decoder::setColor(int index, int c1, int c2, int c3) {
   screen_.colormap[static_cast<std::size_t>(index)] = rgb;
 }
 
-void Tek4100Decoder::execute() {
+void Tek4125Decoder::execute() {
   state_ = State::Ground;
   ++report_.commands;
   auto xy = [&](std::size_t i) { return i * 2 + 1 < xys_.size() ? xys_[i * 2] : 0; };
@@ -506,8 +511,19 @@ void Tek4100Decoder::execute() {
       const int x1 = std::min(std::max(xy(0), xy(1)) + ox, profile_.width - 1);
       const int y0 = std::max(std::min(xyY(0), xyY(1)) + oy, 0);
       const int y1 = std::min(std::max(xyY(0), xyY(1)) + oy, profile_.height - 1);
-      for (int y = y0; y <= y1; ++y)
-        for (int x = x0; x <= x1; ++x) plot(x, y, intAt(0, 0));
+      if (x0 > x1 || y0 > y1) break;
+      // Row by row, as plot() would set each pixel (mask, then XOR or copy):
+      // a fill costs what copying its rows costs.
+      const std::size_t width = static_cast<std::size_t>(x1 - x0 + 1);
+      if (!chargePixelWork(report_, width * static_cast<std::size_t>(y1 - y0 + 1))) break;
+      const auto value = static_cast<PaletteIndex>(intAt(0, 0) & mask_);
+      for (int y = y0; y <= y1; ++y) {
+        PaletteIndex* row = devices::pixelAt(screen_, x0, y);
+        if (alu_ == 7)
+          for (std::size_t i = 0; i < width; ++i) row[i] = static_cast<PaletteIndex>(row[i] ^ value);
+        else
+          std::fill_n(row, width, value);
+      }
       break;
     }
     case Action::LF:
@@ -542,8 +558,8 @@ void Tek4100Decoder::execute() {
   }
 }
 
-std::unique_ptr<Tek4100Decoder> makeTek4100Decoder(const Tek4125Profile& profile) {
-  return std::make_unique<Tek4100Decoder>(profile);
+std::unique_ptr<Tek4125Decoder> makeTek4125Decoder(const Tek4125Profile& profile) {
+  return std::make_unique<Tek4125Decoder>(profile);
 }
 
-}  // namespace lattice
+}  // namespace lattice::tek4125

@@ -1,6 +1,6 @@
-#include "devices/tek4125/tek_params.hpp"
+#include "devices/tek4125/tek4125_params.hpp"
 
-namespace lattice::tek {
+namespace lattice::tek4125 {
 
 ReadStatus IntReader::feed(std::uint8_t c) {
   if (c >= 0x40 && c <= 0x7F) {
@@ -40,4 +40,4 @@ ReadStatus XyReader::feed(std::uint8_t c, XyRegisters& regs) {
   return ReadStatus::Bad;
 }
 
-}  // namespace lattice::tek
+}  // namespace lattice::tek4125

@@ -1,4 +1,4 @@
-#include "devices/tek4125/tek_encoding.hpp"
+#include "devices/tek4125/tek4125_encoding.hpp"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 
 #include "foundation/error.hpp"
 
-namespace lattice::tek {
+namespace lattice::tek4125 {
 
 void appendCommand(Bytes& out, std::string_view name) {
   out.push_back(kEsc);
@@ -110,4 +110,4 @@ int XyEncoder::length(int x, int y) const {
   return 1 + int(p.hiY) + int(p.extra) + int(p.loY) + int(p.hiX);
 }
 
-}  // namespace lattice::tek
+}  // namespace lattice::tek4125

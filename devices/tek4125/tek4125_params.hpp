@@ -5,7 +5,7 @@
 // and ESC (which abandons the command); readers see only 0x20..0x7F.
 #include <cstdint>
 
-namespace lattice::tek {
+namespace lattice::tek4125 {
 
 enum class ReadStatus { More, Done, Bad };
 
@@ -46,4 +46,4 @@ class XyReader {
   int pendingLow_ = -1;   // a 0x60..0x7F byte not yet known to be Lo-Y or Extra
 };
 
-}  // namespace lattice::tek
+}  // namespace lattice::tek4125
