@@ -2,8 +2,8 @@
 //
 // Method: libpng's low-level API reading from a FILE*, so the file is
 // streamed (never read whole first). The 8-byte signature is checked by us,
-// then png_read_info parses IHDR (and the ancillary chunks before IDAT, whose
-// sizes libpng caps itself); the header's width x height is checked against
+// then png_read_info parses IHDR (ancillary chunks we do not use are skipped
+// unread, the rest capped at kMaxChunkBytes); the header's width x height is checked against
 // kMaxPngPixels before any pixel memory exists. Rows are then read one at a
 // time (an interlaced file needs the whole RGBA picture, still under the cap).
 //
@@ -47,9 +47,22 @@ void onError(png_structp png, png_const_charp message) {
 
 void onWarning(png_structp, png_const_charp) {}  // ancillary-chunk trouble: not ours to report
 
+// Ancillary chunks we never use (tRNS is kept: it becomes alpha). libpng
+// 1.6.39 allocates an eXIf chunk's declared length unchecked: a 173-byte file
+// asked for 1 GiB (found by fuzz/, kept in fuzz/regressions/png/). Chunks
+// marked "never" are skipped through a small buffer, nothing allocated.
+constexpr png_byte kSkippedChunks[] = "bKGD\0cHRM\0eXIf\0gAMA\0hIST\0iCCP\0iTXt\0oFFs\0pCAL\0pHYs\0sBIT\0sCAL\0"
+                                      "sPLT\0sRGB\0tEXt\0tIME\0zTXt";
+constexpr int kSkippedChunkCount = 17;
+// Every other chunk libpng buffers whole is capped at this (libpng's default
+// cap is its build's choice).
+constexpr png_alloc_size_t kMaxChunkBytes = 8u << 20;
+
 bool readHeader(PngReader& r, std::FILE* in) {
   if (setjmp(png_jmpbuf(r.png))) return false;
   png_init_io(r.png, in);
+  png_set_keep_unknown_chunks(r.png, PNG_HANDLE_CHUNK_NEVER, kSkippedChunks, kSkippedChunkCount);
+  png_set_chunk_malloc_max(r.png, kMaxChunkBytes);
   png_set_sig_bytes(r.png, 8);
   png_read_info(r.png, r.info);
   return true;
