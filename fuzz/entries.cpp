@@ -57,6 +57,15 @@ void probeLht(const lht::LhtFile& file) {
   }
 }
 
+// Removed when the process ends normally (libFuzzer's runs end with exit()).
+struct ScratchFile {
+  std::filesystem::path path;
+  ~ScratchFile() {
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+  }
+};
+
 // Each parse of one input: a located Error is the expected answer.
 template <class Read>
 void readAndProbe(Read read) {
@@ -84,13 +93,13 @@ void lhtReader(std::span<const std::uint8_t> bytes) {
   std::uint64_t sum = lht::fnv1a64(std::span<const std::uint8_t>(fixed).first(end));
   for (std::size_t i = 0; i < 8; ++i, sum >>= 8) fixed[end + i] = static_cast<std::uint8_t>(sum);
   readAndProbe([&] { return lht::parseLht(fixed, "fuzz.lht"); });
-  static const std::filesystem::path scratch =
-      std::filesystem::temp_directory_path() / ("lattice-fuzz-" + std::to_string(::getpid()) + ".lht");
+  static const ScratchFile scratch{std::filesystem::temp_directory_path() /
+                                   ("lattice-fuzz-" + std::to_string(::getpid()) + ".lht")};
   {
-    std::ofstream out(scratch, std::ios::binary | std::ios::trunc);
+    std::ofstream out(scratch.path, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(fixed.data()), static_cast<std::streamsize>(fixed.size()));
   }
-  readAndProbe([&] { return lht::readLhtFile(scratch); });
+  readAndProbe([&] { return lht::readLhtFile(scratch.path); });
 }
 
 void tek4125Decoder(std::span<const std::uint8_t> bytes) {
