@@ -29,7 +29,7 @@ struct RenderFlags {
   std::string apolloProfile = "dn660";
   std::string memoryBudget;  // as typed
   PipelineArgs pipeline;
-  SerialOptions serial;
+  io::SerialOptions serial;
 };
 
 void defineFlags(CLI::App& cmd, RenderFlags& f) {
