@@ -28,8 +28,8 @@ void runDiff(const DiffOptions& o) {
     throw lattice::Error(lattice::ErrorKind::Usage, fmt::format("--block {}: use a block size of 1 or more pixels", o.block));
   if (!(o.gain > 0) || !std::isfinite(o.gain))
     throw lattice::Error(lattice::ErrorKind::Usage, fmt::format("--gain {}: use a positive gain, e.g. --gain 8", o.gain));
-  const lattice::ImagePair images = lattice::readComparablePngs(o.a, o.b);
-  const lattice::ImageMetrics m = lattice::compareRgb(images.a, images.b, o.block);
+  const lattice::io::ImagePair images = lattice::io::readComparablePngs(o.a, o.b);
+  const lattice::io::ImageMetrics m = lattice::io::compareRgb(images.a, images.b, o.block);
   const double pixels = double(m.width) * double(m.height);
   const auto line = [](const std::string& label, const std::string& value) { fmt::print("{:<16}{}\n", label, value); };
   line("images", fmt::format("{} vs {} ({}x{})", o.a, o.b, m.width, m.height));
@@ -42,7 +42,7 @@ void runDiff(const DiffOptions& o) {
        fmt::format("worst mean |diff| {:.2f} at ({}, {}), mean {:.3f}", m.worstBlockMean, m.worstBlockX,
                    m.worstBlockY, m.meanBlockMean));
   if (!o.output.empty()) {
-    lattice::writePng(o.output, lattice::amplifiedDifference(images.a, images.b, o.gain));
+    lattice::io::writePng(o.output, lattice::io::amplifiedDifference(images.a, images.b, o.gain));
     line("difference", fmt::format("{} (|A - B| x {:g})", o.output, o.gain));
   }
 }

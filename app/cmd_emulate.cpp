@@ -44,7 +44,7 @@ void runEmulate(const EmulateOptions& o) {
     throw;
   }
   if (in != stdin) std::fclose(in);
-  lattice::writePng(o.output, decoder->image());
+  lattice::io::writePng(o.output, decoder->image());
   const lattice::DecodeReport& report = decoder->report();
   if (o.report) fmt::print("{}", report.summary());
   if (report.unknownCommands + report.malformed > 0) {

@@ -34,25 +34,25 @@ std::string jsonString(const std::string& text) {
   return out + "\"";
 }
 
-std::string_view kindName(lattice::SerialPortInfo::Kind kind) {
+std::string_view kindName(lattice::io::SerialPortInfo::Kind kind) {
   switch (kind) {
-    case lattice::SerialPortInfo::Kind::UsbSerial:
+    case lattice::io::SerialPortInfo::Kind::UsbSerial:
       return "usb";
-    case lattice::SerialPortInfo::Kind::Uart:
+    case lattice::io::SerialPortInfo::Kind::Uart:
       return "uart";
-    case lattice::SerialPortInfo::Kind::Other:
+    case lattice::io::SerialPortInfo::Kind::Other:
       break;
   }
   return "other";
 }
 
-void printJson(const std::vector<lattice::SerialPortInfo>& ports) {
+void printJson(const std::vector<lattice::io::SerialPortInfo>& ports) {
   fmt::print("[");
   for (std::size_t i = 0; i < ports.size(); ++i) {
     const auto& p = ports[i];
     fmt::print("{}\n  {{\"path\": {}, \"name\": {}, \"kind\": \"{}\", \"driver\": {}", i == 0 ? "" : ",",
                jsonString(p.devicePath), jsonString(p.name), kindName(p.kind), jsonString(p.driver));
-    if (p.kind == lattice::SerialPortInfo::Kind::UsbSerial)
+    if (p.kind == lattice::io::SerialPortInfo::Kind::UsbSerial)
       fmt::print(", \"vendor_id\": {}, \"product_id\": {}, \"manufacturer\": {}, \"product\": {}, \"serial\": {}",
                  jsonString(p.vendorId), jsonString(p.productId), jsonString(p.manufacturer), jsonString(p.product),
                  jsonString(p.serial));
@@ -62,19 +62,19 @@ void printJson(const std::vector<lattice::SerialPortInfo>& ports) {
 }
 
 void runPorts(const PortsArgs& args) {
-  std::vector<lattice::SerialPortInfo> ports;
+  std::vector<lattice::io::SerialPortInfo> ports;
   if (args.wait) {
-    fmt::print(stderr, "waiting for a USB-serial adapter ({}){}...\n", lattice::usbWaitMechanism(),
+    fmt::print(stderr, "waiting for a USB-serial adapter ({}){}...\n", lattice::io::usbWaitMechanism(),
                args.timeout > 0 ? fmt::format(", up to {:g} s", args.timeout) : std::string());
-    lattice::UsbWaitOptions wait;
+    lattice::io::UsbWaitOptions wait;
     wait.timeoutSeconds = args.timeout;
-    if (lattice::waitForUsbSerialPorts(wait).empty())
+    if (lattice::io::waitForUsbSerialPorts(wait).empty())
       throw lattice::Error(lattice::ErrorKind::Serial,
                            fmt::format("no USB-serial adapter appeared within {:g} s; check the cable, and `dmesg` "
                                        "for the adapter's driver binding",
                                        args.timeout));
   }
-  ports = lattice::listSerialPorts();
+  ports = lattice::io::listSerialPorts();
   if (args.json) {
     printJson(ports);
     return;

@@ -31,11 +31,11 @@ void runQuantize(const QuantizeArgs& args, const CLI::App& cmd) {
     throw lattice::Error(lattice::ErrorKind::Output,
                          fmt::format("{}: is a directory; give -o a file name such as {}/out.png", args.output,
                                      args.output));
-  lattice::RgbImage image = lattice::readPng(args.input);  // Error(Input) naming the file
+  lattice::RgbImage image = lattice::io::readPng(args.input);  // Error(Input) naming the file
   lattice::RgbImageSource source(image);
   lattice::IndexedImageSink sink(args.pipeline.colors);
   lattice::quantize::PipelineReport report = lattice::quantize::runPipeline(source, sink, options);
-  lattice::writePng(output, sink.image());  // atomic; Error(Output) naming the file
+  lattice::io::writePng(output, sink.image());  // atomic; Error(Output) naming the file
   if (args.verbose)
     fmt::print("{}: {}x{}, {} distinct 18-bit colours -> {} palette entries ({} mode, {} rows rendered, {} KiB of "
                "pipeline buffers)\n",

@@ -29,7 +29,7 @@ struct RenderFlags {
   std::string apolloProfile = "dn660";
   std::string memoryBudget;  // as typed
   PipelineArgs pipeline;
-  SerialOptions serial;
+  io::SerialOptions serial;
 };
 
 void defineFlags(CLI::App& cmd, RenderFlags& f) {
@@ -53,9 +53,7 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
       ->check(CLI::Range(1, 16384));
   cmd.add_option("--height", j.height, "Image height in pixels (default: the scene's, fitted to the device)")
       ->check(CLI::Range(1, 16384));
-  cmd.add_option("--threads", j.threads,
-                 "Worker threads for rendering and rasterizing lattices (default: all cores); the image does not "
-                 "depend on it")
+  cmd.add_option("--threads", j.threads, "Threads for rendering and rasterizing (default: all cores); same image")
       ->check(CLI::Range(1, 256));
   cmd.add_option("--arith", j.arithmetic,
                  fmt::format("Arithmetic of the whole per-pixel path: {} (fixed: Q31.32 integers, no FPU; "
@@ -63,18 +61,15 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
                              arithmeticNames()))
       ->check([](const std::string& name) { return isArithmeticName(name) ? "" : "choose " + arithmeticNames(); })
       ->capture_default_str();
-  cmd.add_flag("--full", j.fullRayTrace,
-               "Full ray trace: replace every lattice by its exact CSG object (the thesis's reference column)");
-  cmd.add_flag("--no-lattice-shadows", f.noLatticeShadows,
-               "Lattices cast no shadows, as particles would not (thesis plate 3; plate 4 is the default)");
+  cmd.add_flag("--full", j.fullRayTrace, "Full ray trace: every lattice replaced by its exact CSG object");
+  cmd.add_flag("--no-lattice-shadows", f.noLatticeShadows, "Lattices cast no shadows, as particles (thesis plate 3)");
   cmd.add_option("--lht-precision", f.lhtPrecision,
                  fmt::format("LHT entry precision of every lattice, overriding the scene's `precision`: {} "
                              "(docs/lattices.md, \"Entry precision\")",
                              lht::lhtPrecisionChoices()));
   cmd.add_option("--memory-budget", f.memoryBudget,
-                 "Keep peak resident memory within SIZE (e.g. 8MiB, 8192K, 8388608): chooses the quantizer's mode "
-                 "and the entry form of lattices rasterized now to fit, or exits 8 saying why it cannot "
-                 "(docs/memory.md)");
+                 "Keep peak resident memory within SIZE (8MiB, 8192K, 8388608): picks the quantizer mode and the "
+                 "entry form of lattices rasterized now, or exits 8 saying why not (docs/memory.md)");
   addPipelineOptions(&cmd, f.pipeline);
   addSerialOptions(&cmd, f.serial, /*portRequired=*/false);
 }

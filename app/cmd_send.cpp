@@ -19,7 +19,7 @@ namespace {
 
 struct SendArgs {
   std::string stream;
-  lattice::SerialOptions serial;
+  lattice::io::SerialOptions serial;
   std::uint64_t resume = 0;
 };
 
@@ -30,21 +30,21 @@ void runSend(const SendArgs& args) {
   if (args.resume > bytes.size())
     throw lattice::Error(lattice::ErrorKind::Usage,
                          fmt::format("--resume {}: past the end of {} ({} bytes)", args.resume, args.stream, bytes.size()));
-  auto sink = lattice::openSerialSink(args.serial);
+  auto sink = lattice::io::openSerialSink(args.serial);
   lattice::Progress progress("send", bytes.size() > args.resume ? bytes.size() - args.resume : 0, "B");
   try {
-    auto result = lattice::sendStream(bytes, args.resume, *sink,
+    auto result = lattice::io::sendStream(bytes, args.resume, *sink,
                                       [&](std::uint64_t offset) { progress.set(offset - args.resume); });
     progress.finish();
     fmt::print(stderr, "sent {} bytes to {} in {:.1f} s ({:.0f} B/s)\n", result.bytesSent, sink->path(),
                result.seconds, result.seconds > 0 ? static_cast<double>(result.bytesSent) / result.seconds : 0.0);
-  } catch (const lattice::SerialFault& fault) {
+  } catch (const lattice::io::SerialFault& fault) {
     // Leave the bar where it stopped; the message follows on a line of its own.
     bool drawing = progress.enabled();
     progress.setEnabled(false);
     if (drawing) std::fputc('\n', stderr);
     fmt::print(stderr, "lattice: {} of {} bytes went out; to continue from there run:\n  {}\n",
-               fault.resumeOffset(), bytes.size(), lattice::resumeCommand(args.stream, args.serial, fault.resumeOffset()));
+               fault.resumeOffset(), bytes.size(), lattice::io::resumeCommand(args.stream, args.serial, fault.resumeOffset()));
     throw;
   }
 }

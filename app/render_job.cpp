@@ -67,7 +67,7 @@ void renderTruecolour(Renderer<T>& renderer, const RenderJob& job) {
     image = renderImage(renderer, &progress);
     progress.finish();
   }
-  writePng(job.picture, image);
+  io::writePng(job.picture, image);
 }
 
 // The transport the job names, and where it goes in words; none when only
@@ -77,16 +77,16 @@ std::unique_ptr<ByteSink> openTransport(const RenderJob& job, const devices::Dev
                                         int& replyFd) {
   replyFd = -1;
   if (job.port) {
-    SerialOptions serial = *job.port;
+    io::SerialOptions serial = *job.port;
     if (job.baudFromProfile && device.line) serial.baud = device.line->baud;
-    auto sink = openSerialSink(serial);
+    auto sink = io::openSerialSink(serial);
     where = serial.port;
     replyFd = sink->fd();
     return sink;
   }
   if (job.stream == "-") {
     where = "standard output";
-    return std::make_unique<StdoutSink>();
+    return std::make_unique<io::StdoutSink>();
   }
   if (!job.stream.empty()) {
     where = job.stream;
@@ -105,7 +105,7 @@ devices::DriverStats renderToDevice(Renderer<T>& renderer, const RenderJob& job,
   std::unique_ptr<ByteSink> transport = openTransport(job, device, where, replyFd);
   std::unique_ptr<StreamDecoder> emulator;
   if (!job.picture.empty()) emulator = device.makeEmulator();
-  TeeSink tee(transport.get(), [&emulator](std::span<const std::uint8_t> bytes) {
+  io::TeeSink tee(transport.get(), [&emulator](std::span<const std::uint8_t> bytes) {
     if (emulator) emulator->feed(bytes);
   });
   auto driver = device.makeDriver(tee);
@@ -121,7 +121,7 @@ devices::DriverStats renderToDevice(Renderer<T>& renderer, const RenderJob& job,
                device.title, stats.detail);
   if (emulator) {
     emulator->finish();
-    writePng(job.picture, emulator->image());
+    io::writePng(job.picture, emulator->image());
     const DecodeReport& report = emulator->report();
     if (report.unknownCommands + report.malformed > 0)
       throw Error(ErrorKind::Internal,

@@ -29,7 +29,7 @@ struct RenderJob {
   std::vector<std::string> settings;  // the device profile's key=value overrides
   std::string picture;                // PNG to write: truecolour, or the emulator's screen; empty: none
   std::string stream;                 // the device's bytes to a file, or "-" for standard output
-  std::optional<SerialOptions> port;  // ... or to a serial line
+  std::optional<io::SerialOptions> port;  // ... or to a serial line
   bool baudFromProfile = false;       // the port's baud is the device profile's
   int width = 0;                      // 0: the scene's, fitted to the device's screen
   int height = 0;

@@ -4,7 +4,7 @@
 
 namespace lattice::app {
 
-void addSerialOptions(CLI::App* cmd, SerialOptions& options, bool portRequired) {
+void addSerialOptions(CLI::App* cmd, io::SerialOptions& options, bool portRequired) {
   auto* port = cmd->add_option("--port", options.port,
                                "Serial port: a device such as /dev/ttyUSB0, or `auto` for the only USB-serial "
                                "adapter (`lattice ports` lists them)");
@@ -13,14 +13,14 @@ void addSerialOptions(CLI::App* cmd, SerialOptions& options, bool portRequired) 
       ->capture_default_str()
       ->check(CLI::Range(50, 4000000));
   cmd->add_option_function<std::string>(
-         "--flow", [&options](const std::string& text) { options.flow = parseFlowControl(text); },
+         "--flow", [&options](const std::string& text) { options.flow = io::parseFlowControl(text); },
          "Flow control: xonxoff (DC1/DC3, the Tektronix default), rtscts (hardware) or none [xonxoff]")
       ->check(CLI::IsMember({"xonxoff", "rtscts", "none"}));
   cmd->add_option("--data-bits", options.dataBits, "Data bits per character: 7 or 8")
       ->capture_default_str()
       ->check(CLI::IsMember({7, 8}));
   cmd->add_option_function<std::string>(
-         "--parity", [&options](const std::string& text) { options.parity = parseParity(text); },
+         "--parity", [&options](const std::string& text) { options.parity = io::parseParity(text); },
          "Parity: none, even or odd [none]")
       ->check(CLI::IsMember({"none", "even", "odd"}));
   cmd->add_option("--stop-bits", options.stopBits, "Stop bits: 1 or 2")

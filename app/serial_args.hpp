@@ -11,6 +11,6 @@
 namespace lattice::app {
 
 // portRequired: `send` needs a port; `render` takes --port as one choice of output.
-void addSerialOptions(CLI::App* cmd, SerialOptions& options, bool portRequired = true);
+void addSerialOptions(CLI::App* cmd, io::SerialOptions& options, bool portRequired = true);
 
 }  // namespace lattice::app

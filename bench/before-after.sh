@@ -3,11 +3,11 @@
 # for the "no slowdown" and "what this step bought" rows in the docs.
 #
 # Method: for each case, runs BEFORE and AFTER alternately (so load drifts hit
-# both alike), N times each, and reports each one's median of the renderer's
-# own time (the "N s" on its closing line: scene load, build and every pixel;
-# PNG writing excluded), the min-max, the ratio after/before of the medians,
-# and the load average at the start and the end. Outputs must be identical:
-# the script compares them and says so.
+# both alike), N times each, and reports each one's median CPU time (user +
+# system of the whole process, GNU time: on a shared machine it moves far less
+# with the load than the wall clock does), the min-max, the ratio after/before
+# of the medians, and the load average at the start and the end. Outputs must
+# be identical: the script compares them and says so.
 #   bench/before-after.sh BEFORE AFTER [--runs N] [--threads T] [--size WxH]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -36,7 +36,7 @@ cases=(
   "sphere-hole tek4125:$root/scenes/sphere-hole.toml --device tek4125 --stream $out/STREAM"
 )
 echo "# $(date -u +%F' '%H:%M) UTC, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), load $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "# ${size}, --threads $threads, $runs alternating runs each; seconds are the renderer's own"
+echo "# ${size}, --threads $threads, $runs alternating runs each; CPU seconds (user + system) of the whole process"
 printf '%-28s %18s %18s %8s %s\n' case before after ratio output
 for c in "${cases[@]}"; do
   name=${c%%:*}; args=${c#*:}
@@ -45,9 +45,9 @@ for c in "${cases[@]}"; do
     for side in before after; do
       bin=$before; [[ $side == after ]] && bin=$after
       # shellcheck disable=SC2086
-      line=$("$bin" render ${args//STREAM/$side.stream} --width "$w" --height "$h" --threads "$threads" --quiet \
-        -o "$out/$side.png" 2>&1 | tail -1)
-      t=$(sed -E 's/.*, ([0-9.]+) s, .*/\1/' <<<"$line")
+      /usr/bin/time -f '%U %S' -o "$out/time" "$bin" render ${args//STREAM/$side.stream} --width "$w" \
+        --height "$h" --threads "$threads" --quiet -o "$out/$side.png" 2>/dev/null
+      t=$(awk '{printf "%.2f", $1 + $2}' "$out/time")
       if [[ $side == before ]]; then tb+=("$t"); else ta+=("$t"); fi
     done
   done

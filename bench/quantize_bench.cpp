@@ -395,7 +395,7 @@ int main(int argc, char** argv) {
       return 0;
     } else {
       try {
-        images.emplace_back(std::filesystem::path(arg).filename().string(), lattice::readPng(arg));
+        images.emplace_back(std::filesystem::path(arg).filename().string(), lattice::io::readPng(arg));
       } catch (const std::exception& e) {
         fmt::print(stderr, "quantize_bench: {}\n", e.what());
         return 3;
@@ -418,7 +418,7 @@ int main(int argc, char** argv) {
   for (std::size_t index = 0; index < images.size(); ++index) {
     const auto& [name, image] = images[index];
     std::filesystem::path input = work / fmt::format("input_{}.png", index);
-    lattice::writePng(input, image);
+    lattice::io::writePng(input, image);
     ErrorSum floor = eighteenBitFloor(image);
     fmt::print("| {} {}x{} | - | 18-bit floor (6 bits/channel, no palette) | {:.1f} | {:.2f} | | | |\n", name,
                image.width, image.height, floor.mse(), floor.psnr());
@@ -432,7 +432,7 @@ int main(int argc, char** argv) {
             fmt::print("| {} | {} | pngquant {} | failed | | | | |\n", name, k, dither ? "--floyd=1" : "--nofs");
             continue;
           }
-          RgbImage quantized = lattice::readPng(out);
+          RgbImage quantized = lattice::io::readPng(out);
           r.error = compare(image, quantized);
           r.blurred = blurredCompare(image, quantized);
           printRow(name, k, dither ? "pngquant --speed 1 --floyd=1" : "pngquant --speed 1 --nofs", r);

@@ -53,7 +53,7 @@ std::pair<int, int> fitted(int w, int h, int deviceW, int deviceH) {
 
 std::uint64_t indexedPngBytes(const IndexedImage& image) {
   const auto path = std::filesystem::temp_directory_path() / fmt::format("tek4027-wire-{}.png", ::getpid());
-  writePng(path, image);
+  io::writePng(path, image);
   const auto bytes = std::filesystem::file_size(path);
   std::filesystem::remove(path);
   return bytes;

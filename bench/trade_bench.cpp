@@ -116,8 +116,8 @@ int run(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   if (args.size() != 2)
     throw Error(ErrorKind::Usage, "usage: trade_bench REF.png TEST.png  (prints: psnr_db max_error ssim)");
-  const RgbImage ref = lattice::readPng(args[0]);
-  const RgbImage test = lattice::readPng(args[1]);
+  const RgbImage ref = lattice::io::readPng(args[0]);
+  const RgbImage test = lattice::io::readPng(args[1]);
   if (test.width != ref.width || test.height != ref.height)
     throw Error(ErrorKind::Input, fmt::format("{} is {}x{} but the reference {} is {}x{}; render both at one size",
                                               args[1], test.width, test.height, args[0], ref.width, ref.height));

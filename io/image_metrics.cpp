@@ -10,7 +10,7 @@
 
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::io {
 
 namespace {
 
@@ -110,4 +110,4 @@ RgbImage amplifiedDifference(const RgbImage& a, const RgbImage& b, double gain) 
   return out;
 }
 
-}  // namespace lattice
+}  // namespace lattice::io

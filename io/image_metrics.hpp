@@ -8,7 +8,7 @@
 
 #include "io/png.hpp"
 
-namespace lattice {
+namespace lattice::io {
 
 struct ImageMetrics {
   int width = 0;
@@ -45,4 +45,4 @@ ImageMetrics compareRgbFiles(const std::filesystem::path& a, const std::filesyst
 // while identical pixels stay black.
 RgbImage amplifiedDifference(const RgbImage& a, const RgbImage& b, double gain);
 
-}  // namespace lattice
+}  // namespace lattice::io

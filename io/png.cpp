@@ -8,7 +8,7 @@
 #include "foundation/atomic_file.hpp"
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::io {
 namespace {
 
 void encodeAndWrite(const std::filesystem::path& path, png_image& image, const void* pixels,
@@ -61,4 +61,4 @@ void writePng(const std::filesystem::path& path, const IndexedImage& img) {
   encodeAndWrite(path, image, pixels.data(), cmap.data());
 }
 
-}  // namespace lattice
+}  // namespace lattice::io

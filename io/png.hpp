@@ -13,7 +13,7 @@
 #include "foundation/indexed_image.hpp"
 #include "foundation/rgb_image.hpp"
 
-namespace lattice {
+namespace lattice::io {
 
 void writePng(const std::filesystem::path& path, const RgbImage& image);
 // Writes a palette PNG (colour type 3) when the map has <= 256 entries.
@@ -32,4 +32,4 @@ RgbImage readPng(const std::filesystem::path& path);
 RgbImage readPng(std::FILE* stream, const std::string& name);
 RgbImage readPngBytes(std::span<const std::uint8_t> bytes, const std::string& name);
 
-}  // namespace lattice
+}  // namespace lattice::io

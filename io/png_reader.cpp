@@ -26,7 +26,7 @@
 #include "io/png.hpp"
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::io {
 namespace {
 
 struct PngReader {
@@ -170,4 +170,4 @@ RgbImage readPngBytes(std::span<const std::uint8_t> bytes, const std::string& na
   }
 }
 
-}  // namespace lattice
+}  // namespace lattice::io

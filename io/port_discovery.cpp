@@ -8,7 +8,7 @@
 
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::io {
 namespace fs = std::filesystem;
 namespace {
 
@@ -130,4 +130,4 @@ std::string chooseAutoPort(const std::vector<SerialPortInfo>& ports) {
                           usb.size(), list));
 }
 
-}  // namespace lattice
+}  // namespace lattice::io

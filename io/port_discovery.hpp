@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace lattice {
+namespace lattice::io {
 
 struct SerialPortInfo {
   enum class Kind { UsbSerial, Uart, Other };
@@ -38,4 +38,4 @@ std::vector<SerialPortInfo> usbSerialPorts(const std::vector<SerialPortInfo>& po
 // or several, Error(Serial) says so and lists what there is.
 std::string chooseAutoPort(const std::vector<SerialPortInfo>& ports);
 
-}  // namespace lattice
+}  // namespace lattice::io

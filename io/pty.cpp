@@ -11,7 +11,7 @@
 
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::io {
 
 PtyPair::PtyPair() {
   std::array<char, 128> name{};
@@ -45,4 +45,4 @@ void PtyPair::closeMaster() {
   master_ = -1;
 }
 
-}  // namespace lattice
+}  // namespace lattice::io

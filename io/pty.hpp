@@ -6,7 +6,7 @@
 // connect `lattice send` to an emulator without hardware.
 #include <string>
 
-namespace lattice {
+namespace lattice::io {
 
 class PtyPair {
  public:
@@ -31,4 +31,4 @@ class PtyPair {
   std::string slavePath_;
 };
 
-}  // namespace lattice
+}  // namespace lattice::io

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace lattice {
+namespace lattice::io {
 
 RateLimiter::RateLimiter(double bytesPerSecond, double burst, double nowSeconds)
     : rate_(bytesPerSecond), burst_(std::max(1.0, burst)), credit_(0.0), last_(nowSeconds) {}
@@ -30,4 +30,4 @@ double RateLimiter::secondsUntil(std::size_t bytes, double nowSeconds) {
   return credit_ >= wanted ? 0.0 : (wanted - credit_) / rate_;
 }
 
-}  // namespace lattice
+}  // namespace lattice::io

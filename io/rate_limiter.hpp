@@ -7,7 +7,7 @@
 // Time is passed in (seconds on any steady clock) so tests need no sleeping.
 #include <cstddef>
 
-namespace lattice {
+namespace lattice::io {
 
 class RateLimiter {
  public:
@@ -29,4 +29,4 @@ class RateLimiter {
   double last_;
 };
 
-}  // namespace lattice
+}  // namespace lattice::io

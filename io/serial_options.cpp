@@ -9,7 +9,7 @@
 #include "io/serial_sink.hpp"
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::io {
 
 void SerialOptions::validate() const {
   if (port.empty()) throw Error(ErrorKind::Usage, "--port: empty; give a device such as /dev/ttyUSB0, or auto");
@@ -84,4 +84,4 @@ std::unique_ptr<SerialSink> openSerialSink(const SerialOptions& options, const s
   return std::make_unique<SerialSink>(SerialPort(resolved.port), resolved);
 }
 
-}  // namespace lattice
+}  // namespace lattice::io

@@ -10,7 +10,7 @@
 
 #include "foundation/line_timing.hpp"
 
-namespace lattice {
+namespace lattice::io {
 
 enum class Parity { None, Even, Odd };
 enum class FlowControl { None, XonXoff, RtsCts };
@@ -47,4 +47,4 @@ std::unique_ptr<SerialSink> openSerialSink(const SerialOptions& options,
                                            const std::filesystem::path& sysfsRoot = "/sys",
                                            const std::filesystem::path& devRoot = "/dev");
 
-}  // namespace lattice
+}  // namespace lattice::io

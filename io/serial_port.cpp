@@ -20,7 +20,7 @@
 #include "io/serial_termios2.hpp"
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::io {
 namespace {
 
 struct BaudConstant {
@@ -250,4 +250,4 @@ void SerialPort::close() {
   fd_ = -1;
 }
 
-}  // namespace lattice
+}  // namespace lattice::io

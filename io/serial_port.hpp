@@ -13,7 +13,7 @@
 
 #include "io/serial_options.hpp"
 
-namespace lattice {
+namespace lattice::io {
 
 class SerialPort {
  public:
@@ -69,4 +69,4 @@ class SerialPort {
 // True for rates with a Bnnn constant (set with cfsetspeed); others need termios2.
 bool isStandardBaud(int baud);
 
-}  // namespace lattice
+}  // namespace lattice::io

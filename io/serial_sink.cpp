@@ -6,7 +6,7 @@
 #include <cmath>
 #include <thread>
 
-namespace lattice {
+namespace lattice::io {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -125,4 +125,4 @@ void SerialSink::close() {
   closed_ = true;
 }
 
-}  // namespace lattice
+}  // namespace lattice::io

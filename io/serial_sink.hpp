@@ -20,7 +20,7 @@
 #include "io/serial_port.hpp"
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::io {
 
 // ErrorKind::Stalled or HangUp, with the counts a caller needs to resume.
 // Offsets include the sink's base offset (the --resume the stream started at).
@@ -75,4 +75,4 @@ class SerialSink final : public ByteSink {
   std::chrono::steady_clock::time_point epoch_ = std::chrono::steady_clock::now();
 };
 
-}  // namespace lattice
+}  // namespace lattice::io

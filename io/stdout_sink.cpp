@@ -8,7 +8,7 @@
 
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::io {
 
 void StdoutSink::write(std::span<const std::uint8_t> bytes) {
   const std::uint8_t* p = bytes.data();
@@ -28,4 +28,4 @@ void StdoutSink::write(std::span<const std::uint8_t> bytes) {
 
 void StdoutSink::flush() {}
 
-}  // namespace lattice
+}  // namespace lattice::io

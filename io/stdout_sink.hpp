@@ -3,7 +3,7 @@
 // terminal emulator or `tee`.
 #include "foundation/byte_sink.hpp"
 
-namespace lattice {
+namespace lattice::io {
 
 class StdoutSink final : public ByteSink {
  public:
@@ -17,4 +17,4 @@ class StdoutSink final : public ByteSink {
   std::uint64_t written_ = 0;
 };
 
-}  // namespace lattice
+}  // namespace lattice::io

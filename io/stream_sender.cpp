@@ -7,7 +7,7 @@
 
 #include "foundation/error.hpp"
 
-namespace lattice {
+namespace lattice::io {
 namespace {
 
 // Small enough that progress moves often at 9600 baud (~1 s per KB), large
@@ -54,4 +54,4 @@ std::string resumeCommand(const std::string& file, const SerialOptions& options,
   return fmt::format("lattice send {} {} --resume {}", shellQuote(file), serialFlags(quoted), offset);
 }
 
-}  // namespace lattice
+}  // namespace lattice::io

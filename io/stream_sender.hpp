@@ -10,7 +10,7 @@
 #include "io/serial_options.hpp"
 #include "io/serial_sink.hpp"
 
-namespace lattice {
+namespace lattice::io {
 
 struct SendResult {
   std::uint64_t bytesSent = 0;  // this run, after the resume offset
@@ -29,4 +29,4 @@ SendResult sendStream(std::span<const std::uint8_t> stream, std::uint64_t resume
 // "lattice send FILE --port ... --resume N", quoting FILE for a POSIX shell.
 std::string resumeCommand(const std::string& file, const SerialOptions& options, std::uint64_t offset);
 
-}  // namespace lattice
+}  // namespace lattice::io

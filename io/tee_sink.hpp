@@ -7,7 +7,7 @@
 
 #include "foundation/byte_sink.hpp"
 
-namespace lattice {
+namespace lattice::io {
 
 class TeeSink final : public ByteSink {
  public:
@@ -35,4 +35,4 @@ class TeeSink final : public ByteSink {
   std::uint64_t written_ = 0;
 };
 
-}  // namespace lattice
+}  // namespace lattice::io

@@ -10,7 +10,7 @@
 #include <libusb.h>
 #endif
 
-namespace lattice {
+namespace lattice::io {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -120,4 +120,4 @@ std::vector<SerialPortInfo> waitForUsbSerialPorts(const UsbWaitOptions& options)
   }
 }
 
-}  // namespace lattice
+}  // namespace lattice::io

@@ -10,7 +10,7 @@
 
 #include "io/port_discovery.hpp"
 
-namespace lattice {
+namespace lattice::io {
 
 struct UsbWaitOptions {
   double timeoutSeconds = 0.0;  // <= 0: wait for ever
@@ -28,4 +28,4 @@ std::vector<SerialPortInfo> waitForUsbSerialPorts(const UsbWaitOptions& options)
 // events" or "polling sysfs" (with the reason libusb is not used).
 std::string usbWaitMechanism(bool useLibusb = true);
 
-}  // namespace lattice
+}  // namespace lattice::io

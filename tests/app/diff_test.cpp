@@ -31,7 +31,7 @@ lattice::RgbImage gradient(int w, int h) {
 
 TEST_CASE("identical images have no error and infinite PSNR", "[diff]") {
   const auto a = gradient(10, 7);
-  const lattice::ImageMetrics m = lattice::compareRgb(a, a, 4);
+  const lattice::io::ImageMetrics m = lattice::io::compareRgb(a, a, 4);
   CHECK(m.rms == 0.0);
   CHECK(std::isinf(m.psnr));
   CHECK(m.maxChannelError == 0);
@@ -44,7 +44,7 @@ TEST_CASE("one changed channel gives the hand-computed figures", "[diff]") {
   const auto a = gradient(10, 10);
   auto b = a;
   b.pixel(9, 9)[0] = static_cast<std::uint8_t>(b.pixel(9, 9)[0] - 30);
-  const lattice::ImageMetrics m = lattice::compareRgb(a, b, 4);
+  const lattice::io::ImageMetrics m = lattice::io::compareRgb(a, b, 4);
   // 300 samples, one off by 30: MSE = 900 / 300 = 3.
   CHECK(m.rms == Approx(std::sqrt(3.0)));
   CHECK(m.psnr == Approx(20.0 * std::log10(255.0 / std::sqrt(3.0))));
@@ -65,7 +65,7 @@ TEST_CASE("the worst block is found where the error is concentrated", "[diff]") 
   // ...and a local one in the block at (8, 0).
   for (int y = 0; y < 8; ++y)
     for (int x = 8; x < 16; ++x) b.pixel(x, y)[2] = 200;  // was 100
-  const lattice::ImageMetrics m = lattice::compareRgb(a, b, 8);
+  const lattice::io::ImageMetrics m = lattice::io::compareRgb(a, b, 8);
   CHECK(m.worstBlockX == 8);
   CHECK(m.worstBlockY == 0);
   CHECK(m.worstBlockMean == Approx((2.0 + 100.0) / 3.0));
@@ -77,16 +77,16 @@ TEST_CASE("the worst block is found where the error is concentrated", "[diff]") 
 TEST_CASE("images of different sizes or a bad block size are refused", "[diff]") {
   const auto a = gradient(10, 10);
   const auto b = gradient(10, 9);
-  CHECK_THROWS_AS(lattice::compareRgb(a, b), lattice::Error);
+  CHECK_THROWS_AS(lattice::io::compareRgb(a, b), lattice::Error);
   try {
-    lattice::compareRgb(a, b);
+    lattice::io::compareRgb(a, b);
   } catch (const lattice::Error& e) {
     CHECK(e.kind() == lattice::ErrorKind::Input);
     CHECK_THAT(e.what(), Catch::Contains("10x10") && Catch::Contains("10x9"));
   }
-  CHECK_THROWS_AS(lattice::compareRgb(a, a, 0), lattice::Error);
-  CHECK_THROWS_AS(lattice::amplifiedDifference(a, b, 8.0), lattice::Error);
-  CHECK_THROWS_AS(lattice::amplifiedDifference(a, a, 0.0), lattice::Error);
+  CHECK_THROWS_AS(lattice::io::compareRgb(a, a, 0), lattice::Error);
+  CHECK_THROWS_AS(lattice::io::amplifiedDifference(a, b, 8.0), lattice::Error);
+  CHECK_THROWS_AS(lattice::io::amplifiedDifference(a, a, 0.0), lattice::Error);
 }
 
 TEST_CASE("the difference image amplifies and clamps", "[diff]") {
@@ -94,7 +94,7 @@ TEST_CASE("the difference image amplifies and clamps", "[diff]") {
   auto b = a;
   b.pixel(1, 1)[0] = static_cast<std::uint8_t>(a.pixel(1, 1)[0] + 3);
   b.pixel(2, 2)[2] = 0;  // off by 100
-  const lattice::RgbImage d = lattice::amplifiedDifference(a, b, 8.0);
+  const lattice::RgbImage d = lattice::io::amplifiedDifference(a, b, 8.0);
   REQUIRE(d.width == 4);
   REQUIRE(d.height == 4);
   CHECK(int{d.pixel(1, 1)[0]} == 24);
@@ -112,24 +112,24 @@ TEST_CASE("comparing files names the file that cannot be read", "[diff]") {
   auto a = gradient(6, 6);
   auto b = a;
   b.pixel(0, 0)[1] = 255;
-  lattice::writePng(good, a);
-  lattice::writePng(other, b);
-  lattice::writePng(small, gradient(5, 6));
+  lattice::io::writePng(good, a);
+  lattice::io::writePng(other, b);
+  lattice::io::writePng(small, gradient(5, 6));
   const std::string junk = "not a png at all";
   lattice::writeFileAtomically(bad, std::span(reinterpret_cast<const std::uint8_t*>(junk.data()), junk.size()));
 
-  const lattice::ImageMetrics m = lattice::compareRgbFiles(good, other, 8);
+  const lattice::io::ImageMetrics m = lattice::io::compareRgbFiles(good, other, 8);
   CHECK(m.differingPixels == 1);
   CHECK(m.maxChannelError == 255);
 
   try {
-    lattice::compareRgbFiles(good, bad);
+    lattice::io::compareRgbFiles(good, bad);
     FAIL("a file that is not a PNG was accepted");
   } catch (const lattice::Error& e) {
     CHECK_THAT(e.what(), Catch::Contains("bad.png"));
   }
   try {
-    lattice::compareRgbFiles(good, small);
+    lattice::io::compareRgbFiles(good, small);
     FAIL("images of different sizes were compared");
   } catch (const lattice::Error& e) {
     CHECK_THAT(e.what(), Catch::Contains("small.png") && Catch::Contains("good.png"));

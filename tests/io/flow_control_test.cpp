@@ -15,6 +15,7 @@
 #include "pty_peer.hpp"
 
 using namespace lattice;
+using namespace lattice::io;
 using lattice::testing::kXoff;
 using lattice::testing::kXon;
 using lattice::testing::PtyPeer;

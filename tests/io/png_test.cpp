@@ -19,6 +19,7 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::io;
 namespace fs = std::filesystem;
 
 namespace {

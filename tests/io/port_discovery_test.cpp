@@ -6,6 +6,7 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::io;
 using lattice::testing::FakeSysfs;
 
 namespace {

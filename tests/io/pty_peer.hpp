@@ -26,7 +26,7 @@ constexpr std::uint8_t kXoff = 0x13;  // DC3
 
 class PtyPeer {
  public:
-  explicit PtyPeer(PtyPair& pty) : pty_(pty) {
+  explicit PtyPeer(io::PtyPair& pty) : pty_(pty) {
     ::fcntl(pty_.masterFd(), F_SETFL, ::fcntl(pty_.masterFd(), F_GETFL) | O_NONBLOCK);
     // Packet mode: each read starts with a status byte, and the kernel
     // reports TIOCPKT_STOP / TIOCPKT_START when the slave's output is
@@ -137,7 +137,7 @@ class PtyPeer {
     }
   }
 
-  PtyPair& pty_;
+  io::PtyPair& pty_;
   std::thread reader_;
   std::atomic<bool> stop_{false};
   std::atomic<std::size_t> limit_{SIZE_MAX};

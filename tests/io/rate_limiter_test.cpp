@@ -2,7 +2,7 @@
 
 #include "io/rate_limiter.hpp"
 
-using lattice::RateLimiter;
+using lattice::io::RateLimiter;
 
 TEST_CASE("The pacer lets bytes out at its rate and no faster", "[serial][pace]") {
   RateLimiter pacer(1000.0, 20.0, 0.0);  // 1000 B/s, bursts of 20 B

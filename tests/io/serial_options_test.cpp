@@ -6,6 +6,7 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::io;
 
 TEST_CASE("Parity and flow control parse from their flag spellings", "[serial]") {
   CHECK(parseParity("even") == Parity::Even);

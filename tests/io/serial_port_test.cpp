@@ -14,6 +14,7 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::io;
 
 namespace {
 

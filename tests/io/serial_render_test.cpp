@@ -38,6 +38,7 @@
 #include "tests/support/golden.hpp"
 
 using namespace lattice;
+using namespace lattice::io;
 using namespace lattice::quantize;
 
 namespace {

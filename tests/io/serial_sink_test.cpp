@@ -11,6 +11,7 @@
 #include "pty_peer.hpp"
 
 using namespace lattice;
+using namespace lattice::io;
 using lattice::testing::PtyPeer;
 
 namespace {

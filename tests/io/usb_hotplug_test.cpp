@@ -9,6 +9,7 @@
 #include "io/usb_hotplug.hpp"
 
 using namespace lattice;
+using namespace lattice::io;
 using lattice::testing::FakeSysfs;
 
 namespace {

@@ -24,6 +24,7 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::io;
 using namespace lattice::lht;
 
 namespace {

@@ -65,13 +65,13 @@ void checkGoldenPng(const std::string& relative, const RgbImage& actual, ImageTo
   auto path = goldenPath(relative);
   if (regeneratingGoldens()) {
     std::filesystem::create_directories(path.parent_path());
-    writePng(path, actual);
+    io::writePng(path, actual);
     WARN("regenerated golden " << path.string());
     return;
   }
   INFO("golden " << path.string() << " (regenerate: scripts/regenerate-goldens.sh)");
   REQUIRE(std::filesystem::exists(path));
-  RgbImage expected = readPng(path);
+  RgbImage expected = io::readPng(path);
   REQUIRE(expected.width == actual.width);
   REQUIRE(expected.height == actual.height);
   ImageDifference d = compareImages(expected, actual);

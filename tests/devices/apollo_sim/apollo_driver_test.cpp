@@ -11,6 +11,7 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::io;
 using namespace lattice::quantize;
 using namespace lattice::apollo;
 using lattice::testing::FunctionSource;

@@ -21,6 +21,7 @@
 #include "tests/support/golden.hpp"
 
 using namespace lattice;
+using namespace lattice::io;
 using namespace lattice::quantize;
 using namespace lattice::apollo;
 

@@ -17,6 +17,7 @@
 #include "tests/support/golden.hpp"
 
 using namespace lattice;
+using namespace lattice::io;
 using namespace lattice::tek4027;
 using namespace lattice::tek4027::test;
 

@@ -28,6 +28,7 @@
 #include "foundation/error.hpp"
 
 using namespace lattice;
+using namespace lattice::io;
 using namespace lattice::tek4027;
 using namespace lattice::tek4027::test;
 
