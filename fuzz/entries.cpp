@@ -117,7 +117,7 @@ void tek4027Decoder(std::span<const std::uint8_t> bytes) {
 
 void pngReader(std::span<const std::uint8_t> bytes) {
   try {
-    (void)readPngBytes(bytes, "fuzz.png");
+    (void)io::readPngBytes(bytes, "fuzz.png");
   } catch (const Error&) {
   }
 }
