@@ -133,6 +133,11 @@ TEST_CASE("a PNG header claiming a huge picture is refused before any pixel memo
   }
   // The CLI's side: exit 3 naming the file, also under a memory cap that a
   // 12.9 GB allocation would break.
+#ifdef LATTICE_SANITIZED
+  WARN("the CLI run under `ulimit -v` is skipped under the sanitizers: ASan reserves terabytes of address space "
+       "for its shadow memory, so no sanitized binary starts under the cap (the g++ build runs it)");
+  return;
+#endif
   const std::string path = scratch / "liar.png";
   writeFileAtomically(path, liarPng(65535, 65535));
   const int status = std::system(fmt::format("ulimit -v 400000; exec '{}' quantize '{}' -o '{}' 2>/dev/null",
