@@ -25,9 +25,15 @@ GprJournalWriter::GprJournalWriter(ByteSink& out, const ApolloProfile& profile) 
 
 GprDisplayCharacteristics GprJournalWriter::inqDispCharacteristics() const { return characteristicsOf(profile_); }
 
-void GprJournalWriter::acquireDisplay() { out_.write(std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>("A"), 1)); }
+void GprJournalWriter::acquireDisplay() {
+  record_.assign({'A'});
+  out_.write(record_);
+}
 
-void GprJournalWriter::releaseDisplay() { out_.write(std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>("R"), 1)); }
+void GprJournalWriter::releaseDisplay() {
+  record_.assign({'R'});
+  out_.write(record_);
+}
 
 void GprJournalWriter::setColorMap(int start, std::span<const std::uint32_t> values) {
   record_.assign({'M'});
