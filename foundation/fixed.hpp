@@ -16,11 +16,20 @@
 #include <cstdint>
 #include <limits>
 
+#include "foundation/int128.hpp"
+
 namespace lattice {
 
-// 128-bit intermediates (a GCC/Clang extension; __extension__ keeps -Wpedantic quiet).
+// 128-bit intermediates: GCC's __int128 where the target has it (__extension__
+// keeps -Wpedantic quiet); on 32-bit targets (the firmware) the portable class
+// of foundation/int128.hpp, which gives the same results bit for bit.
+#if defined(__SIZEOF_INT128__)
 __extension__ typedef __int128 Int128;
 __extension__ typedef unsigned __int128 UInt128;
+#else
+using Int128 = Wide128<true>;
+using UInt128 = Wide128<false>;
+#endif
 
 template <int F>
 class Fixed {

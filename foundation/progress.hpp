@@ -5,8 +5,9 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
-#include <mutex>
 #include <string>
+
+#include "foundation/threads.hpp"
 
 namespace lattice {
 
@@ -36,7 +37,7 @@ class Progress {
   bool finished_ = false;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point lastDraw_;
-  std::mutex drawMutex_;
+  Mutex drawMutex_;
 };
 
 }  // namespace lattice

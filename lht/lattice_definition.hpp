@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
-#include <mutex>
+#include <mutex>  // std::call_once: libstdc++ has it in the single thread model too
 #include <optional>
 #include <string>
 

@@ -55,9 +55,10 @@ class EntryReader<Fixed32> {
     const std::uint8_t* entry = table_->findEntry(from, to);
     if (!entry) return false;
     const EntryIntegers e = decodeEntryIntegers(entry, precision_);
-    s = Fixed32(e.sNumerator) / Fixed32(e.sDenominator);
-    worldNormal = lattice::normalize(directionToWorld_ *
-                                     Vec3<Fixed32>(Fixed32(e.normal[0]), Fixed32(e.normal[1]), Fixed32(e.normal[2])));
+    // int: std::int32_t is long on 32-bit ARM, and Fixed is built from int.
+    const auto fixed = [](std::int32_t v) { return Fixed32(static_cast<int>(v)); };
+    s = fixed(e.sNumerator) / fixed(e.sDenominator);
+    worldNormal = lattice::normalize(directionToWorld_ * Vec3<Fixed32>(fixed(e.normal[0]), fixed(e.normal[1]), fixed(e.normal[2])));
     return true;
   }
 

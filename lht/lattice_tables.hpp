@@ -11,6 +11,8 @@
 #include <memory>
 #include <mutex>
 
+#include "foundation/threads.hpp"
+
 #include "lht/lattice_definition.hpp"
 #include "lht/lht_file.hpp"
 
@@ -32,7 +34,7 @@ class LatticeTables {
     std::shared_ptr<const LhtFile> table;
   };
   const TableSettings settings_;
-  mutable std::mutex mutex_;  // guards slots_ (not the building, which each slot's once_flag orders)
+  mutable Mutex mutex_;  // guards slots_ (not the building, which each slot's once_flag orders)
   mutable std::map<const LatticeDefinition*, std::shared_ptr<Slot>> slots_;
 };
 

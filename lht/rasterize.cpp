@@ -5,10 +5,9 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
-#include <mutex>
-#include <thread>
 
 #include "foundation/progress.hpp"
+#include "foundation/threads.hpp"
 
 namespace lattice::lht {
 
@@ -49,7 +48,7 @@ class Rasterizer {
 
   RasterResult run() {
     const auto start = std::chrono::steady_clock::now();
-    unsigned threads = options_.threads ? options_.threads : std::max(1u, std::thread::hardware_concurrency());
+    unsigned threads = options_.threads ? options_.threads : hardwareThreads();
     threads = std::min<unsigned>(threads, static_cast<unsigned>(std::max<std::size_t>(1, points_.size())));
     Progress progress("rasterize", points_.size(), "points");
     if (!options_.progress) progress.setEnabled(false);
@@ -61,29 +60,9 @@ class Rasterizer {
         progress.advance();
       }
     };
-    // One thread works in the caller's: a worker thread would get an
-    // allocator arena of its own, resident long after the rasterizer is done.
-    if (threads == 1) {
-      work(0);
-    } else {
-      // An exception (std::bad_alloc) leaving a thread would end the process
-      // without a message: the first is carried to the caller instead.
-      std::exception_ptr failure;
-      std::mutex failureMutex;
-      const auto guarded = [&](unsigned w) {
-        try {
-          work(w);
-        } catch (...) {
-          std::lock_guard lock(failureMutex);
-          if (!failure) failure = std::current_exception();
-          next_.store(points_.size());
-        }
-      };
-      std::vector<std::thread> workers;
-      for (unsigned w = 0; w < threads; ++w) workers.emplace_back(guarded, w);
-      for (std::thread& t : workers) t.join();
-      if (failure) std::rethrow_exception(failure);
-    }
+    // runWorkers keeps worker 0 in the caller's thread (no allocator arena of
+    // its own) and carries the first exception (std::bad_alloc) to the caller.
+    runWorkers(threads, work, [this] { next_.store(points_.size()); });
     progress.finish();
 
     RasterResult result;

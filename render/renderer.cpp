@@ -3,11 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <thread>
 
 #include "foundation/error.hpp"
 #include "foundation/progress.hpp"
 #include "foundation/arithmetics.hpp"
+#include "foundation/threads.hpp"
 
 namespace lattice {
 
@@ -24,8 +24,7 @@ int resolveThreads(int requested) {
     throw Error(ErrorKind::Usage, fmt::format("--threads {} is out of range; use 1..{} (or 0 for all cores)",
                                               requested, kMaxThreads));
   if (requested > 0) return requested;
-  const unsigned hw = std::thread::hardware_concurrency();
-  return hw == 0 ? 1 : static_cast<int>(std::min<unsigned>(hw, kMaxThreads));
+  return static_cast<int>(std::min<unsigned>(hardwareThreads(), kMaxThreads));
 }
 
 int resolveSide(int requested, int sceneDefault, const char* name) {
@@ -47,23 +46,12 @@ void parallelRows(int y0, int y1, int threads, Work&& work) {
     return;
   }
   std::atomic<int> next{y0};
-  std::exception_ptr failure;
-  std::mutex failureMutex;
-  auto worker = [&] {
-    try {
-      for (int y = next.fetch_add(1); y < y1; y = next.fetch_add(1)) work(y);
-    } catch (...) {
-      std::lock_guard lock(failureMutex);
-      if (!failure) failure = std::current_exception();
-      next.store(y1);
-    }
-  };
-  std::vector<std::jthread> pool;
-  pool.reserve(static_cast<std::size_t>(n - 1));
-  for (int i = 1; i < n; ++i) pool.emplace_back(worker);
-  worker();
-  pool.clear();  // joins
-  if (failure) std::rethrow_exception(failure);
+  runWorkers(
+      static_cast<unsigned>(n),
+      [&](unsigned) {
+        for (int y = next.fetch_add(1); y < y1; y = next.fetch_add(1)) work(y);
+      },
+      [&] { next.store(y1); });
 }
 
 }  // namespace

@@ -14,7 +14,6 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
-#include <mutex>
 #include <span>
 #include <vector>
 
@@ -24,6 +23,7 @@
 #include "render/scene.hpp"
 #include "render/shading.hpp"
 #include "foundation/arithmetics.hpp"
+#include "foundation/threads.hpp"
 
 namespace lattice {
 
@@ -32,7 +32,7 @@ class Progress;
 struct RenderSettings {
   int width = 0;    // 0: the scene's [options] width
   int height = 0;   // 0: the scene's [options] height
-  int threads = 0;  // 0: std::thread::hardware_concurrency()
+  int threads = 0;  // 0: hardwareThreads() (foundation/threads.hpp)
   BuildOptions build;
 };
 
@@ -103,7 +103,7 @@ class Renderer final : public RowSource18 {
   mutable std::atomic<std::uint64_t> rays_{0};
 
   // The band cache of row().
-  std::mutex bandMutex_;
+  Mutex bandMutex_;
   int bandStart_ = -1;
   int bandRows_ = 0;
   std::vector<Color18> band_;

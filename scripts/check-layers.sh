@@ -7,8 +7,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-# Bottom to top. tests/, bench/ and fuzz/ sit above all of them.
-layers=(foundation render lht quantize devices io app)
+# Bottom to top. tests/, bench/ and fuzz/ sit above all of them. firmware/
+# (docs/firmware.md) is a top layer beside app/: it may use the layers up to
+# devices/ and nothing else (no io/, no app/), and nothing includes it.
+layers=(foundation render lht quantize devices io app firmware)
+declare -A ceiling=([firmware]=devices)
 
 rank() {
   local i
@@ -24,6 +27,9 @@ for layer in "${layers[@]}"; do
     theirs=$(rank "$target")
     if ((theirs < 0)); then
       echo "$file:$line: includes \"$target/...\", a folder that is no layer (add it to scripts/check-layers.sh)"
+      bad=1
+    elif [[ -n ${ceiling[$layer]:-} && $target != "$layer" ]] && ((theirs > $(rank "${ceiling[$layer]}"))); then
+      echo "$file:$line: $layer may include layers up to ${ceiling[$layer]}, not $target"
       bad=1
     elif ((theirs > mine)); then
       echo "$file:$line: $layer (layer $mine) includes $target (layer $theirs), a layer above it; move the shared piece down"
