@@ -28,6 +28,11 @@ void addPipelineOptions(CLI::App* cmd, PipelineArgs& args) {
       ->check(CLI::IsMember({"passes", "frame", "sample"}))
       ->capture_default_str();
   cmd->add_option("--sample", args.sample, "sample mode: histogram from every Nth row and column (default 4)");
+  cmd->add_option("--histogram", args.histogram,
+                  "full (a counter per 18-bit colour, 1 MiB) | small (only the colours present, at most 64 KiB and "
+                  "6144 colours: the firmware's form, docs/firmware.md); the same palette either way")
+      ->check(CLI::IsMember({"full", "small"}))
+      ->capture_default_str();
   cmd->add_flag("-q,--quiet", args.quiet, "no progress bars");
 }
 
@@ -43,6 +48,7 @@ quantize::PipelineOptions toPipelineOptions(const PipelineArgs& args, const CLI:
   options.quantize.dither = dithers.at(args.dither);  // values checked by CLI::IsMember
   options.quantize.split = splits.at(args.split);
   options.quantize.refineIterations = args.refine;
+  options.quantize.histogram = args.histogram == "small" ? quantize::HistogramForm::Small : quantize::HistogramForm::Full;
   const bool sampleGiven = cmd.count("--sample") > 0;
   const bool modeGiven = cmd.count("--mode") > 0;
   options.mode = modes.at(args.mode);

@@ -1,6 +1,6 @@
 #pragma once
 // The quantizer flags shared by `lattice quantize` and `lattice render`
-// (--colors, --dither, --split, --refine, --mode, --sample, --quiet), turned
+// (--colors, --dither, --split, --refine, --mode, --sample, --histogram, --quiet), turned
 // into PipelineOptions in one place so both commands mean the same thing.
 #include <CLI/CLI.hpp>
 
@@ -17,6 +17,7 @@ struct PipelineArgs {
   int refine = 0;
   std::string mode = "passes";
   int sample = 0;
+  std::string histogram = "full";
   bool quiet = false;
 };
 

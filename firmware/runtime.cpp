@@ -3,12 +3,13 @@
 // - _sbrk: the heap grows from the end of .bss towards the stack and no
 //   further (the linker script's budget); running out makes malloc fail, so
 //   operator new throws std::bad_alloc like on the host.
-// - _write etc.: there are no files; anything newlib would print goes to the
+// - _write etc.: there are no files (and no clock: _gettimeofday); anything newlib would print goes to the
 //   host's stderr through semihosting, never to the UART (the Tek stream).
 // - the 64-bit atomics GCC calls out to on a core with only 32-bit
 //   exclusive loads (libatomic's __atomic_*_8): one core, no interrupt
 //   touches them, so a plain load and store with interrupts masked is exact.
 #include <sys/stat.h>
+#include <sys/time.h>
 
 #include <cerrno>
 #include <cstddef>
@@ -50,6 +51,12 @@ int _kill(int, int) {
   return -1;
 }
 void _exit(int status) { lattice::firmware::hostExit(status); }
+// The clocks (std::chrono, used for progress and line timing) read a time of
+// day the board does not keep: always the epoch. No output depends on it.
+int _gettimeofday(struct timeval* tv, void*) {
+  if (tv) *tv = {};
+  return 0;
+}
 // libstdc++'s std::random_device asks for it; the firmware has no entropy.
 int getentropy(void*, std::size_t) {
   errno = ENOSYS;

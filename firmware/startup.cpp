@@ -2,12 +2,13 @@
 // table the core reads at address 0 (initial stack pointer, then handlers),
 // and the reset handler that makes C++ possible: copy .data from flash, zero
 // .bss, paint the stack for the high-water mark (firmware/memory_marks.hpp),
-// run the static constructors, call main, and exit through semihosting with
-// main's status. A fault ends the run with status 70 and a message on the
+// run the static constructors, call firmwareMain (C++ forbids calling
+// main), and exit through semihosting with its status. A fault ends the run with status 70 and a message on the
 // host's stderr, never a silent hang.
 #include <cstdint>
 #include <cstring>
 
+#include "firmware/firmware_main.hpp"
 #include "firmware/memory_marks.hpp"
 #include "firmware/semihosting.hpp"
 
@@ -15,7 +16,6 @@ extern "C" {
 extern std::uint32_t __data_load, __data_start, __data_end, __bss_start, __bss_end, __stack_top;
 extern void (*__preinit_array_start[])(), (*__preinit_array_end[])();
 extern void (*__init_array_start[])(), (*__init_array_end[])();
-int main();
 void Reset_Handler();
 void Fault_Handler();
 }
@@ -35,7 +35,7 @@ extern "C" void Reset_Handler() {
   lattice::firmware::paintStack();
   for (auto f = __preinit_array_start; f != __preinit_array_end; ++f) (*f)();
   for (auto f = __init_array_start; f != __init_array_end; ++f) (*f)();
-  lattice::firmware::hostExit(main());
+  lattice::firmware::hostExit(lattice::firmware::firmwareMain());
 }
 
 extern "C" void Fault_Handler() {

@@ -47,6 +47,7 @@ inline unsigned hardwareThreads() { return 1; }
 template <typename Work, typename Stop>
 void runWorkers(unsigned workers, Work&& work, Stop&& stop) {
   if (workers <= 1 || !kHasThreads) {
+    (void)stop;  // one worker: nothing to stop
     work(0u);
     return;
   }

@@ -9,6 +9,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "lht/baked_lattice.hpp"
 #include "lht/canonical_toml.hpp"
 #include "lht/lattice_leaf.hpp"
 #include "lht/lattice_object.hpp"
@@ -41,6 +42,11 @@ class LatticeLeafDesc final : public LeafTemplate<LatticeLeafDesc> {
   }
   Bounds<double> objectBounds() const override { return definition_->objectBounds(); }
   std::string describe() const override { return fmt::format("lattice '{}'", definition_->name); }
+  // Baked with its table built here (or read from its cache), for the firmware.
+  std::string bake(SceneBaker& baker) const override {
+    return bakeLatticeLeaf(baker, *tables_->table(definition_), definition_->shadows, definition_->name,
+                           definition_->objectBounds());
+  }
 
   const LatticeDefinitionPtr& definition() const { return definition_; }
 

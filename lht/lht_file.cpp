@@ -94,7 +94,7 @@ std::vector<std::uint8_t> serializeLht(const LhtFile& lht) {
   w.u64(lht.table.entryCount());
   w.u64(lht.table.bucketCount());
   w.u64(lht.table.slotCount());
-  w.bytes(lht.table.slotBytes().data(), lht.table.slotBytes().size());
+  w.bytes(lht.table.slotView().data(), lht.table.slotView().size());
   w.u64(fnv1a64(w.out));
   return std::move(w.out);
 }

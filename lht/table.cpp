@@ -36,13 +36,13 @@ bool LatticeHashTable::isEmpty(std::uint64_t index) const {
 std::uint64_t LatticeHashTable::slotsFor(const std::vector<RasterHit>& hits, std::uint64_t bucketCount) {
   // Every bucket holds its first key in its primary slot; every other key of
   // the bucket takes one overflow slot.
-  std::vector<bool> used(bucketCount, false);
+  std::vector<bool> used(static_cast<std::size_t>(bucketCount), false);
   std::uint64_t usedBuckets = 0;
   std::uint8_t key[kEntryKeyBytes];
   for (const RasterHit& hit : hits) {
     makeKey(hit.in, hit.out, key);
     const std::uint64_t b = bucketOf(key, bucketCount);
-    if (!used[b]) used[b] = true, ++usedBuckets;
+    if (!used[static_cast<std::size_t>(b)]) used[static_cast<std::size_t>(b)] = true, ++usedBuckets;
   }
   return bucketCount + hits.size() - usedBuckets;
 }
@@ -74,8 +74,8 @@ LatticeHashTable::LatticeHashTable(const std::vector<RasterHit>& hits, LhtPrecis
   buckets_ = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::ceil(double(entries_) / loadFactor)));
   // The exact size first: growing the overflow area by doubling would leave
   // up to half of the table's memory allocated and unused.
-  slots_.reserve(slotsFor(hits, buckets_) * stride_);
-  slots_.assign(buckets_ * stride_, 0);
+  slots_.reserve(static_cast<std::size_t>(slotsFor(hits, buckets_) * stride_));
+  slots_.assign(static_cast<std::size_t>(buckets_ * stride_), 0);
   for (std::uint64_t b = 0; b < buckets_; ++b) setNext(b, kNoNext);
   std::vector<std::uint8_t> entry(stride_);
   for (const RasterHit& hit : hits) {
@@ -98,15 +98,31 @@ LatticeHashTable::LatticeHashTable(LhtPrecision precision, std::vector<std::uint
                                    std::uint64_t bucketCount, std::uint64_t entryCount)
     : precision_(precision), stride_(entryBytes(precision)), slots_(std::move(slotBytes)), buckets_(bucketCount),
       entries_(entryCount) {
-  if (slots_.size() % stride_ != 0)
+  checkChains();
+}
+
+LatticeHashTable LatticeHashTable::inPlace(LhtPrecision precision, std::span<const std::uint8_t> slotBytes,
+                                           std::uint64_t bucketCount, std::uint64_t entryCount) {
+  LatticeHashTable table;
+  table.precision_ = precision;
+  table.stride_ = entryBytes(precision);
+  table.inPlace_ = slotBytes;
+  table.buckets_ = bucketCount;
+  table.entries_ = entryCount;
+  table.checkChains();
+  return table;
+}
+
+void LatticeHashTable::checkChains() const {
+  if (bytes() % stride_ != 0)
     throw Error(ErrorKind::Input, fmt::format("LHT slot bytes ({}) are not a whole number of {}-byte entries",
-                                              slots_.size(), stride_));
+                                              bytes(), stride_));
   const std::uint64_t slots = slotCount();
   if (buckets_ == 0 || buckets_ > slots)
     throw Error(ErrorKind::Input, fmt::format("LHT bucket count {} does not fit its {} slots", buckets_, slots));
   // Every overflow slot must be reached exactly once, from a chain whose keys
   // all hash to that chain's bucket; then lookups cannot loop or stray.
-  std::vector<std::uint8_t> seen(slots - buckets_, 0);
+  std::vector<std::uint8_t> seen(static_cast<std::size_t>(slots - buckets_), 0);
   std::uint64_t counted = 0;
   for (std::uint64_t b = 0; b < buckets_; ++b) {
     if (isEmpty(b)) {
@@ -120,10 +136,10 @@ LatticeHashTable::LatticeHashTable(LhtPrecision precision, std::vector<std::uint
       ++counted;
       const std::uint32_t next = nextOf(index);
       if (next == kNoNext) break;
-      if (next < buckets_ || next >= slots || seen[next - buckets_])
+      if (next < buckets_ || next >= slots || seen[static_cast<std::size_t>(next - buckets_)])
         throw Error(ErrorKind::Input, fmt::format("LHT overflow index {} in bucket {}'s chain is out of range or "
                                                   "shared", next, b));
-      seen[next - buckets_] = 1;
+      seen[static_cast<std::size_t>(next - buckets_)] = 1;
       index = next;
     }
   }
@@ -161,8 +177,9 @@ ChainStats LatticeHashTable::chainStats() const {
       for (std::uint32_t index = static_cast<std::uint32_t>(b); index != kNoNext; index = nextOf(index)) ++length;
     if (length) ++stats.usedBuckets;
     stats.longestChain = std::max(stats.longestChain, length);
-    if (stats.chainLengthHistogram.size() <= length) stats.chainLengthHistogram.resize(length + 1, 0);
-    ++stats.chainLengthHistogram[length];
+    const auto at = static_cast<std::size_t>(length);
+    if (stats.chainLengthHistogram.size() <= at) stats.chainLengthHistogram.resize(at + 1, 0);
+    ++stats.chainLengthHistogram[at];
   }
   return stats;
 }

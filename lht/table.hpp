@@ -38,6 +38,12 @@ class LatticeHashTable {
   LatticeHashTable(LhtPrecision precision, std::vector<std::uint8_t> slotBytes, std::uint64_t bucketCount,
                    std::uint64_t entryCount);
 
+  // Reads slots that stay where they are (a baked table in the firmware's
+  // flash, docs/firmware.md): no copy, checked like a file's; `slotBytes`
+  // must outlive the table.
+  static LatticeHashTable inPlace(LhtPrecision precision, std::span<const std::uint8_t> slotBytes,
+                                  std::uint64_t bucketCount, std::uint64_t entryCount);
+
   std::optional<LhtHit> find(const LatticePoint& in, const LatticePoint& out) const;
   // The stored entry's bytes (entryBytes(precision()) of them; null if
   // absent): fixed-point rendering decodes them with decodeEntryIntegers()
@@ -48,14 +54,17 @@ class LatticeHashTable {
   std::size_t entryStride() const { return stride_; }
   std::uint64_t entryCount() const { return entries_; }
   std::uint64_t bucketCount() const { return buckets_; }
-  std::uint64_t slotCount() const { return slots_.size() / stride_; }
+  std::uint64_t slotCount() const { return slotView().size() / stride_; }
   std::uint64_t overflowCount() const { return slotCount() - buckets_; }
-  std::uint64_t bytes() const { return slots_.size(); }
+  std::uint64_t bytes() const { return slotView().size(); }
   double loadFactor() const { return buckets_ ? double(entries_) / double(buckets_) : 0.0; }
   double bytesPerEntry() const { return entries_ ? double(bytes()) / double(entries_) : 0.0; }
   ChainStats chainStats() const;
   // Every slot, primary then overflow, entryStride() bytes each: the file's bytes.
+  // (The owned copy; empty for a table read in place.)
   const std::vector<std::uint8_t>& slotBytes() const { return slots_; }
+  // The slots wherever they are.
+  std::span<const std::uint8_t> slotView() const { return inPlace_.data() ? inPlace_ : std::span<const std::uint8_t>(slots_); }
 
   static std::uint64_t bucketOf(const std::uint8_t key[6], std::uint64_t bucketCount);
   // The slots a table of these hits over bucketCount buckets will have.
@@ -67,15 +76,17 @@ class LatticeHashTable {
                                      double loadFactor = kDefaultLoadFactor);
 
  private:
-  const std::uint8_t* slot(std::uint64_t index) const { return slots_.data() + index * stride_; }
+  const std::uint8_t* slot(std::uint64_t index) const { return slotView().data() + index * stride_; }
   std::uint8_t* slot(std::uint64_t index) { return slots_.data() + index * stride_; }
   std::uint32_t nextOf(std::uint64_t index) const;
   void setNext(std::uint64_t index, std::uint32_t next);
   bool isEmpty(std::uint64_t index) const;
+  void checkChains() const;
 
   LhtPrecision precision_ = LhtPrecision::Thesis;
   std::size_t stride_ = entryBytes(LhtPrecision::Thesis);
   std::vector<std::uint8_t> slots_;  // slots [0, buckets_) primary, the rest the overflow area
+  std::span<const std::uint8_t> inPlace_;  // instead of slots_, for a table read in place
   std::uint64_t buckets_ = 0;
   std::uint64_t entries_ = 0;
 };

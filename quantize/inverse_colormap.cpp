@@ -11,13 +11,34 @@
 
 namespace lattice::quantize {
 
-InverseColorMap::InverseColorMap(Palette palette, std::vector<std::uint32_t> storage)
-    : palette_(std::move(palette)), cache_(std::move(storage)), resolved_(kCoarseCells, false) {
+InverseColorMap::InverseColorMap(Palette palette, bool cached) : cached_(cached), palette_(std::move(palette)) {
   if (palette_.empty()) throw Error(ErrorKind::Internal, "inverse colour map: the palette is empty");
   if (palette_.size() > 256)
     throw Error(ErrorKind::Internal, fmt::format("inverse colour map: {} palette entries, at most 256", palette_.size()));
+}
+
+InverseColorMap::InverseColorMap(Palette palette, std::vector<std::uint32_t> storage)
+    : InverseColorMap(std::move(palette), true) {
+  cache_ = std::move(storage);
   if (cache_.size() != kCells) cache_.assign(kCells, 0);
+  resolved_.assign(kCoarseCells, false);
   candidates_.reserve(palette_.size());
+}
+
+InverseColorMap InverseColorMap::uncached(Palette palette) { return InverseColorMap(std::move(palette), false); }
+
+PaletteIndex InverseColorMap::nearestInPalette(Color18 color) const {
+  const int r = expand6to8(red6(color)), g = expand6to8(green6(color)), b = expand6to8(blue6(color));
+  std::size_t best = 0;
+  int bestDistance = distanceSquared(r, g, b, palette_[0]);
+  for (std::size_t i = 1; i < palette_.size() && bestDistance > 0; ++i) {
+    const int d = distanceSquared(r, g, b, palette_[i]);
+    if (d < bestDistance) {  // strict: the lowest index keeps a tie
+      bestDistance = d;
+      best = i;
+    }
+  }
+  return static_cast<PaletteIndex>(best);
 }
 
 void InverseColorMap::throwBadColor(Color18 color) {

@@ -28,11 +28,16 @@ class InverseColorMap {
   // storage: a 2^18-entry array to reuse as the cache (Histogram::releaseStorage);
   // any other size (e.g. empty) makes the map allocate its own.
   explicit InverseColorMap(Palette palette, std::vector<std::uint32_t> storage = {});
+  // With no cache (the small histogram's form, docs/firmware.md): each
+  // colour is looked up in the whole palette, the same nearest entry with the
+  // same tie rule, for O(palette) work a pixel and no 1 MiB table.
+  static InverseColorMap uncached(Palette palette);
 
   // Nearest palette entry; lattice::Error(Internal) with an empty palette or a
   // colour outside 18 bits.
   PaletteIndex nearest(Color18 color) {
     if (color >= kCells) throwBadColor(color);
+    if (!cached_) return nearestInPalette(color);
     unsigned coarse = coarseCell(color);
     if (!resolved_[coarse]) resolveCoarseCell(coarse);
     return static_cast<PaletteIndex>(cache_[color]);
@@ -47,7 +52,10 @@ class InverseColorMap {
   static unsigned coarseCell(Color18 c) { return (red6(c) >> 2) << 8 | (green6(c) >> 2) << 4 | (blue6(c) >> 2); }
   [[noreturn]] static void throwBadColor(Color18 color);
   void resolveCoarseCell(unsigned coarse);
+  PaletteIndex nearestInPalette(Color18 color) const;
+  InverseColorMap(Palette palette, bool cached);
 
+  bool cached_ = true;
   Palette palette_;
   std::vector<std::uint32_t> cache_;
   std::vector<bool> resolved_;

@@ -23,24 +23,15 @@ struct Box {
   std::array<double, 3> mean{0, 0, 0};
 };
 
-template <typename Visit>
-void forEachCell(const Box& box, Visit visit) {
-  for (int r = box.lo[0]; r <= box.hi[0]; ++r)
-    for (int g = box.lo[1]; g <= box.hi[1]; ++g)
-      for (int b = box.lo[2]; b <= box.hi[2]; ++b) visit(packColor18(unsigned(r), unsigned(g), unsigned(b)));
-}
-
 // Shrink-to-fit: the smallest box around the non-empty cells, with the
 // statistics the split choice and the representative need.
-void shrink(Box& box, std::span<const std::uint32_t> cells) {
+void shrink(Box& box, const Histogram& histogram) {
   std::array<int, 3> lo{64, 64, 64}, hi{-1, -1, -1};
   std::array<double, 3> sum{0, 0, 0};
   double sumSquares = 0;
   std::uint64_t population = 0;
   std::size_t distinct = 0;
-  forEachCell(box, [&](Color18 c) {
-    std::uint32_t n = cells[c];
-    if (n == 0) return;
+  histogram.forEachInBox(box.lo.data(), box.hi.data(), [&](Color18 c, std::uint32_t n) {
     ++distinct;
     population += n;
     for (int a = 0; a < 3; ++a) {
@@ -75,9 +66,10 @@ int longestAxis(const Box& box) {
 }
 
 // Pixel counts of the box projected on one axis.
-std::array<std::uint64_t, 64> project(const Box& box, int axis, std::span<const std::uint32_t> cells) {
+std::array<std::uint64_t, 64> project(const Box& box, int axis, const Histogram& histogram) {
   std::array<std::uint64_t, 64> counts{};
-  forEachCell(box, [&](Color18 c) { counts[channel6(c, axis)] += cells[c]; });
+  histogram.forEachInBox(box.lo.data(), box.hi.data(),
+                         [&](Color18 c, std::uint32_t n) { counts[channel6(c, axis)] += n; });
   return counts;
 }
 
@@ -118,11 +110,9 @@ int varianceCutPlane(const Box& box, int axis, const std::array<std::uint64_t, 6
   return best;
 }
 
-Rgb8 representative(const Box& box, std::span<const std::uint32_t> cells) {
+Rgb8 representative(const Box& box, const Histogram& histogram) {
   std::array<double, 3> sum{0, 0, 0};
-  forEachCell(box, [&](Color18 c) {
-    std::uint32_t n = cells[c];
-    if (n == 0) return;
+  histogram.forEachInBox(box.lo.data(), box.hi.data(), [&](Color18 c, std::uint32_t n) {
     for (int a = 0; a < 3; ++a) sum[a] += double(n) * expand6to8(channel6(c, a));
   });
   auto channel = [&](int a) { return static_cast<std::uint8_t>(std::lround(sum[a] / double(box.population))); };
@@ -141,10 +131,10 @@ void checkArguments(int maxColors, const QuantizeOptions& options) {
 
 Palette medianCut(const Histogram& histogram, int maxColors, const QuantizeOptions& options) {
   checkArguments(maxColors, options);
-  std::span<const std::uint32_t> cells = histogram.cells();
-  if (cells.size() != Histogram::kCells) throw Error(ErrorKind::Internal, "median cut: histogram storage was released");
+  if (histogram.form() == HistogramForm::Full && histogram.cells().size() != Histogram::kCells)
+    throw Error(ErrorKind::Internal, "median cut: histogram storage was released");
   std::vector<Box> boxes(1);
-  shrink(boxes[0], cells);
+  shrink(boxes[0], histogram);
   if (boxes[0].population == 0) return {};
 
   while (boxes.size() < static_cast<std::size_t>(maxColors)) {
@@ -162,36 +152,34 @@ Palette medianCut(const Histogram& histogram, int maxColors, const QuantizeOptio
     if (target == nullptr) break;  // every box is a single colour
 
     int axis = longestAxis(*target);
-    auto counts = project(*target, axis, cells);
+    auto counts = project(*target, axis, histogram);
     int plane = options.split == SplitRule::Median ? medianCutPlane(*target, axis, counts)
                                                    : varianceCutPlane(*target, axis, counts);
     Box upper = *target;
     target->hi[axis] = plane;
     upper.lo[axis] = plane + 1;
-    shrink(*target, cells);
-    shrink(upper, cells);
+    shrink(*target, histogram);
+    shrink(upper, histogram);
     boxes.push_back(upper);  // invalidates target; not used again this round
   }
 
   Palette palette;
   palette.reserve(boxes.size());
-  for (const Box& box : boxes) palette.push_back(representative(box, cells));
+  for (const Box& box : boxes) palette.push_back(representative(box, histogram));
   if (options.refineIterations > 0) refinePalette(histogram, palette, options.refineIterations);
   return palette;
 }
 
 void refinePalette(const Histogram& histogram, Palette& palette, int iterations) {
-  std::span<const std::uint32_t> cells = histogram.cells();
-  if (cells.size() != Histogram::kCells || palette.empty()) return;
+  if ((histogram.form() == HistogramForm::Full && histogram.cells().size() != Histogram::kCells) || palette.empty())
+    return;
   struct Accumulator {
     double n = 0, r = 0, g = 0, b = 0;
   };
   std::vector<Accumulator> sums(palette.size());
   for (int iteration = 0; iteration < iterations; ++iteration) {
     std::fill(sums.begin(), sums.end(), Accumulator{});
-    for (Color18 c = 0; c < Histogram::kCells; ++c) {
-      std::uint32_t n = cells[c];
-      if (n == 0) continue;
+    histogram.forEach([&](Color18 c, std::uint32_t n) {
       int r = expand6to8(red6(c)), g = expand6to8(green6(c)), b = expand6to8(blue6(c));
       std::size_t best = 0;
       int bestDistance = distanceSquared(r, g, b, palette[0]);
@@ -207,7 +195,7 @@ void refinePalette(const Histogram& histogram, Palette& palette, int iterations)
       acc.r += double(n) * r;
       acc.g += double(n) * g;
       acc.b += double(n) * b;
-    }
+    });
     bool moved = false;
     for (std::size_t i = 0; i < palette.size(); ++i) {
       if (sums[i].n == 0) continue;  // an entry nothing is nearest to keeps its colour

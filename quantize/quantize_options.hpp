@@ -16,10 +16,17 @@ enum class Dither {
   Bayer,           // ordered 8x8 threshold matrix: no state between pixels
 };
 
+// How the histogram is held (quantize/histogram.hpp): the same palette either way.
+enum class HistogramForm {
+  Full,   // a counter per 18-bit colour: 1 MiB, any number of colours
+  Small,  // only the colours present: at most 64 KiB, up to 6144 colours (the firmware's form)
+};
+
 struct QuantizeOptions {
   SplitRule split = SplitRule::Median;
   int refineIterations = 0;  // k-means (Lloyd) passes over the histogram after the cut
   Dither dither = Dither::None;
+  HistogramForm histogram = HistogramForm::Full;
 };
 
 }  // namespace lattice::quantize

@@ -48,7 +48,7 @@ const char* pipelineModeName(PipelineMode mode) {
 PipelineReport pipelineBuffers(int width, int height, const PipelineOptions& options) {
   const auto w = static_cast<std::size_t>(std::max(width, 0));
   PipelineReport report;
-  report.histogramBytes = Histogram::kBytes;
+  report.histogramBytes = Histogram::bytesOf(options.quantize.histogram);
   report.rowBytes = w * (sizeof(Color18) + sizeof(PaletteIndex));
   if (options.mode == PipelineMode::Frame) report.frameBytes = w * static_cast<std::size_t>(std::max(height, 0)) * sizeof(Color18);
   if (options.quantize.dither == Dither::FloydSteinberg) report.errorRowBytes = RowMapper::errorRowBytes(width);
@@ -63,7 +63,7 @@ PipelineReport runPipeline(RowSource18& source, IndexedSink& sink, const Pipelin
 
   std::vector<Color18> row(w);
   std::vector<Color18> frame;  // Frame mode only
-  Histogram histogram;
+  Histogram histogram(options.quantize.histogram);
   {
     const int rowStep = options.mode == PipelineMode::Sample ? options.sampleStep : 1;
     const auto histogramRows = (static_cast<std::uint64_t>(height) + static_cast<std::uint64_t>(rowStep) - 1) /
@@ -85,6 +85,7 @@ PipelineReport runPipeline(RowSource18& source, IndexedSink& sink, const Pipelin
     }
     progress.finish();
   }
+  histogram.finish();
   report.distinctColors = histogram.distinctColors();
 
   FrameInfo info;
@@ -93,7 +94,10 @@ PipelineReport runPipeline(RowSource18& source, IndexedSink& sink, const Pipelin
   info.palette = medianCut(histogram, colorBudget(sink, options), options.quantize);
   report.paletteSize = info.palette.size();
 
-  InverseColorMap map(info.palette, histogram.releaseStorage());
+  InverseColorMap map = options.quantize.histogram == HistogramForm::Full
+                            ? InverseColorMap(info.palette, histogram.releaseStorage())
+                            : InverseColorMap::uncached(info.palette);
+  if (options.quantize.histogram == HistogramForm::Small) histogram.releaseStorage();
   RowMapper mapper(map, width, options.quantize.dither);
   std::vector<PaletteIndex> indices(w);
 

@@ -10,6 +10,7 @@
 #include <functional>
 
 #include "render/csg_shapes.hpp"
+#include "render/leaf_descs.hpp"
 #include "render/polyline.hpp"
 #include "render/quartic.hpp"
 #include "render/shapes.hpp"
@@ -19,44 +20,11 @@ namespace lattice {
 
 namespace {
 
-// A leaf that is a single quartic (thesis 3.2.1).
-class QuarticLeafDesc final : public LeafTemplate<QuarticLeafDesc> {
- public:
-  QuarticLeafDesc(QuarticShape shape, std::string name) : shape_(std::move(shape)), name_(std::move(name)) {}
-  template <typename T>
-  PrimitivePtr<T> buildAs(const Mat4d& toWorld, MaterialId m, const BuildOptions&) const {
-    return makeQuarticLeaf<T>(shape_.f, shape_.bounds, toWorld, m);
-  }
-  Bounds<double> objectBounds() const override { return shape_.bounds; }
-  std::string describe() const override { return name_; }
-
- private:
-  QuarticShape shape_;
-  std::string name_;
-};
-
-// A capsule: a CSG composite of quartics, built by render/csg_shapes.hpp.
-class CapsuleLeafDesc final : public LeafTemplate<CapsuleLeafDesc> {
- public:
-  CapsuleLeafDesc(double radius, double length) : radius_(radius), length_(length) {}
-  template <typename T>
-  PrimitivePtr<T> buildAs(const Mat4d& toWorld, MaterialId m, const BuildOptions&) const {
-    return makeCapsule<T>(radius_, length_, toWorld, m);
-  }
-  Bounds<double> objectBounds() const override {
-    return {Vec3d(-radius_, -radius_, -radius_), Vec3d(radius_, radius_, length_ + radius_)};
-  }
-  std::string describe() const override { return "capsule"; }
-
- private:
-  double radius_, length_;
-};
-
 // Shape constructors report bad parameters without a position; add it.
 NodeDesc quarticNode(const toml::table& t, ParseContext& ctx, const std::string& name,
                      const std::function<QuarticShape()>& make) {
   try {
-    return NodeDesc::makeLeaf(std::make_shared<QuarticLeafDesc>(make(), name), ctx.where(t));
+    return NodeDesc::makeLeaf(makeQuarticLeafDesc(make(), name), ctx.where(t));
   } catch (const Error& e) {
     ctx.fail(t, fmt::format("{}: {}", name, e.what()));
   }
@@ -117,7 +85,7 @@ NodeDesc parseQuartic(const toml::table& t, ParseContext& ctx) {
     bounds = {ctx.requiredVec3(*bt, "min"), ctx.requiredVec3(*bt, "max")};
     if (bounds.empty()) ctx.fail(*b, "'bounds' min must be <= max in every coordinate");
   }
-  return NodeDesc::makeLeaf(std::make_shared<QuarticLeafDesc>(QuarticShape{f, bounds}, "quartic"), ctx.where(t));
+  return NodeDesc::makeLeaf(makeQuarticLeafDesc(QuarticShape{f, bounds}, "quartic"), ctx.where(t));
 }
 
 // Spheres joined by cylinders along a path (the thesis's hook and hair).
@@ -190,7 +158,7 @@ std::map<std::string, NodeParser> builtinNodeTypes() {
     const double r = ctx.positiveNumber(t, "radius");
     const double length = ctx.number(t, "length").value_or(0.0);
     if (length < 0) ctx.fail(*t.get("length"), "'length' of a capsule must be >= 0");
-    return NodeDesc::makeLeaf(std::make_shared<CapsuleLeafDesc>(r, length), ctx.where(t));
+    return NodeDesc::makeLeaf(makeCapsuleLeafDesc(r, length), ctx.where(t));
   };
   types["polyline"] = parsePolyline;
   types["quartic"] = parseQuartic;

@@ -6,6 +6,7 @@
 
 #include "render/csg.hpp"
 #include "render/csg_shapes.hpp"
+#include "render/scene_baker.hpp"
 #include "foundation/error.hpp"
 #include "foundation/arithmetics.hpp"
 
@@ -36,6 +37,12 @@ class PolylineLeafDesc final : public LeafTemplate<PolylineLeafDesc> {
   }
   Bounds<double> objectBounds() const override { return polylineBounds(points_, radius_); }
   std::string describe() const override { return fmt::format("polyline of {} points", points_.size()); }
+  std::string bake(SceneBaker& baker) const override {
+    baker.include("render/polyline.hpp");
+    std::string points;
+    for (const Vec3d& p : points_) points += (points.empty() ? "" : ", ") + baker.vec3(p);
+    return fmt::format("lattice::makePolylineLeafDesc({{{}}}, {})", points, baker.number(radius_));
+  }
 
  private:
   std::vector<Vec3d> points_;

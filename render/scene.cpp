@@ -9,6 +9,11 @@
 
 namespace lattice {
 
+std::string LeafDesc::bake(SceneBaker&) const {
+  throw Error(ErrorKind::Usage, fmt::format("{} cannot be baked for the firmware (docs/firmware.md lists the leaves "
+                                            "a baked scene can hold)", describe()));
+}
+
 NodeDesc NodeDesc::makeLeaf(LeafDescPtr leafDesc, std::string where) {
   NodeDesc n;
   n.kind = Kind::Leaf;

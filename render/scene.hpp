@@ -25,6 +25,8 @@
 
 namespace lattice {
 
+class SceneBaker;
+
 // How leaves are built; set by the renderer's caller.
 struct BuildOptions {
   // Replace every lattice by the exact object it was rasterized from (the
@@ -57,6 +59,10 @@ class LeafDesc {
   virtual Bounds<double> objectBounds() const = 0;
   // A short human-readable name for messages ("sphere", "lattice 'hair'").
   virtual std::string describe() const = 0;
+  // A C++ expression of type LeafDescPtr that rebuilds this leaf in a baked
+  // scene (render/scene_baker.hpp, docs/firmware.md). The default refuses
+  // with lattice::Error(Usage) naming the leaf.
+  virtual std::string bake(SceneBaker& baker) const;
 
  protected:
   // Fills the slot `out` holds (its alternative names the arithmetic).

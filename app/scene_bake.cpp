@@ -1,0 +1,137 @@
+#include "app/scene_bake.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include "render/scene_baker.hpp"
+
+namespace lattice::app {
+namespace {
+
+constexpr const char* kKinds[] = {"Leaf", "Union", "Intersection", "Difference"};
+
+class CppSceneBaker final : public SceneBaker {
+ public:
+  std::string number(double v) const override {
+    if (std::isnan(v)) return "std::numeric_limits<double>::quiet_NaN()";
+    if (std::isinf(v)) return v > 0 ? "std::numeric_limits<double>::infinity()" : "-std::numeric_limits<double>::infinity()";
+    return fmt::format("{:a}", v);
+  }
+
+  std::string node(const NodeDesc& n) override {
+    std::string expr;
+    if (n.kind == NodeDesc::Kind::Leaf) {
+      ++leaves_;
+      expr = fmt::format("lattice::NodeDesc::makeLeaf({})", n.leaf->bake(*this));
+    } else {
+      std::string children;
+      for (const NodeDesc& c : n.children) children += (children.empty() ? "" : ",\n") + node(c);
+      expr = fmt::format("lattice::NodeDesc::makeOperation(lattice::NodeDesc::Kind::{}, {{\n{}}})",
+                         kKinds[static_cast<int>(n.kind)], children);
+    }
+    if (n.transform == Mat4d(1.0) && !n.material) return expr;
+    // A lambda sets the transform and material on the built node (its
+    // variable numbered, so nested ones do not shadow each other).
+    const std::string v = fmt::format("n{}", lambdas_++);
+    return fmt::format("[] {{ lattice::NodeDesc {} = {}; {}.transform = {}; {} return {}; }}()", v, expr, v,
+                       mat4(n.transform),
+                       n.material ? fmt::format("{}.material = lattice::MaterialId{{{}}};", v, *n.material) : "", v);
+  }
+
+  std::string flashBytes(std::span<const std::uint8_t> bytes, std::string_view what) override {
+    const std::string name = fmt::format("kFlash{}", arrays_.size());
+    std::string text = fmt::format("// {}: {} bytes\nalignas(4) const std::uint8_t {}[] = {{", what, bytes.size(), name);
+    for (std::size_t i = 0; i < bytes.size(); ++i) text += fmt::format("{}{}", i % 24 == 0 ? "\n  " : "", bytes[i]) + ",";
+    text += "\n};\n";
+    arrays_.push_back(std::move(text));
+    flashBytes_ += bytes.size();
+    return fmt::format("std::span<const std::uint8_t>({})", name);
+  }
+
+  void include(std::string_view header) override { includes_.insert(std::string(header)); }
+
+  const std::set<std::string>& includes() const { return includes_; }
+  const std::vector<std::string>& arrays() const { return arrays_; }
+  std::size_t flashTotal() const { return flashBytes_; }
+  std::size_t leaves() const { return leaves_; }
+
+ private:
+  std::set<std::string> includes_;
+  std::vector<std::string> arrays_;
+  std::size_t flashBytes_ = 0;
+  std::size_t leaves_ = 0;
+  int lambdas_ = 0;
+};
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+BakeResult bakeScene(const lht::SceneWithLattices& loaded, const BakeRequest& request) {
+  const SceneDesc& scene = loaded.scene;
+  CppSceneBaker baker;
+  const std::string root = baker.node(scene.root);
+
+  std::string body;
+  const CameraDesc& c = scene.camera;
+  body += fmt::format("  s.camera.kind = lattice::CameraDesc::Kind::{};\n",
+                      c.kind == CameraDesc::Kind::Thesis ? "Thesis" : "LookAt");
+  body += fmt::format("  s.camera.distance = {};\n  s.camera.displayWidth = {};\n  s.camera.displayHeight = {};\n",
+                      baker.number(c.distance), baker.number(c.displayWidth), baker.number(c.displayHeight));
+  body += fmt::format("  s.camera.eye = {};\n  s.camera.target = {};\n  s.camera.up = {};\n  s.camera.fovDegrees = {};\n",
+                      baker.vec3(c.eye), baker.vec3(c.target), baker.vec3(c.up), baker.number(c.fovDegrees));
+  for (const auto& light : scene.lights)
+    body += fmt::format("  s.lights.push_back({{{}, {}}});\n", baker.vec3(light.position), baker.vec3(light.intensity));
+  body += "  s.materials.clear();\n";
+  for (const auto& m : scene.materials)
+    body += fmt::format("  s.materials.push_back({{{}, {{{}, {}, {}, {}}}}});\n", quoted(m.name),
+                        baker.vec3(m.material.ambient), baker.vec3(m.material.diffuse),
+                        baker.vec3(m.material.specular), baker.vec3(m.material.shininess));
+  const SceneOptions& o = scene.options;
+  body += fmt::format("  s.options.ambient = {};\n  s.options.attenuationK = {};\n  s.options.background = {};\n",
+                      baker.vec3(o.ambient), baker.number(o.attenuationK), baker.vec3(o.background));
+  body += fmt::format("  s.options.width = {};\n  s.options.height = {};\n  s.options.shadows = {};\n", o.width,
+                      o.height, o.shadows ? "true" : "false");
+  body += fmt::format("  s.root = {};\n", root);
+
+  const quantize::PipelineOptions& p = request.pipeline;
+  std::string settings;
+  for (const std::string& kv : request.settings) settings += (settings.empty() ? "" : ", ") + quoted(kv);
+
+  std::string out = fmt::format(
+      "// Generated by `lattice bake {} --size {}x{}`: the scene for the firmware (docs/firmware.md).\n"
+      "// Do not edit; bake again. {} leaves, {} bytes of tables in flash.\n"
+      "#include <cstdint>\n#include <limits>\n#include <memory>\n#include <span>\n\n#include \"firmware/baked_scene.hpp\"\n",
+      request.sceneFile, request.width, request.height, baker.leaves(), baker.flashTotal());
+  for (const std::string& h : baker.includes()) out += fmt::format("#include \"{}\"\n", h);
+  out += "\nnamespace {\n\n";
+  for (const std::string& a : baker.arrays()) out += a + "\n";
+  out += "}  // namespace\n\n";
+  out += "lattice::firmware::BakedScene lattice::firmware::bakedScene() {\n  BakedScene b;\n";
+  out += fmt::format("  b.name = {};\n  b.width = {};\n  b.height = {};\n  b.settings = {{{}}};\n",
+                     quoted(std::filesystem::path(request.sceneFile).stem().string()), request.width, request.height,
+                     settings);
+  out += fmt::format(
+      "  b.pipeline.mode = static_cast<lattice::quantize::PipelineMode>({});\n  b.pipeline.sampleStep = {};\n"
+      "  b.pipeline.maxColors = {};\n  b.pipeline.quantize.split = static_cast<lattice::quantize::SplitRule>({});\n"
+      "  b.pipeline.quantize.refineIterations = {};\n"
+      "  b.pipeline.quantize.dither = static_cast<lattice::quantize::Dither>({});\n"
+      "  b.pipeline.quantize.histogram = static_cast<lattice::quantize::HistogramForm>({});\n"
+      "  b.pipeline.progress = false;\n",
+      static_cast<int>(p.mode), p.sampleStep, p.maxColors, static_cast<int>(p.quantize.split),
+      p.quantize.refineIterations, static_cast<int>(p.quantize.dither), static_cast<int>(p.quantize.histogram));
+  out += "  lattice::SceneDesc& s = b.scene;\n" + body + "  return b;\n}\n";
+  return BakeResult{std::move(out), baker.flashTotal(), baker.leaves()};
+}
+
+}  // namespace lattice::app

@@ -1,0 +1,65 @@
+// The firmware's job: the baked scene (firmware/baked_scene.hpp) rendered in
+// Q31.32 fixed point (Renderer<Fixed32>, no floating point on the per-pixel
+// path), quantized with the small histogram, and written by the Tek 4125
+// driver to UART0 - the same calls `lattice render --arith fixed --device
+// tek4125` makes on the host, so the stream is the same byte for byte.
+// Then a report on the host's stderr (semihosting; never on the UART):
+// picture, stream bytes, palette, and the RAM high-water marks against the
+// budget. Exit status: 0, or a lattice::Error's kind (docs/cli.md), or 3
+// when the heap runs out.
+#include <fmt/format.h>
+
+#include <new>
+
+#include "devices/tek4125/tek4125_driver.hpp"
+#include "devices/tek4125/tek4125_profile.hpp"
+#include "firmware/baked_scene.hpp"
+#include "firmware/firmware_main.hpp"
+#include "firmware/memory_marks.hpp"
+#include "firmware/semihosting.hpp"
+#include "firmware/uart_sink.hpp"
+#include "foundation/error.hpp"
+#include "foundation/fixed.hpp"
+#include "render/renderer.hpp"
+
+namespace lattice::firmware {
+namespace {
+
+int run() {
+  const BakedScene baked = bakedScene();
+  RenderSettings settings;
+  settings.width = baked.width;
+  settings.height = baked.height;
+  settings.threads = 1;
+  Renderer<Fixed32> renderer(baked.scene, settings);
+  tek4125::Tek4125Profile profile;
+  tek4125::applyOverrides(profile, baked.settings);
+  UartSink uart;
+  tek4125::Tek4125Driver driver(uart, profile);
+  const quantize::PipelineReport report = quantize::runPipeline(renderer, driver, baked.pipeline);
+  uart.close();
+  const MemoryMarks m = memoryMarks();
+  hostReport(fmt::format("firmware: {} {}x{} fixed-point, {} stream bytes on UART0, {} colours of {} distinct, "
+                         "{} rays\n",
+                         baked.name, baked.width, baked.height, uart.bytesWritten(), report.paletteSize,
+                         report.distinctColors, renderer.raysTraced()));
+  hostReport(fmt::format("firmware: RAM peak {} B of 262144 (data {} + bss {} + heap {} of {} + stack {} of {})\n",
+                         m.total(), m.data, m.bss, m.heapPeak, m.heapLimit, m.stackPeak, m.stackSize));
+  return 0;
+}
+
+}  // namespace
+}  // namespace lattice::firmware
+
+int lattice::firmware::firmwareMain() {
+  try {
+    return run();
+  } catch (const lattice::Error& e) {
+    hostReport(fmt::format("firmware: error: {}\n", e.what()));
+    return static_cast<int>(e.kind());
+  } catch (const std::bad_alloc&) {
+    const MemoryMarks m = memoryMarks();
+    hostReport(fmt::format("firmware: out of memory: the heap's {} B are used up (docs/firmware.md)\n", m.heapLimit));
+    return static_cast<int>(lattice::ErrorKind::Input);  // as the host exits on bad_alloc (docs/cli.md)
+  }
+}

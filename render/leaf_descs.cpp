@@ -1,0 +1,63 @@
+#include "render/leaf_descs.hpp"
+
+#include <fmt/format.h>
+
+#include "render/csg_shapes.hpp"
+#include "render/scene_baker.hpp"
+
+namespace lattice {
+namespace {
+
+class QuarticLeafDesc final : public LeafTemplate<QuarticLeafDesc> {
+ public:
+  QuarticLeafDesc(QuarticShape shape, std::string name) : shape_(std::move(shape)), name_(std::move(name)) {}
+  template <typename T>
+  PrimitivePtr<T> buildAs(const Mat4d& toWorld, MaterialId m, const BuildOptions&) const {
+    return makeQuarticLeaf<T>(shape_.f, shape_.bounds, toWorld, m);
+  }
+  Bounds<double> objectBounds() const override { return shape_.bounds; }
+  std::string describe() const override { return name_; }
+  std::string bake(SceneBaker& baker) const override {
+    baker.include("render/leaf_descs.hpp");
+    std::string terms;
+    for (std::size_t i = 0; i < shape_.f.a.size(); ++i) terms += (i ? ", " : "") + baker.number(shape_.f.a[i]);
+    return fmt::format("lattice::makeQuarticLeafDesc(lattice::QuarticShape{{lattice::QuarticPolynomial{{{{{}}}}}, "
+                       "lattice::Bounds<double>{{{}, {}}}}}, \"{}\")",
+                       terms, baker.vec3(shape_.bounds.lo), baker.vec3(shape_.bounds.hi), name_);
+  }
+
+ private:
+  QuarticShape shape_;
+  std::string name_;
+};
+
+class CapsuleLeafDesc final : public LeafTemplate<CapsuleLeafDesc> {
+ public:
+  CapsuleLeafDesc(double radius, double length) : radius_(radius), length_(length) {}
+  template <typename T>
+  PrimitivePtr<T> buildAs(const Mat4d& toWorld, MaterialId m, const BuildOptions&) const {
+    return makeCapsule<T>(radius_, length_, toWorld, m);
+  }
+  Bounds<double> objectBounds() const override {
+    return {Vec3d(-radius_, -radius_, -radius_), Vec3d(radius_, radius_, length_ + radius_)};
+  }
+  std::string describe() const override { return "capsule"; }
+  std::string bake(SceneBaker& baker) const override {
+    baker.include("render/leaf_descs.hpp");
+    return fmt::format("lattice::makeCapsuleLeafDesc({}, {})", baker.number(radius_), baker.number(length_));
+  }
+
+ private:
+  double radius_, length_;
+};
+
+}  // namespace
+
+LeafDescPtr makeQuarticLeafDesc(QuarticShape shape, std::string name) {
+  return std::make_shared<QuarticLeafDesc>(std::move(shape), std::move(name));
+}
+LeafDescPtr makeCapsuleLeafDesc(double radius, double length) {
+  return std::make_shared<CapsuleLeafDesc>(radius, length);
+}
+
+}  // namespace lattice

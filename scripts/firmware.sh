@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# The firmware end to end (docs/firmware.md): bake a scene with the host
+# `lattice`, build the Cortex-M3 image for it, run it under QEMU's
+# mps2-an385 board with UART0 to a file, and decode that stream with our Tek
+# 4125 emulator to a PNG.
+#   scripts/firmware.sh SCENE [--size WxH] [--set key=value ...] [--out DIR] [--icount]
+# Writes DIR/NAME.tek (the UART bytes), DIR/NAME.png, DIR/NAME.report (the
+# firmware's own report: stream bytes, palette, RAM high-water marks) and,
+# with --icount, DIR/NAME.icount (instructions executed, from QEMU's
+# -icount clock; bench/firmware.sh). DIR defaults to out/firmware.
+# Tunables (environment): LATTICE_EXE (host binary, default build/app/lattice),
+# FIRMWARE_BUILD (default build-firmware), FIRMWARE_TIMEOUT (seconds of QEMU,
+# default 900). Exit 77 when the ARM toolchain or QEMU is missing
+# (scripts/setup.sh --firmware installs them).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+usage() { sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit "${1:-0}"; }
+scene="" size="64x64" out="out/firmware" icount=0 sets=()
+while (($#)); do
+  case $1 in
+    --size) size=$2; shift 2 ;;
+    --set) sets+=(--set "$2"); shift 2 ;;
+    --out) out=$2; shift 2 ;;
+    --icount) icount=1; shift ;;
+    -h|--help) usage ;;
+    -*) echo "firmware.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
+    *) [[ -z $scene ]] || { echo "firmware.sh: one scene only" >&2; exit 2; }; scene=$1; shift ;;
+  esac
+done
+[[ -n $scene ]] || { echo "firmware.sh: give a scene file (see --help)" >&2; exit 2; }
+[[ -f $scene ]] || { echo "firmware.sh: $scene: no such scene file" >&2; exit 2; }
+
+for tool in arm-none-eabi-g++ qemu-system-arm; do
+  if ! command -v "$tool" >/dev/null; then
+    echo "firmware.sh: $tool is not installed: run scripts/setup.sh --firmware" >&2
+    exit 77
+  fi
+done
+lattice=${LATTICE_EXE:-build/app/lattice}
+[[ -x $lattice ]] || { echo "firmware.sh: $lattice missing: build the host first (scripts/build.sh)" >&2; exit 2; }
+
+name="$(basename "$scene" .toml)-$size"
+for kv in "${sets[@]}"; do [[ $kv == --set ]] || name+="-${kv//[^A-Za-z0-9]/}"; done
+build=${FIRMWARE_BUILD:-build-firmware}
+mkdir -p "$build/scenes" "$out"
+"$lattice" bake "$scene" --size "$size" "${sets[@]}" -q -o "$build/scenes/$name.cpp.new"
+# Only a changed scene relinks (cmp keeps the old file's time stamp).
+if cmp -s "$build/scenes/$name.cpp.new" "$build/scenes/$name.cpp"; then rm "$build/scenes/$name.cpp.new"
+else mv "$build/scenes/$name.cpp.new" "$build/scenes/$name.cpp"; fi
+
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+# One build folder for every scene (the core compiles once); a lock keeps
+# two runs (ctest -j) from building in it at the same time.
+exec 9>"$build/.lock"
+flock 9
+cmake -S firmware -B "$build" -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/arm-cortex-m3.cmake" \
+  -DLATTICE_SCENES_DIR="$PWD/$build/scenes" -DLATTICE_WERROR=ON "${launcher[@]}" >/dev/null
+cmake --build "$build" --target "firmware-$name" -j "$(nproc)" >"$build/$name.log" 2>&1 ||
+  { cat "$build/$name.log" >&2; exit 1; }
+flock -u 9
+elf="$build/firmware-$name.elf"
+arm-none-eabi-size -A "$elf" | awk '$1 ~ /^\.(text|ARM\.extab|ARM\.exidx|eh_frame|data|bss)$/ {print}' >"$out/$name.sizes"
+
+qemu=(qemu-system-arm -M mps2-an385 -nographic -monitor none -semihosting-config enable=on,target=native
+      -serial "file:$out/$name.tek" -kernel "$elf")
+status=0
+if ((icount)); then
+  # -icount shift=0: the virtual clock advances 1 ns per instruction, so the
+  # guest's run time in ns is its instruction count (QEMU docs, "icount").
+  start_ns=0
+  timeout "${FIRMWARE_TIMEOUT:-900}" "${qemu[@]}" -icount shift=0 -d nochain 2>"$out/$name.report" || status=$?
+else
+  timeout "${FIRMWARE_TIMEOUT:-900}" "${qemu[@]}" 2>"$out/$name.report" || status=$?
+fi
+cat "$out/$name.report" >&2
+if ((status != 0)); then
+  echo "firmware.sh: the firmware exited with status $status (124: QEMU timed out)" >&2
+  exit 1
+fi
+"$lattice" emulate --device tek4125 "${sets[@]}" "$out/$name.tek" -o "$out/$name.png"
+echo "firmware.sh: $out/$name.tek ($(stat -c %s "$out/$name.tek") bytes), $out/$name.png"
