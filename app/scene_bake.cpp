@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <set>
 
 #include "render/scene_baker.hpp"
@@ -36,7 +37,7 @@ class CppSceneBaker final : public SceneBaker {
     // A lambda sets the transform and material on the built node (its
     // variable numbered, so nested ones do not shadow each other).
     const std::string v = fmt::format("n{}", lambdas_++);
-    return fmt::format("[] {{ lattice::NodeDesc {} = {}; {}.transform = {}; {} return {}; }}()", v, expr, v,
+    return fmt::format("[&] {{ lattice::NodeDesc {} = {}; {}.transform = {}; {} return {}; }}()", v, expr, v,
                        mat4(n.transform),
                        n.material ? fmt::format("{}.material = lattice::MaterialId{{{}}};", v, *n.material) : "", v);
   }
@@ -51,7 +52,17 @@ class CppSceneBaker final : public SceneBaker {
     return fmt::format("std::span<const std::uint8_t>({})", name);
   }
 
+  std::string shared(const void* identity, const std::function<std::string()>& expression) override {
+    const auto found = sharedNames_.find(identity);
+    if (found != sharedNames_.end()) return found->second;
+    const std::string name = fmt::format("shared{}", sharedNames_.size());
+    sharedDefinitions_ += fmt::format("  const auto {} = {};\n", name, expression());
+    sharedNames_.emplace(identity, name);
+    return name;
+  }
+
   void include(std::string_view header) override { includes_.insert(std::string(header)); }
+  const std::string& sharedDefinitions() const { return sharedDefinitions_; }
 
   const std::set<std::string>& includes() const { return includes_; }
   const std::vector<std::string>& arrays() const { return arrays_; }
@@ -60,6 +71,8 @@ class CppSceneBaker final : public SceneBaker {
 
  private:
   std::set<std::string> includes_;
+  std::map<const void*, std::string> sharedNames_;
+  std::string sharedDefinitions_;
   std::vector<std::string> arrays_;
   std::size_t flashBytes_ = 0;
   std::size_t leaves_ = 0;
@@ -102,6 +115,7 @@ BakeResult bakeScene(const lht::SceneWithLattices& loaded, const BakeRequest& re
                       baker.vec3(o.ambient), baker.number(o.attenuationK), baker.vec3(o.background));
   body += fmt::format("  s.options.width = {};\n  s.options.height = {};\n  s.options.shadows = {};\n", o.width,
                       o.height, o.shadows ? "true" : "false");
+  body += baker.sharedDefinitions();
   body += fmt::format("  s.root = {};\n", root);
 
   const quantize::PipelineOptions& p = request.pipeline;

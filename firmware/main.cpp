@@ -18,6 +18,7 @@
 #include "firmware/memory_marks.hpp"
 #include "firmware/semihosting.hpp"
 #include "firmware/uart_sink.hpp"
+#include "firmware/virtual_clock.hpp"
 #include "foundation/error.hpp"
 #include "foundation/fixed.hpp"
 #include "render/renderer.hpp"
@@ -26,6 +27,7 @@ namespace lattice::firmware {
 namespace {
 
 int run() {
+  startClock();
   const BakedScene baked = bakedScene();
   RenderSettings settings;
   settings.width = baked.width;
@@ -38,6 +40,7 @@ int run() {
   tek4125::Tek4125Driver driver(uart, profile);
   const quantize::PipelineReport report = quantize::runPipeline(renderer, driver, baked.pipeline);
   uart.close();
+  const std::uint64_t ticks = clockTicks();
   const MemoryMarks m = memoryMarks();
   hostReport(fmt::format("firmware: {} {}x{} fixed-point, {} stream bytes on UART0, {} colours of {} distinct, "
                          "{} rays\n",
@@ -45,6 +48,9 @@ int run() {
                          report.distinctColors, renderer.raysTraced()));
   hostReport(fmt::format("firmware: RAM peak {} B of 262144 (data {} + bss {} + heap {} of {} + stack {} of {})\n",
                          m.total(), m.data, m.bss, m.heapPeak, m.heapLimit, m.stackPeak, m.stackSize));
+  // Under `qemu -icount shift=0` this is the instruction count (firmware/virtual_clock.hpp).
+  hostReport(fmt::format("firmware: virtual time {} ns ({} SysTick ticks of {} ns)\n", ticks * kTickNanoseconds,
+                         ticks, kTickNanoseconds));
   return 0;
 }
 

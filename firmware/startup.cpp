@@ -18,6 +18,7 @@ extern void (*__preinit_array_start[])(), (*__preinit_array_end[])();
 extern void (*__init_array_start[])(), (*__init_array_end[])();
 void Reset_Handler();
 void Fault_Handler();
+void SysTick_Handler();
 }
 
 namespace {
@@ -43,7 +44,10 @@ extern "C" void Fault_Handler() {
   lattice::firmware::hostExit(kFaultStatus);
 }
 
-// Initial SP, reset, NMI, hard fault, memory management, bus and usage fault.
+// ARMv7-M exception numbers 0..15: initial SP, reset, NMI, hard fault,
+// memory management, bus and usage fault, four reserved, SVCall, debug
+// monitor, reserved, PendSV, SysTick (firmware/virtual_clock.hpp).
 __attribute__((section(".vectors"), used)) const Vector kVectors[] = {
-    reinterpret_cast<Vector>(&__stack_top), Reset_Handler, Fault_Handler, Fault_Handler,
-    Fault_Handler, Fault_Handler, Fault_Handler};
+    reinterpret_cast<Vector>(&__stack_top), Reset_Handler, Fault_Handler, Fault_Handler, Fault_Handler,
+    Fault_Handler, Fault_Handler, nullptr, nullptr, nullptr, nullptr, Fault_Handler, Fault_Handler, nullptr,
+    Fault_Handler, SysTick_Handler};

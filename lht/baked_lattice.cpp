@@ -44,17 +44,20 @@ LeafDescPtr makeBakedLatticeLeafDesc(std::shared_ptr<const LhtFile> table, bool 
 std::string bakeLatticeLeaf(SceneBaker& baker, const LhtFile& lht, bool castsShadows, const std::string& name,
                             const Bounds<double>& objectBounds) {
   baker.include("lht/baked_lattice.hpp");
-  const LatticeBox& box = lht.box;
-  const LatticeHashTable& table = lht.table;
-  const std::string slots = baker.flashBytes(table.slotView(), fmt::format("lattice '{}' table slots", name));
-  const std::string file = fmt::format(
-      "lattice::lht::LhtFile{{{}u, lattice::lht::LatticeBox({{{}, {}, {}}}, {}, {}, {}), {}ull, {}ull, {}ull, "
-      "lattice::lht::LatticeHashTable::inPlace(static_cast<lattice::lht::LhtPrecision>({}), {}, {}ull, {}ull)}}",
-      lht.version, box.cells()[0], box.cells()[1], box.cells()[2], baker.number(box.lambda()),
-      baker.number(box.oversample()), baker.vec3(box.origin()), lht.objectHash, lht.pairs, lht.hits,
-      static_cast<int>(table.precision()), slots, table.bucketCount(), table.entryCount());
-  return fmt::format("lattice::lht::makeBakedLatticeLeafDesc(std::make_shared<const lattice::lht::LhtFile>({}), {}, "
-                     "\"{}\", lattice::Bounds<double>{{{}, {}}})",
+  // One table in flash for every instance of the lattice.
+  const std::string file = baker.shared(&lht, [&] {
+    const LatticeBox& box = lht.box;
+    const LatticeHashTable& table = lht.table;
+    const std::string slots = baker.flashBytes(table.slotView(), fmt::format("lattice '{}' table slots", name));
+    return fmt::format(
+        "std::make_shared<const lattice::lht::LhtFile>(lattice::lht::LhtFile{{{}u, lattice::lht::LatticeBox({{{}, {}, "
+        "{}}}, {}, {}, {}), {}ull, {}ull, {}ull, lattice::lht::LatticeHashTable::inPlace("
+        "static_cast<lattice::lht::LhtPrecision>({}), {}, {}ull, {}ull)}})",
+        lht.version, box.cells()[0], box.cells()[1], box.cells()[2], baker.number(box.lambda()),
+        baker.number(box.oversample()), baker.vec3(box.origin()), lht.objectHash, lht.pairs, lht.hits,
+        static_cast<int>(table.precision()), slots, table.bucketCount(), table.entryCount());
+  });
+  return fmt::format("lattice::lht::makeBakedLatticeLeafDesc({}, {}, \"{}\", lattice::Bounds<double>{{{}, {}}})",
                      file, castsShadows ? "true" : "false", name, baker.vec3(objectBounds.lo),
                      baker.vec3(objectBounds.hi));
 }

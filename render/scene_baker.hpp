@@ -9,6 +9,7 @@
 // the firmware sees has the host's exact bits, and the fixed-point picture
 // can be byte-identical to the host's.
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -34,6 +35,10 @@ class SceneBaker {
   // Defines a constant array holding `bytes` in flash and returns the
   // expression of a std::span<const std::uint8_t> over it.
   virtual std::string flashBytes(std::span<const std::uint8_t> bytes, std::string_view what) = 0;
+  // A value several leaves share (a lattice's table: one copy in flash for
+  // all its instances): `expression` is written once, into a variable, the
+  // first time `identity` is seen; every call returns the variable's name.
+  virtual std::string shared(const void* identity, const std::function<std::string()>& expression) = 0;
   // A header the generated file must include ("render/leaf_descs.hpp").
   virtual void include(std::string_view header) = 0;
 };

@@ -5,7 +5,10 @@
 # write. `--bench` adds the peers the benchmarks compare against (POV-Ray,
 # Embree, pngquant, GNU time); `--fuzz` adds clang 14, its runtime libraries
 # (libFuzzer, ASan, UBSan: libclang-rt-14-dev) and llvm-14 (llvm-symbolizer),
-# for scripts/fuzz.sh and the sanitizer build (scripts/test.sh asks for it).
+# for scripts/fuzz.sh and the sanitizer build (scripts/test.sh asks for it);
+# `--firmware` adds the ARM Cortex-M toolchain (gcc-arm-none-eabi, newlib and
+# its libstdc++) and qemu-system-arm, for scripts/firmware.sh and the
+# firmware tests (scripts/test.sh asks for them too; docs/firmware.md).
 set -euo pipefail
 
 packages=(cmake g++ make pkg-config git catch2 libglm-dev libpng-dev libusb-1.0-0-dev
@@ -14,7 +17,8 @@ for option in "$@"; do
   case $option in
     --bench) packages+=(povray libembree-dev pngquant time python3) ;;
     --fuzz) packages+=(clang-14 libclang-rt-14-dev llvm-14) ;;
-    *) echo "setup.sh: unknown option $option (known: --bench, --fuzz)" >&2; exit 2 ;;
+    --firmware) packages+=(gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm) ;;
+    *) echo "setup.sh: unknown option $option (known: --bench, --fuzz, --firmware)" >&2; exit 2 ;;
   esac
 done
 

@@ -140,3 +140,22 @@ TEST_CASE("LHT: the table reserves exactly its slots and its expected size is cl
   }
   CHECK(LatticeHashTable::expectedBytes(0, LhtPrecision::Thesis) == 14);  // one empty bucket's slot at most
 }
+
+TEST_CASE("LHT: a table read in place (the firmware's flash) answers like the one it was copied from") {
+  const auto hits = syntheticHits(2000);
+  const LatticeHashTable built(hits, LhtPrecision::Thesis);
+  const std::vector<std::uint8_t> flash = built.slotBytes();  // stands in for the baked constant array
+  const LatticeHashTable view =
+      LatticeHashTable::inPlace(built.precision(), flash, built.bucketCount(), built.entryCount());
+  CHECK(view.slotBytes().empty());  // nothing copied
+  CHECK(view.slotView().data() == flash.data());
+  CHECK(view.bytes() == built.bytes());
+  for (const RasterHit& h : hits) {
+    REQUIRE(view.findEntry(h.in, h.out) != nullptr);
+    CHECK(std::equal(view.findEntry(h.in, h.out), view.findEntry(h.in, h.out) + view.entryStride(),
+                     built.findEntry(h.in, h.out)));
+  }
+  // Checked like a file's slots: a wrong entry count is refused.
+  CHECK_THROWS_AS(LatticeHashTable::inPlace(built.precision(), flash, built.bucketCount(), built.entryCount() + 1),
+                  Error);
+}

@@ -1,0 +1,112 @@
+// The firmware end to end (docs/firmware.md): two example scenes, one with a
+// lattice, baked, built for the Cortex-M3 and run under QEMU's mps2-an385
+// by scripts/firmware.sh. Asserted: the firmware exits 0; its UART stream is
+// byte for byte what the host writes with `lattice render --arith fixed
+// --device tek4125` at the same size with the same (small) histogram; the
+// report's RAM high-water mark is within the 256 KiB budget; the decoded
+// picture equals its golden (tests/golden/firmware/). Where the ARM
+// toolchain or QEMU is missing the cases pass with a warning saying so.
+// The ARM image is built in the source tree's build-firmware/ whichever host
+// build runs the test (it does not depend on the host's compiler or
+// sanitizers), so the g++ and the sanitizer suites build it once.
+#include <catch2/catch.hpp>
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "devices/tek4125/tek4125_decoder.hpp"
+#include "devices/tek4125/tek4125_driver.hpp"
+#include "devices/tek4125/tek4125_profile.hpp"
+#include "foundation/atomic_file.hpp"
+#include "foundation/indexed_image.hpp"
+#include "foundation/rgb_image.hpp"
+#include "tests/support/golden.hpp"
+#include "tests/support/run_lattice.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace lattice;
+
+bool haveTool(const std::string& tool) { return std::system(("command -v " + tool + " >/dev/null 2>&1").c_str()) == 0; }
+
+bool firmwareToolsPresent() {
+  for (const char* tool : {"arm-none-eabi-g++", "qemu-system-arm"})
+    if (!haveTool(tool)) {
+      WARN(fmt::format("{} is not installed: firmware test skipped (scripts/setup.sh --firmware installs it)", tool));
+      return false;
+    }
+  return true;
+}
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void runScene(const std::string& scene) {
+  if (!firmwareToolsPresent()) return;
+  const std::string stem = fs::path(scene).stem().string();
+  const fs::path out = fs::path(LATTICE_BINARY_DIR) / "firmware-test" / stem;
+  fs::create_directories(out);
+  const std::string name = stem + "-64x64";
+
+  const std::string command =
+      fmt::format("cd {} && LATTICE_EXE={} bash scripts/firmware.sh {} --size 64x64 --out {} >{}/run.log 2>&1",
+                  LATTICE_SOURCE_DIR, lattice::testing::latticeBinary().string(), scene, out.string(), out.string());
+  const int status = std::system(command.c_str());
+  INFO(readText(out / "run.log"));
+  REQUIRE(status == 0);
+
+  // The host's stream, same size, same settings, same histogram form.
+  const fs::path hostStream = out / "host.tek";
+  const auto host = lattice::testing::runLattice(
+      fmt::format("render {}/{} --arith fixed --device tek4125 --width 64 --height 64 --histogram small -q "
+                  "--stream {}",
+                  LATTICE_SOURCE_DIR, scene, hostStream.string()));
+  INFO(host.stderrText);
+  REQUIRE(host.exitCode == 0);
+  const std::vector<std::uint8_t> mcu = readWholeFile(out / (name + ".tek"));
+  const std::vector<std::uint8_t> ours = readWholeFile(hostStream);
+  REQUIRE(mcu.size() > 100);
+  CHECK(mcu.size() == ours.size());
+  CHECK(mcu == ours);
+
+  // The firmware's own report: RAM peak within the budget.
+  const std::string report = readText(out / (name + ".report"));
+  std::smatch m;
+  REQUIRE(std::regex_search(report, m, std::regex(R"(RAM peak (\d+) B of 262144)")));
+  CHECK(std::stoul(m[1]) <= 262144u);
+
+  // The picture the stream draws, cut out of the screen, is the golden.
+  const tek4125::Tek4125Profile profile;
+  auto decoder = tek4125::makeTek4125Decoder(profile);
+  decoder->feed(mcu);
+  decoder->finish();
+  CHECK(decoder->report().unknownCommands + decoder->report().malformed == 0);
+  const IndexedImage& screen = decoder->image();
+  const tek4125::Tek4125Placement place = tek4125::placePicture(profile, 64, 64);
+  const int top = profile.height - 1 - (place.bottom + 64 - 1);
+  IndexedImage picture(64, 64);
+  picture.colormap = screen.colormap;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) picture.at(x, y) = screen.at(x + place.left, y + top);
+  lattice::testing::checkGoldenPng(fmt::format("firmware/{}_64x64.png", stem), toRgbImage(picture));
+}
+
+}  // namespace
+
+TEST_CASE("sphere-hole on the emulated Cortex-M3 streams the host's bytes", "[firmware]") {
+  runScene("scenes/sphere-hole.toml");
+}
+
+TEST_CASE("the lattice hook on the emulated Cortex-M3 streams the host's bytes", "[firmware]") {
+  runScene("scenes/hook.toml");
+}
