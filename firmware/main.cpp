@@ -48,6 +48,11 @@ int run() {
                          report.distinctColors, renderer.raysTraced()));
   hostReport(fmt::format("firmware: RAM peak {} B of 262144 (data {} + bss {} + heap {} of {} + stack {} of {})\n",
                          m.total(), m.data, m.bss, m.heapPeak, m.heapLimit, m.stackPeak, m.stackSize));
+  if (m.stackPeak >= m.stackSize) {
+    // The painted stack is used up to its limit: it may have run into the heap.
+    hostReport(fmt::format("firmware: the stack reached its limit ({} B): it may have overflowed\n", m.stackSize));
+    return static_cast<int>(ErrorKind::Internal);
+  }
   // Under `qemu -icount shift=0` this is the instruction count (firmware/virtual_clock.hpp).
   hostReport(fmt::format("firmware: virtual time {} ns ({} SysTick ticks of {} ns)\n", ticks * kTickNanoseconds,
                          ticks, kTickNanoseconds));
