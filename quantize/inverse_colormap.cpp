@@ -28,17 +28,8 @@ InverseColorMap::InverseColorMap(Palette palette, std::vector<std::uint32_t> sto
 InverseColorMap InverseColorMap::uncached(Palette palette) { return InverseColorMap(std::move(palette), false); }
 
 PaletteIndex InverseColorMap::nearestInPalette(Color18 color) const {
-  const int r = expand6to8(red6(color)), g = expand6to8(green6(color)), b = expand6to8(blue6(color));
-  std::size_t best = 0;
-  int bestDistance = distanceSquared(r, g, b, palette_[0]);
-  for (std::size_t i = 1; i < palette_.size() && bestDistance > 0; ++i) {
-    const int d = distanceSquared(r, g, b, palette_[i]);
-    if (d < bestDistance) {  // strict: the lowest index keeps a tie
-      bestDistance = d;
-      best = i;
-    }
-  }
-  return static_cast<PaletteIndex>(best);
+  return static_cast<PaletteIndex>(
+      nearestEntry(expand6to8(red6(color)), expand6to8(green6(color)), expand6to8(blue6(color)), palette_));
 }
 
 void InverseColorMap::throwBadColor(Color18 color) {

@@ -181,16 +181,7 @@ void refinePalette(const Histogram& histogram, Palette& palette, int iterations)
     std::fill(sums.begin(), sums.end(), Accumulator{});
     histogram.forEach([&](Color18 c, std::uint32_t n) {
       int r = expand6to8(red6(c)), g = expand6to8(green6(c)), b = expand6to8(blue6(c));
-      std::size_t best = 0;
-      int bestDistance = distanceSquared(r, g, b, palette[0]);
-      for (std::size_t i = 1; i < palette.size() && bestDistance > 0; ++i) {
-        int d = distanceSquared(r, g, b, palette[i]);
-        if (d < bestDistance) {
-          bestDistance = d;
-          best = i;
-        }
-      }
-      Accumulator& acc = sums[best];
+      Accumulator& acc = sums[nearestEntry(r, g, b, palette)];
       acc.n += n;
       acc.r += double(n) * r;
       acc.g += double(n) * g;

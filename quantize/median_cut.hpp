@@ -29,6 +29,21 @@ constexpr int distanceSquared(int r, int g, int b, Rgb8 c) {
   return dr * dr + dg * dg + db * db;
 }
 
+// The nearest entry of a non-empty palette to (r, g, b), the lowest index on
+// ties: by a scan (the inverse map's uncached form and the refinement).
+inline std::size_t nearestEntry(int r, int g, int b, const Palette& palette) {
+  std::size_t best = 0;
+  int bestDistance = distanceSquared(r, g, b, palette[0]);
+  for (std::size_t i = 1; i < palette.size() && bestDistance > 0; ++i) {
+    const int d = distanceSquared(r, g, b, palette[i]);
+    if (d < bestDistance) {  // strict: the lowest index keeps a tie
+      bestDistance = d;
+      best = i;
+    }
+  }
+  return best;
+}
+
 // Moves each palette entry to the weighted mean of the histogram cells whose
 // nearest entry it is, `iterations` times (or until nothing moves).
 void refinePalette(const Histogram& histogram, Palette& palette, int iterations);
