@@ -31,9 +31,13 @@ class QuarticLeafDesc final : public LeafTemplate<QuarticLeafDesc> {
   std::string name_;
 };
 
+// A capsule (and a sphere: a capsule of length 0), built by
+// render/csg_shapes.hpp: closed form in float and double, quartics in fixed
+// point.
 class CapsuleLeafDesc final : public LeafTemplate<CapsuleLeafDesc> {
  public:
-  CapsuleLeafDesc(double radius, double length) : radius_(radius), length_(length) {}
+  CapsuleLeafDesc(double radius, double length, std::string name)
+      : radius_(radius), length_(length), name_(std::move(name)) {}
   template <typename T>
   PrimitivePtr<T> buildAs(const Mat4d& toWorld, MaterialId m, const BuildOptions&) const {
     return makeCapsule<T>(radius_, length_, toWorld, m);
@@ -41,14 +45,16 @@ class CapsuleLeafDesc final : public LeafTemplate<CapsuleLeafDesc> {
   Bounds<double> objectBounds() const override {
     return {Vec3d(-radius_, -radius_, -radius_), Vec3d(radius_, radius_, length_ + radius_)};
   }
-  std::string describe() const override { return "capsule"; }
+  std::string describe() const override { return name_; }
   std::string bake(SceneBaker& baker) const override {
     baker.include("render/leaf_descs.hpp");
-    return fmt::format("lattice::makeCapsuleLeafDesc({}, {})", baker.number(radius_), baker.number(length_));
+    return fmt::format("lattice::makeCapsuleLeafDesc({}, {}, \"{}\")", baker.number(radius_), baker.number(length_),
+                       name_);
   }
 
  private:
   double radius_, length_;
+  std::string name_;
 };
 
 }  // namespace
@@ -56,8 +62,8 @@ class CapsuleLeafDesc final : public LeafTemplate<CapsuleLeafDesc> {
 LeafDescPtr makeQuarticLeafDesc(QuarticShape shape, std::string name) {
   return std::make_shared<QuarticLeafDesc>(std::move(shape), std::move(name));
 }
-LeafDescPtr makeCapsuleLeafDesc(double radius, double length) {
-  return std::make_shared<CapsuleLeafDesc>(radius, length);
+LeafDescPtr makeCapsuleLeafDesc(double radius, double length, std::string name) {
+  return std::make_shared<CapsuleLeafDesc>(radius, length, std::move(name));
 }
 
 }  // namespace lattice

@@ -1,7 +1,7 @@
 #pragma once
 // The built-in leaves of a scene, as objects a program can make without the
-// scene loader: a single quartic (thesis 3.2.1) and a capsule (a CSG
-// composite of quartics, render/csg_shapes.hpp). The loader's node types
+// scene loader: a single quartic (thesis 3.2.1) and a capsule (a sphere is
+// one of length 0; render/csg_shapes.hpp). The loader's node types
 // (render/node_types.cpp) and a baked scene (docs/firmware.md) both use these.
 #include <string>
 
@@ -11,6 +11,6 @@
 namespace lattice {
 
 LeafDescPtr makeQuarticLeafDesc(QuarticShape shape, std::string name);
-LeafDescPtr makeCapsuleLeafDesc(double radius, double length);
+LeafDescPtr makeCapsuleLeafDesc(double radius, double length, std::string name = "capsule");
 
 }  // namespace lattice

@@ -113,7 +113,9 @@ std::map<std::string, NodeParser> builtinNodeTypes() {
   types["sphere"] = [](const toml::table& t, ParseContext& ctx) {
     ctx.checkKeys(t, {"radius"}, true);
     const double r = ctx.positiveNumber(t, "radius");
-    return quarticNode(t, ctx, "sphere", [&] { return sphere(r); });
+    // The same solid as the quartic x^2 + y^2 + z^2 = r^2 (which fixed point
+    // still builds), solved in closed form in float and double.
+    return NodeDesc::makeLeaf(makeCapsuleLeafDesc(r, 0.0, "sphere"), ctx.where(t));
   };
   types["ellipsoid"] = [](const toml::table& t, ParseContext& ctx) {
     ctx.checkKeys(t, {"radii"}, true);
