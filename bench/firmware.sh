@@ -25,6 +25,7 @@ while (($#)); do
   case $1 in
     --size) size=$2; shift 2 ;;
     --scene) scene=$2; shift 2 ;;
+    -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "bench/firmware.sh: unknown option $1" >&2; exit 2 ;;
   esac
 done
