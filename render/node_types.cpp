@@ -29,6 +29,12 @@ class QuarticLeafDesc final : public LeafTemplate<QuarticLeafDesc> {
   }
   Bounds<double> objectBounds() const override { return shape_.bounds; }
   std::string describe() const override { return name_; }
+  LeafShape shape() const override {
+    LeafShape s;
+    s.kind = LeafShape::Kind::Quartic;
+    s.quartic = shape_;
+    return s;
+  }
 
  private:
   QuarticShape shape_;
@@ -47,6 +53,13 @@ class CapsuleLeafDesc final : public LeafTemplate<CapsuleLeafDesc> {
     return {Vec3d(-radius_, -radius_, -radius_), Vec3d(radius_, radius_, length_ + radius_)};
   }
   std::string describe() const override { return "capsule"; }
+  LeafShape shape() const override {
+    LeafShape s;
+    s.kind = LeafShape::Kind::Capsule;
+    s.radius = radius_;
+    s.length = length_;
+    return s;
+  }
 
  private:
   double radius_, length_;
