@@ -9,6 +9,7 @@
 // quadric or a torus; exporter/quartic_forms.hpp). A lattice answers with the
 // exact object it was rasterized from, shared by all its instances.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/shapes.hpp"
@@ -33,6 +34,27 @@ struct LeafShape {
   const NodeDesc* object = nullptr;  // Lattice: owned by the definition, which outlives the scene
   std::string name;                  // Lattice: the definition's name
   bool castsShadows = true;          // Lattice: false for `shadows = false` (thesis plate 3)
+
+  static LeafShape ofQuartic(const QuarticShape& shape) {
+    LeafShape s;
+    s.kind = Kind::Quartic;
+    s.quartic = shape;
+    return s;
+  }
+  static LeafShape ofCapsule(double radius, double length) {
+    LeafShape s;
+    s.kind = Kind::Capsule;
+    s.radius = radius;
+    s.length = length;
+    return s;
+  }
+  static LeafShape ofPolyline(std::vector<Vec3d> points, double radius) {
+    LeafShape s;
+    s.kind = Kind::Polyline;
+    s.points = std::move(points);
+    s.radius = radius;
+    return s;
+  }
 };
 
 }  // namespace lattice

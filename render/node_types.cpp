@@ -29,12 +29,7 @@ class QuarticLeafDesc final : public LeafTemplate<QuarticLeafDesc> {
   }
   Bounds<double> objectBounds() const override { return shape_.bounds; }
   std::string describe() const override { return name_; }
-  LeafShape shape() const override {
-    LeafShape s;
-    s.kind = LeafShape::Kind::Quartic;
-    s.quartic = shape_;
-    return s;
-  }
+  LeafShape shape() const override { return LeafShape::ofQuartic(shape_); }
 
  private:
   QuarticShape shape_;
@@ -53,13 +48,7 @@ class CapsuleLeafDesc final : public LeafTemplate<CapsuleLeafDesc> {
     return {Vec3d(-radius_, -radius_, -radius_), Vec3d(radius_, radius_, length_ + radius_)};
   }
   std::string describe() const override { return "capsule"; }
-  LeafShape shape() const override {
-    LeafShape s;
-    s.kind = LeafShape::Kind::Capsule;
-    s.radius = radius_;
-    s.length = length_;
-    return s;
-  }
+  LeafShape shape() const override { return LeafShape::ofCapsule(radius_, length_); }
 
  private:
   double radius_, length_;
