@@ -16,7 +16,8 @@
 # set-up, no lattice rasterizing, no PNG; POV-Ray, its "Trace Time"
 # statistic; Embree, embree_peer's trace_seconds (no load, no BVH build, no
 # PNG). Whole process: wall time of the command, everything included (ours
-# rasterizes the lattice table; POV-Ray parses the exported file).
+# rasterizes the lattice table; POV-Ray parses the exported file), and its
+# CPU time (user + system) when GNU time is installed.
 # --sphere-sweep adds POV-Ray rows for the export with sphere_sweep hair.
 # A scene a peer cannot trace (Embree: CSG, tori) gets a row saying why.
 # Peers: povray, libembree-dev (scripts/setup.sh --bench); python3 for the table.
@@ -59,18 +60,27 @@ if [[ -z "$images" ]]; then
   trap 'rm -rf "$images"' EXIT
 fi
 mkdir -p "$images"
-raw="$images/raw.tsv"        # scene threads program run whole_s trace_s
+gnutime=""
+[[ -x /usr/bin/time ]] && /usr/bin/time -f %U true 2>/dev/null && gnutime=/usr/bin/time
+raw="$images/raw.tsv"        # scene threads program run whole_s whole_cpu_s trace_s
 notes="$images/notes.tsv"    # scene program note
 : >"$raw"
 : >"$notes"
 
-# Runs "$@" with stdout and stderr to $images/log; prints its wall seconds.
+# Runs "$@" with stdout and stderr to $images/log; prints "wall cpu": its wall
+# seconds and, with GNU time, its CPU seconds (user + system, all threads;
+# steadier than wall time while other jobs share the cores), else "-".
 wall() {
-  local t0=$EPOCHREALTIME status=0
-  "$@" >"$images/log" 2>&1 || status=$?
+  local t0=$EPOCHREALTIME status=0 cpu="-"
+  if [[ -n "$gnutime" ]]; then
+    "$gnutime" -f '%U %S' -o "$images/cpu" "$@" >"$images/log" 2>&1 || status=$?
+  else
+    "$@" >"$images/log" 2>&1 || status=$?
+  fi
   local t1=$EPOCHREALTIME
   ((status == 0)) || return $status
-  python3 -c "print(f'{$t1 - $t0:.4f}')"
+  [[ -z "$gnutime" ]] || cpu=$(awk 'END { printf "%.4f", $1 + $2 }' "$images/cpu")
+  awk -v a="$t0" -v b="$t1" -v c="$cpu" 'BEGIN { printf "%.4f %s\n", b - a, c }'
 }
 
 size_of() { grep -m1 -o '+W[0-9]* +H[0-9]*' "$1" | tr -d '+WH'; }
@@ -90,7 +100,7 @@ programs() {
   ((have_embree == 0)) || echo embree
 }
 
-# One run of one program: appends "scene threads program run whole trace" to raw.
+# One run of one program: appends "scene threads program run whole cpu trace" to raw.
 run_one() {
   local scene=$1 threads=$2 program=$3 r=$4 file="$root/scenes/$1.toml" whole trace w h pov
   case "$program" in
@@ -115,7 +125,8 @@ run_one() {
       trace=$(awk '$1 == "trace_seconds" { print $2 }' "$images/log") ;;
   esac
   [[ -n "$trace" ]] || { echo "peers.sh: no trace time from $program on $scene:" >&2; cat "$images/log" >&2; exit 1; }
-  printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$scene" "$threads" "$program" "$r" "$whole" "$trace" >>"$raw"
+  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$scene" "$threads" "$program" "$r" "${whole% *}" "${whole#* }" "$trace" \
+    >>"$raw"
 }
 
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
