@@ -15,7 +15,8 @@
 //    averaged and reported in `notes`;
 //  * shapes: a quartic leaf as POV-Ray's closed form where it is one
 //    (exporter/quartic_forms.hpp: plane, sphere, quadric, torus), else
-//    `quartic { ... sturm }`; CSG as union / intersection / difference;
+//    `quartic { ... sturm }` (a finite leaf box as `bounded_by`); CSG as
+//    union / intersection / difference;
 //    each node's transform as one `matrix`; a lattice as its exact object
 //    (spheres + capped cylinders, or `sphere_sweep` with options.sphereSweep),
 //    declared once per lattice and material and placed per instance.

@@ -70,6 +70,10 @@ void PovObjectWriter::leaf(std::string& out, const NodeDesc& n, MaterialId mater
 void PovObjectWriter::quartic(std::string& out, const QuarticShape& shape, const std::string& modifiers, int depth) {
   const QuarticForm form = classifyQuartic(shape.f);
   const std::string pad = indent(depth);
+  // POV-Ray takes quadrics and quartics as infinite; a finite box saves it work.
+  std::string bounded;
+  if (shape.bounds.isFinite())
+    bounded = fmt::format(" bounded_by {{ box {{ {}, {} }} }}", povVector(shape.bounds.lo), povVector(shape.bounds.hi));
   switch (form.kind) {
     case QuarticForm::Kind::Plane:
       out += fmt::format("{}plane {{ {}, {} {} }}\n", pad, povVector(form.normal), povNumber(form.offset), modifiers);
@@ -79,8 +83,9 @@ void PovObjectWriter::quartic(std::string& out, const QuarticShape& shape, const
       return;
     case QuarticForm::Kind::Quadric: {
       const auto& q = form.quadric;
-      out += fmt::format("{}quadric {{ {}, {}, {}, {} {} }}\n", pad, povVector({q[0], q[1], q[2]}),
-                         povVector({q[3], q[4], q[5]}), povVector({q[6], q[7], q[8]}), povNumber(q[9]), modifiers);
+      out += fmt::format("{}quadric {{ {}, {}, {}, {}{} {} }}\n", pad, povVector({q[0], q[1], q[2]}),
+                         povVector({q[3], q[4], q[5]}), povVector({q[6], q[7], q[8]}), povNumber(q[9]), bounded,
+                         modifiers);
       return;
     }
     case QuarticForm::Kind::Torus:
@@ -94,9 +99,6 @@ void PovObjectWriter::quartic(std::string& out, const QuarticShape& shape, const
   std::string coefficients;
   for (double c : povQuarticOrder(shape.f)) fmt::format_to(std::back_inserter(coefficients), "{}{}", coefficients.empty() ? "" : ", ",
                                                       povNumber(c));
-  std::string bounded;
-  if (shape.bounds.isFinite())
-    bounded = fmt::format(" bounded_by {{ box {{ {}, {} }} }}", povVector(shape.bounds.lo), povVector(shape.bounds.hi));
   out += fmt::format("{}quartic {{ <{}> sturm{} {} }}\n", pad, coefficients, bounded, modifiers);
 }
 
