@@ -84,6 +84,10 @@ class Flattener {
             std::optional<MaterialId> material, PeerObject& into) {
     const auto s = similarityScale(toWorld);
     if (!s) refuse(n, "a tube under a transform that is not a similarity");
+    if (points.size() == 2 && points[0] == points[1]) {  // a capsule of length 0 (a scene's sphere) is a ball
+      into.spheres.push_back({apply(toWorld, points[0]), radius * *s, material});
+      return;
+    }
     PeerTube t{{}, radius * *s, material};
     for (const Vec3d& p : points) t.points.push_back(apply(toWorld, p));
     into.tubes.push_back(std::move(t));
