@@ -11,6 +11,7 @@ namespace lattice::app {
 void addBake(CLI::App& root);
 void addDiff(CLI::App& root);
 void addEmulate(CLI::App& root);
+void addExport(CLI::App& root);
 void addLhtInfo(CLI::App& root);
 void addPorts(CLI::App& root);
 void addQuantize(CLI::App& root);
@@ -22,7 +23,7 @@ void addTable1(CLI::App& root);
 using CommandAdder = void (*)(CLI::App& root);
 
 // In the order `lattice --help` lists them.
-inline constexpr CommandAdder kCommands[] = {addBake,     addDiff,   addEmulate, addLhtInfo, addPorts,
+inline constexpr CommandAdder kCommands[] = {addBake,     addDiff,   addEmulate, addExport, addLhtInfo, addPorts,
                                              addQuantize, addRasterize, addRender, addSend,   addTable1};
 
 }  // namespace lattice::app

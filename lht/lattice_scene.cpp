@@ -48,6 +48,15 @@ class LatticeLeafDesc final : public LeafTemplate<LatticeLeafDesc> {
                            definition_->objectBounds());
   }
 
+  LeafShape shape() const override {
+    LeafShape s;
+    s.kind = LeafShape::Kind::Lattice;
+    s.object = &definition_->object;
+    s.name = definition_->name;
+    s.castsShadows = definition_->shadows;
+    return s;
+  }
+
   const LatticeDefinitionPtr& definition() const { return definition_; }
 
  private:

@@ -17,6 +17,7 @@ class QuarticLeafDesc final : public LeafTemplate<QuarticLeafDesc> {
   }
   Bounds<double> objectBounds() const override { return shape_.bounds; }
   std::string describe() const override { return name_; }
+  LeafShape shape() const override { return LeafShape::ofQuartic(shape_); }
   std::string bake(SceneBaker& baker) const override {
     baker.include("render/leaf_descs.hpp");
     std::string terms;
@@ -46,6 +47,7 @@ class CapsuleLeafDesc final : public LeafTemplate<CapsuleLeafDesc> {
     return {Vec3d(-radius_, -radius_, -radius_), Vec3d(radius_, radius_, length_ + radius_)};
   }
   std::string describe() const override { return name_; }
+  LeafShape shape() const override { return LeafShape::ofCapsule(radius_, length_); }
   std::string bake(SceneBaker& baker) const override {
     baker.include("render/leaf_descs.hpp");
     return fmt::format("lattice::makeCapsuleLeafDesc({}, {}, \"{}\")", baker.number(radius_), baker.number(length_),

@@ -43,6 +43,7 @@ class PolylineLeafDesc final : public LeafTemplate<PolylineLeafDesc> {
     for (const Vec3d& p : points_) points += (points.empty() ? "" : ", ") + baker.vec3(p);
     return fmt::format("lattice::makePolylineLeafDesc({{{}}}, {})", points, baker.number(radius_));
   }
+  LeafShape shape() const override { return LeafShape::ofPolyline(points_, radius_); }
 
  private:
   std::vector<Vec3d> points_;

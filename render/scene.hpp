@@ -17,6 +17,7 @@
 
 #include "foundation/bounds.hpp"
 #include "render/camera.hpp"
+#include "render/leaf_shape.hpp"
 #include "render/light.hpp"
 #include "render/material.hpp"
 #include "render/primitive.hpp"
@@ -63,6 +64,9 @@ class LeafDesc {
   // scene (render/scene_baker.hpp, docs/firmware.md). The default refuses
   // with lattice::Error(Usage) naming the leaf.
   virtual std::string bake(SceneBaker& baker) const;
+  // What it is made of, for writing the scene for another renderer
+  // (render/leaf_shape.hpp); Opaque unless the leaf type says.
+  virtual LeafShape shape() const { return {}; }
 
  protected:
   // Fills the slot `out` holds (its alternative names the arithmetic).
