@@ -17,6 +17,7 @@
 #include "devices/device_table.hpp"
 #include "foundation/arithmetics.hpp"
 #include "foundation/resident_memory.hpp"
+#include "lht/lht_form.hpp"
 
 namespace lattice::app {
 namespace {
@@ -26,6 +27,7 @@ struct RenderFlags {
   std::string device = "png";
   bool noLatticeShadows = false;
   std::string lhtPrecision;  // empty: each lattice's own `precision`
+  std::string lhtForm;       // empty: each lattice's own `form`
   std::string apolloProfile = "dn660";
   std::string memoryBudget;  // as typed
   PipelineArgs pipeline;
@@ -67,6 +69,13 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
                  fmt::format("LHT entry precision of every lattice, overriding the scene's `precision`: {} "
                              "(docs/lattices.md, \"Entry precision\")",
                              lht::lhtPrecisionChoices()));
+  cmd.add_option("--lht-form", f.lhtForm,
+                 fmt::format("LHT form of every lattice, overriding the scene's `form`: {} (docs/lattices.md, \"The "
+                             "compressed LHT\")",
+                             lht::lhtFormChoices()));
+  cmd.add_flag("--lht-stats", j.lhtStats,
+               "After rendering, print per lattice: look-ups, hits, misses, distinct (p_i, p_o) asked, entries "
+               "referenced (share of N_iz) and look-ups per entry (docs/lattices.md); off, nothing is counted");
   cmd.add_option("--memory-budget", f.memoryBudget,
                  "Keep peak resident memory within SIZE (8MiB, 8192K, 8388608): picks the quantizer mode and the "
                  "entry form of lattices rasterized now, or exits 8 saying why not (docs/memory.md)");
@@ -81,6 +90,7 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
   if (f.device == "apollo") job.settings.insert(job.settings.begin(), "profile=" + f.apolloProfile);
   job.latticeShadows = !f.noLatticeShadows;
   if (!f.lhtPrecision.empty()) job.precision = lht::parseLhtPrecision(f.lhtPrecision, "--lht-precision");
+  if (!f.lhtForm.empty()) job.form = lht::parseLhtForm(f.lhtForm, "--lht-form");
   if (!f.memoryBudget.empty()) job.memoryBudget = parseByteCount(f.memoryBudget, "--memory-budget");
   job.modeChosenByUser = cmd.count("--mode") > 0 || cmd.count("--sample") > 0;
   job.pipeline = toPipelineOptions(f.pipeline, cmd);

@@ -15,12 +15,14 @@
 #include <optional>
 #include <string>
 
+#include "lht/lht_form.hpp"
 #include "lht/lht_precision.hpp"
 #include "render/scene.hpp"
 
 namespace lattice::lht {
 
 class LatticeDefinition;
+class LookupStatsBook;
 
 // Under a memory budget: the entry form to pack a freshly rasterized table
 // in, given the form asked for, its entry count and the bytes its hit list
@@ -34,6 +36,10 @@ struct TableSettings {
   unsigned threads = 0;                   // rasterizer threads; 0: all cores
   bool progress = true;                   // a progress bar while rasterizing (on a terminal)
   TablePackingHook packing;               // unset: tables are packed as asked
+  std::optional<LhtForm> form;            // every table's form; unset: each definition's own
+  // Set: every lattice leaf counts its look-ups here (`render --lht-stats`,
+  // lht/lookup_stats.hpp); unset, the leaves count nothing.
+  std::shared_ptr<LookupStatsBook> stats;
 };
 
 class LatticeDefinition {
@@ -46,13 +52,16 @@ class LatticeDefinition {
   std::optional<std::filesystem::path> cache;
   bool shadows = true;  // false: this lattice casts no shadows (thesis plate 3)
   LhtPrecision precision = LhtPrecision::Thesis;  // the entry form the file asks for
+  LhtForm form = LhtForm::Hashed;                 // the table form the file asks for (`form`)
   std::string origin;                             // "scene.toml:12:1"
 
   // The entry form its table is built in under `settings`.
   LhtPrecision precisionUnder(const TableSettings& settings) const { return settings.precision.value_or(precision); }
+  // The table form under `settings`.
+  LhtForm formUnder(const TableSettings& settings) const { return settings.form.value_or(form); }
   // Hash of everything that decides the table's contents (the entry form
   // included, so a cache of another form is stale).
-  std::uint64_t hashFor(LhtPrecision form) const;
+  std::uint64_t hashFor(LhtPrecision entryForm) const;
   std::uint64_t hash() const { return hashFor(precision); }  // in the form the file asks for
   // The object's box in its own coordinates (computed once, shared by copies).
   const Bounds<double>& objectBounds() const;
