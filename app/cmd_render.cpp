@@ -28,6 +28,7 @@ struct RenderFlags {
   bool noLatticeShadows = false;
   std::string lhtPrecision;  // empty: each lattice's own `precision`
   std::string lhtForm;       // empty: each lattice's own `form`
+  std::string lhtCache;      // as typed
   std::string apolloProfile = "dn660";
   std::string memoryBudget;  // as typed
   PipelineArgs pipeline;
@@ -73,6 +74,9 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
                  fmt::format("LHT form of every lattice, overriding the scene's `form`: {} (docs/lattices.md, \"The "
                              "compressed LHT\")",
                              lht::lhtFormChoices()));
+  cmd.add_option("--lht-cache", f.lhtCache,
+                 "With --lht-form on-demand: the most memory its stored hits and misses take (8MiB, 65536K; default "
+                 "64MiB); beyond it new pairs are traced again rather than stored (docs/lattices.md)");
   cmd.add_flag("--lht-stats", j.lhtStats,
                "After rendering, print per lattice: look-ups, hits, misses, distinct (p_i, p_o) asked, entries "
                "referenced (share of N_iz) and look-ups per entry (docs/lattices.md); off, nothing is counted");
@@ -91,6 +95,7 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
   job.latticeShadows = !f.noLatticeShadows;
   if (!f.lhtPrecision.empty()) job.precision = lht::parseLhtPrecision(f.lhtPrecision, "--lht-precision");
   if (!f.lhtForm.empty()) job.form = lht::parseLhtForm(f.lhtForm, "--lht-form");
+  if (!f.lhtCache.empty()) job.onDemandCacheBytes = parseByteCount(f.lhtCache, "--lht-cache");
   if (!f.memoryBudget.empty()) job.memoryBudget = parseByteCount(f.memoryBudget, "--memory-budget");
   job.modeChosenByUser = cmd.count("--mode") > 0 || cmd.count("--sample") > 0;
   job.pipeline = toPipelineOptions(f.pipeline, cmd);

@@ -41,6 +41,7 @@ struct RenderJob {
   std::optional<lht::LhtPrecision> precision;  // every lattice's entry precision
   std::optional<lht::LhtForm> form;            // every lattice's table form
   bool lhtStats = false;                       // count and print the lattices' look-ups
+  std::optional<std::uint64_t> onDemandCacheBytes;  // the on-demand form's bound
   std::optional<std::uint64_t> memoryBudget;   // bytes of peak resident memory
   bool modeChosenByUser = false;               // the quantizer mode is the user's (not the budget's)
   quantize::PipelineOptions pipeline;

@@ -24,6 +24,9 @@ namespace lattice::lht {
 class LatticeDefinition;
 class LookupStatsBook;
 
+// 64 MiB: Plate 7 at f_lat 4 stores 1.3 million answers (62 MiB at 48 bytes).
+inline constexpr std::uint64_t kDefaultOnDemandCacheBytes = std::uint64_t(64) << 20;
+
 // Under a memory budget: the entry form to pack a freshly rasterized table
 // in, given the form asked for, its entry count and the bytes its hit list
 // holds meanwhile. A table packed in another form than asked is not written
@@ -37,6 +40,8 @@ struct TableSettings {
   bool progress = true;                   // a progress bar while rasterizing (on a terminal)
   TablePackingHook packing;               // unset: tables are packed as asked
   std::optional<LhtForm> form;            // every table's form; unset: each definition's own
+  // The on-demand form's bound on stored answers (`--lht-cache SIZE`).
+  std::uint64_t onDemandCacheBytes = kDefaultOnDemandCacheBytes;
   // Set: every lattice leaf counts its look-ups here (`render --lht-stats`,
   // lht/lookup_stats.hpp); unset, the leaves count nothing.
   std::shared_ptr<LookupStatsBook> stats;

@@ -80,6 +80,9 @@ std::uint64_t fnv1a64(std::string_view text) {
 }
 
 std::vector<std::uint8_t> serializeLht(const LhtFile& lht) {
+  if (lht.form == LhtForm::OnDemand)
+    throw Error(ErrorKind::Usage, "an on-demand table is built while rendering and never written to a .lht file; "
+                                  "rasterize it as hashed or compressed");
   const bool compressed = lht.form == LhtForm::Compressed;
   Writer w;
   w.bytes(kMagic, sizeof kMagic);
@@ -203,7 +206,7 @@ LhtHeader parseHeader(std::span<const std::uint8_t> prefix, std::uint64_t size, 
     const auto formCode = static_cast<std::uint16_t>(r.uint(2));
     const auto layoutCode = static_cast<std::uint16_t>(r.uint(2));
     const auto form = lhtFormFromCode(formCode);
-    if (!form)
+    if (!form || *form == LhtForm::OnDemand)
       throw bad(name, fmt::format("unknown LHT form code {} at byte 108 (this program knows 0 hashed, 1 compressed)",
                                   formCode));
     if (layoutCode > static_cast<std::uint16_t>(PairLayout::Ordered))

@@ -40,6 +40,7 @@
 #include "lht/lattice_box.hpp"
 #include "lht/compressed_table.hpp"
 #include "lht/lht_form.hpp"
+#include "lht/on_demand_table.hpp"
 #include "lht/table.hpp"
 
 namespace lattice::lht {
@@ -57,12 +58,26 @@ struct LhtFile {
   std::uint64_t hits = 0;   // N_iz
   LhtForm form = LhtForm::Hashed;
   LatticeHashTable table;      // the hashed form's table (empty when compressed)
-  CompressedTable compressed;  // the compressed form's table (empty when hashed)
+  CompressedTable compressed;  // the compressed form's table (empty otherwise)
+  std::shared_ptr<const OnDemandTable> onDemand;  // the on-demand form's table (null otherwise)
 
-  LhtPrecision precision() const { return form == LhtForm::Compressed ? compressed.precision() : table.precision(); }
-  std::uint64_t entryCount() const { return form == LhtForm::Compressed ? compressed.entryCount() : table.entryCount(); }
-  // The table's bytes in memory (for the compressed form with its rank directory).
-  std::uint64_t tableBytes() const { return form == LhtForm::Compressed ? compressed.bytes() : table.bytes(); }
+  LhtPrecision precision() const {
+    return form == LhtForm::Compressed ? compressed.precision()
+           : form == LhtForm::OnDemand ? onDemand->precision()
+                                       : table.precision();
+  }
+  // Entries held (on demand: the hits stored so far).
+  std::uint64_t entryCount() const {
+    return form == LhtForm::Compressed ? compressed.entryCount()
+           : form == LhtForm::OnDemand ? onDemand->entryCount()
+                                       : table.entryCount();
+  }
+  // The table's bytes in memory (compressed: with its rank directory; on demand: so far).
+  std::uint64_t tableBytes() const {
+    return form == LhtForm::Compressed ? compressed.bytes()
+           : form == LhtForm::OnDemand ? onDemand->bytes()
+                                       : table.bytes();
+  }
 };
 
 // FNV-1a, 64 bit: the object hash and the file checksum.

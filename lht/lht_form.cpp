@@ -11,9 +11,10 @@ namespace lattice::lht {
 
 namespace {
 
-constexpr std::array<std::pair<LhtForm, std::string_view>, 2> kForms = {{
+constexpr std::array<std::pair<LhtForm, std::string_view>, 3> kForms = {{
     {LhtForm::Hashed, "hashed"},
     {LhtForm::Compressed, "compressed"},
+    {LhtForm::OnDemand, "on-demand"},
 }};
 
 }  // namespace

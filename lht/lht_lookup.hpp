@@ -12,10 +12,12 @@ class LhtLookup {
  public:
   explicit LhtLookup(const LhtFile& lht)
       : hashed_(&lht.table), compressed_(lht.form == LhtForm::Compressed ? &lht.compressed : nullptr),
-        precision_(lht.precision()) {}
+        onDemand_(lht.form == LhtForm::OnDemand ? lht.onDemand.get() : nullptr), precision_(lht.precision()) {}
 
   const std::uint8_t* payload(const LatticePoint& in, const LatticePoint& out) const {
-    return compressed_ ? compressed_->findPayload(in, out) : hashed_->findPayload(in, out);
+    if (compressed_) return compressed_->findPayload(in, out);
+    if (onDemand_) return onDemand_->findPayload(in, out);
+    return hashed_->findPayload(in, out);
   }
   std::optional<LhtHit> find(const LatticePoint& in, const LatticePoint& out) const {
     const std::uint8_t* p = payload(in, out);
@@ -27,6 +29,7 @@ class LhtLookup {
  private:
   const LatticeHashTable* hashed_;
   const CompressedTable* compressed_;
+  const OnDemandTable* onDemand_;
   LhtPrecision precision_;
 };
 

@@ -27,6 +27,8 @@ LookupSummary LookupStats::summary() const {
   s.nIz = lht_->hits;
   s.oversample = lht_->box.oversample();
   s.distinctCounted = !asked_.empty();
+  // Before the walk below, whose look-ups an on-demand table would answer too.
+  if (lht_->form == LhtForm::OnDemand) s.onDemand = lht_->onDemand->counts();
   const LhtLookup lookup(*lht_);
   for (std::size_t w = 0; w < asked_.size(); ++w) {
     for (std::uint64_t word = asked_[w].load(std::memory_order_relaxed); word; word &= word - 1) {
@@ -65,6 +67,14 @@ std::string describeLookups(const LookupSummary& s) {
   if (!s.distinctCounted) return out + "; distinct pairs not counted (pair space above 2^33 bits)";
   out += fmt::format("\n  distinct (p_i, p_o) asked: {} ({:.3f} % of the {} ordered pairs)", s.distinctPairs,
                      percent(s.distinctPairs, s.pairSpace), s.pairSpace);
+  if (s.onDemand) {
+    const OnDemandCounts& d = *s.onDemand;
+    out += fmt::format("\n  built on demand: {} hits and {} misses stored ({} bytes of the {}-byte cache), {} pairs "
+                       "traced, {} stores refused (cache full)",
+                       d.hitsStored, d.missesStored, (d.hitsStored + d.missesStored) * OnDemandTable::kStoredBytes,
+                       d.capacityBytes, d.traced, d.refused);
+    return out;
+  }
   out += fmt::format("\n  entries referenced: {} of {} ({:.2f} %); {:.2f} % of N_iz = {} counted as eq. 1.3 does",
                      s.entriesReferenced, s.entries, percent(s.entriesReferenced, s.entries),
                      percent(s.nIzReferenced, s.nIz), s.nIz);

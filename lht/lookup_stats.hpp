@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,7 @@ struct LookupSummary {
   std::uint64_t nIzReferenced = 0;         // referenced entries weighted the same way
   std::uint64_t offSurface = 0;            // look-ups whose points were not on the box's surface
   double oversample = 1.0;
+  std::optional<OnDemandCounts> onDemand;  // the on-demand form: what it built
 };
 
 class LookupStats {

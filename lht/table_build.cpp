@@ -19,6 +19,9 @@ BuiltTable packTable(const LatticeObject& object, double lambda, double oversamp
                      LhtForm tableForm,
                      const std::function<LhtPrecision(std::uint64_t, std::uint64_t)>& chooseForm,
                      const std::function<std::uint64_t(LhtPrecision)>& hashFor) {
+  if (tableForm == LhtForm::OnDemand)
+    throw Error(ErrorKind::Usage, "an on-demand table is built while rendering, not rasterized; use --form hashed or "
+                                  "compressed");
   BuiltTable built;
   LhtFile& lht = built.lht;
   lht.box = LatticeBox(object.bounds, lambda, oversample);

@@ -3,19 +3,14 @@
 // .lht version 3 with the bounded reader's checks.
 #include <catch2/catch.hpp>
 
-#include <fmt/format.h>
-
 #include <cstring>
 #include <filesystem>
 
 #include "foundation/atomic_file.hpp"
 #include "foundation/error.hpp"
-#include "foundation/fixed.hpp"
 #include "lht/lattice_object.hpp"
-#include "lht/lattice_scene.hpp"
 #include "lht/lht_file.hpp"
 #include "lht/lht_lookup.hpp"
-#include "render/renderer.hpp"
 #include "tests/support/temp_dir.hpp"
 
 using namespace lattice;
@@ -227,90 +222,5 @@ TEST_CASE("compressed LHT: bad version-3 files are refused, every count checked 
     std::vector<std::uint8_t> bad = good;
     bad[good.size() - 12] ^= 0x04;
     CHECK(refusal(bad).find("checksum") != std::string::npos);
-  }
-}
-
-namespace {
-
-std::string hairScene(const std::string& latticeKeys) {
-  return R"(
-[options]
-width = 56
-height = 56
-[camera]
-type = "look_at"
-eye = [0.0, 1.0, -3.6]
-target = [0.0, 0.0, 0.0]
-fov = 40
-[[lights]]
-position = [4.0, 6.0, -5.0]
-intensity = 9.0
-[[lattices]]
-name = "hair"
-spacing = 0.03
-oversample = 2
-)" + latticeKeys + R"(
-object = { type = "polyline", radius = 0.015, points = [[0, 0, 0], [0.02, 0, 0.15], [0.08, 0.01, 0.3]] }
-[[objects]]
-type = "sphere"
-radius = 0.9
-[[objects]]
-type = "lattice_scatter"
-lattice = "hair"
-count = 200
-radius = 0.9
-seed = 7
-)";
-}
-
-template <typename T>
-RgbImage renderScene(const std::string& text, const std::filesystem::path& file, TableSettings tables = {}) {
-  tables.progress = false;
-  const SceneWithLattices loaded = parseSceneWithLattices(text, file, tables);
-  RenderSettings settings;
-  settings.threads = 2;
-  Renderer<T> renderer(loaded.scene, settings);
-  return renderImage(renderer);
-}
-
-}  // namespace
-
-TEST_CASE("compressed LHT: a scene renders byte-identical pictures in both forms, every precision and arithmetic") {
-  for (const LhtPrecisionInfo& p : kLhtPrecisions) {
-    INFO(p.name);
-    const std::string keys = fmt::format("precision = \"{}\"\n", p.name);
-    const std::string hashed = hairScene(keys + "form = \"hashed\"\n");
-    const std::string compressed = hairScene(keys + "form = \"compressed\"\n");
-    CHECK(renderScene<double>(hashed, "h.toml").rgb == renderScene<double>(compressed, "c.toml").rgb);
-    CHECK(renderScene<float>(hashed, "h.toml").rgb == renderScene<float>(compressed, "c.toml").rgb);
-    CHECK(renderScene<Fixed32>(hashed, "h.toml").rgb == renderScene<Fixed32>(compressed, "c.toml").rgb);
-  }
-  // The settings' form (`--lht-form`) overrides the scene's key.
-  TableSettings forced;
-  forced.form = LhtForm::Compressed;
-  CHECK(renderScene<double>(hairScene(""), "s.toml", forced).rgb == renderScene<double>(hairScene(""), "s.toml").rgb);
-}
-
-TEST_CASE("compressed LHT: a scene's cache is written as version 3, reused, and refused for the other form") {
-  const lattice::testing::TempDir dir("lht-form-cache");
-  const std::string text = hairScene("form = \"compressed\"\ncache = \"hair.lht\"\n");
-  const RgbImage first = renderScene<double>(text, dir / "s.toml");
-  const LhtFile cached = readLhtFile(dir / "hair.lht");
-  CHECK(cached.version == kLhtCompressedVersion);
-  CHECK(cached.form == LhtForm::Compressed);
-  CHECK(renderScene<double>(text, dir / "s.toml").rgb == first.rgb);  // read from the cache
-  TableSettings hashed;
-  hashed.form = LhtForm::Hashed;
-  try {
-    renderScene<double>(text, dir / "s.toml", hashed);
-    FAIL("a compressed cache served a hashed table");
-  } catch (const Error& e) {
-    CHECK(std::string(e.what()).find("holds a compressed table but a hashed one was asked for") != std::string::npos);
-  }
-  try {
-    parseSceneWithLattices(hairScene("form = \"zipped\"\n"), "bad.toml");
-    FAIL("an unknown form was accepted");
-  } catch (const Error& e) {
-    CHECK(std::string(e.what()).find("unknown LHT `form` 'zipped'; use one of hashed, compressed") != std::string::npos);
   }
 }
