@@ -5,9 +5,11 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/commands.hpp"
 #include "app/serial_args.hpp"
+#include "devices/device_table.hpp"
 #include "devices/work_budget.hpp"
 #include "foundation/atomic_file.hpp"
 #include "io/serial_sink.hpp"
@@ -19,9 +21,23 @@ namespace {
 
 struct SendArgs {
   std::string stream;
+  std::string device;                 // empty: send without waiting for answers
+  std::vector<std::string> settings;  // the device profile's --set overrides
   lattice::io::SerialOptions serial;
   std::uint64_t resume = 0;
 };
+
+// The flags a resumed send must repeat besides the line's.
+std::vector<std::string> deviceFlags(const SendArgs& args) {
+  std::vector<std::string> flags;
+  if (args.device.empty()) return flags;
+  flags = {"--device", args.device};
+  for (const std::string& setting : args.settings) {
+    flags.push_back("--set");
+    flags.push_back(setting);
+  }
+  return flags;
+}
 
 void runSend(const SendArgs& args) {
   // A stream the emulators would refuse as too long is no terminal stream.
@@ -30,11 +46,41 @@ void runSend(const SendArgs& args) {
   if (args.resume > bytes.size())
     throw lattice::Error(lattice::ErrorKind::Usage,
                          fmt::format("--resume {}: past the end of {} ({} bytes)", args.resume, args.stream, bytes.size()));
+  // A terminal that answers requests (the 4027's `!REP`) is sent one record
+  // at a time; without --device a paced stream would overrun its buffer, so
+  // say so (found by asking every device that paces where this stream asks).
+  lattice::io::ReplyGate gate;
+  bool gated = false;
+  if (!args.device.empty()) {
+    const lattice::devices::Device device = lattice::devices::makeDevice(args.device, args.settings);
+    if (device.replies) {
+      gate.points = device.replies->points(bytes);
+      gated = !gate.points.empty();
+    }
+  } else {
+    for (const auto& entry : lattice::devices::deviceTable()) {
+      const lattice::devices::Device device = entry.make({});
+      if (device.replies && !device.replies->points(bytes).empty())
+        fmt::print(stderr,
+                   "lattice send: note: {} holds {} report requests; a {} overruns its buffer unless each is "
+                   "answered before the next record: add --device {} to wait for the answers\n",
+                   args.stream, device.replies->points(bytes).size(), device.title, device.name);
+    }
+  }
   auto sink = lattice::io::openSerialSink(args.serial);
+  if (gated) {
+    const lattice::devices::Device device = lattice::devices::makeDevice(args.device, args.settings);
+    const int fd = sink->fd();
+    const double timeout = args.serial.stallTimeoutSeconds;
+    gate.await = [await = device.replies->await, fd, timeout] { await(fd, timeout); };
+    fmt::print(stderr, "lattice send: waiting for the {}'s answer after each of {} records\n", device.title,
+               gate.points.size());
+  }
   lattice::Progress progress("send", bytes.size() > args.resume ? bytes.size() - args.resume : 0, "B");
   try {
     auto result = lattice::io::sendStream(bytes, args.resume, *sink,
-                                      [&](std::uint64_t offset) { progress.set(offset - args.resume); });
+                                      [&](std::uint64_t offset) { progress.set(offset - args.resume); },
+                                          gated ? &gate : nullptr);
     progress.finish();
     fmt::print(stderr, "sent {} bytes to {} in {:.1f} s ({:.0f} B/s)\n", result.bytesSent, sink->path(),
                result.seconds, result.seconds > 0 ? static_cast<double>(result.bytesSent) / result.seconds : 0.0);
@@ -44,7 +90,7 @@ void runSend(const SendArgs& args) {
     progress.setEnabled(false);
     if (drawing) std::fputc('\n', stderr);
     fmt::print(stderr, "lattice: {} of {} bytes went out; to continue from there run:\n  {}\n",
-               fault.resumeOffset(), bytes.size(), lattice::io::resumeCommand(args.stream, args.serial, fault.resumeOffset()));
+               fault.resumeOffset(), bytes.size(), lattice::io::resumeCommand(args.stream, args.serial, fault.resumeOffset(), deviceFlags(args)));
     throw;
   }
 }
@@ -63,6 +109,13 @@ void addSend(CLI::App& root) {
   // Read (and refused with exit 3, naming the file) by readFileUpTo, not by a CLI check.
   cmd->add_option("STREAM", args->stream, "The command stream file to send")->required();
   lattice::app::addSerialOptions(cmd, args->serial);
+  cmd->add_option("--device", args->device,
+                  "The terminal the stream is for, when it paces the stream by answering requests: with tek4027, "
+                  "a stream paced with `!REP 00` (pacing=report or auto) is sent one record at a time, each after "
+                  "the terminal's answer to the one before (--stall-timeout bounds each wait)")
+      ->check(CLI::IsMember(lattice::devices::deviceNames()));
+  cmd->add_option("--set", args->settings,
+                  "With --device: override a profile assumption, key=value (repeatable), as for render");
   cmd->add_option("--resume", args->resume, "Start at this byte offset, as printed by a failed send")
       ->check(CLI::NonNegativeNumber);
   cmd->callback([args] { runSend(*args); });

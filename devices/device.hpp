@@ -9,7 +9,9 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "devices/stream_decoder.hpp"
 #include "foundation/byte_sink.hpp"
@@ -53,6 +55,16 @@ struct Device {
   // Optional.
   std::optional<LineFormat> line;  // the serial line it expects; none for a workstation display
   std::string profileText;         // its profile, one key=value per line
+
+  // Optional: how a sender of a stored stream keeps pace with a terminal that
+  // answers requests (the 4027's `!REP` pacing). `points` gives the offsets
+  // just past each request in a stream; `await` blocks on the line's
+  // descriptor until one answer has come, throwing Error(Stalled or HangUp).
+  struct ReplyPacing {
+    std::function<std::vector<std::size_t>(std::span<const std::uint8_t> stream)> points;
+    std::function<void(int fd, double timeoutSeconds)> await;
+  };
+  std::optional<ReplyPacing> replies;
 };
 
 }  // namespace lattice::devices

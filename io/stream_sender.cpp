@@ -28,30 +28,61 @@ std::string shellQuote(const std::string& text) {
 }  // namespace
 
 SendResult sendStream(std::span<const std::uint8_t> stream, std::uint64_t resumeOffset, SerialSink& sink,
-                      const SendProgress& progress) {
+                      const SendProgress& progress, const ReplyGate* gate) {
   if (resumeOffset > stream.size())
     throw Error(ErrorKind::Usage, fmt::format("--resume {}: past the end of the stream ({} bytes); use an offset "
                                               "from 0 to {}, as printed by the failed send",
                                               resumeOffset, stream.size(), stream.size()));
   auto start = std::chrono::steady_clock::now();
   sink.setStreamOffset(resumeOffset);
-  auto rest = stream.subspan(static_cast<std::size_t>(resumeOffset));
   std::uint64_t offset = resumeOffset;
-  while (!rest.empty()) {
-    auto chunk = rest.first(std::min(kChunk, rest.size()));
+  // Points at or before the resume offset were answered by the earlier run.
+  const std::vector<std::size_t> none;
+  const std::vector<std::size_t>& points = gate != nullptr ? gate->points : none;
+  auto next = std::upper_bound(points.begin(), points.end(), resumeOffset);
+  const std::size_t total = points.size();
+  while (offset < stream.size()) {
+    const std::uint64_t stop = next != points.end() ? std::min<std::uint64_t>(*next, stream.size()) : stream.size();
+    auto chunk = stream.subspan(static_cast<std::size_t>(offset),
+                                static_cast<std::size_t>(std::min<std::uint64_t>(kChunk, stop - offset)));
     sink.write(chunk);
     offset += chunk.size();
-    rest = rest.subspan(chunk.size());
     if (progress) progress(offset);
+    if (next != points.end() && offset == *next) {
+      const std::size_t ordinal = static_cast<std::size_t>(next - points.begin()) + 1;
+      try {
+        gate->await();
+      } catch (const SerialFault&) {
+        throw;
+      } catch (const Error& e) {
+        const bool stalled = e.kind() == ErrorKind::Stalled;
+        throw SerialFault(stalled ? ErrorKind::Stalled : ErrorKind::HangUp,
+                          stalled ? fmt::format("the terminal did not answer request {} of {} (ending at byte {}); is it "
+                                                "on line and set to answer reports? (leave out --device to send "
+                                                "without waiting)",
+                                                ordinal, total, offset)
+                                  : fmt::format("the line went away while waiting for the answer to request {} of {} "
+                                                "(ending at byte {})",
+                                                ordinal, total, offset),
+                          offset, offset);
+      }
+      ++next;
+    }
   }
   sink.close();
   return {offset - resumeOffset, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
 }
 
-std::string resumeCommand(const std::string& file, const SerialOptions& options, std::uint64_t offset) {
+std::string resumeCommand(const std::string& file, const SerialOptions& options, std::uint64_t offset,
+                          const std::vector<std::string>& extra) {
   SerialOptions quoted = options;
   quoted.port = shellQuote(options.port);
-  return fmt::format("lattice send {} {} --resume {}", shellQuote(file), serialFlags(quoted), offset);
+  std::string more;
+  for (const std::string& arg : extra) {
+    more += ' ';
+    more += shellQuote(arg);  // appended apart: gcc 12 misreads `" " + string` (-Wrestrict)
+  }
+  return fmt::format("lattice send {} {}{} --resume {}", shellQuote(file), serialFlags(quoted), more, offset);
 }
 
 }  // namespace lattice::io

@@ -127,35 +127,37 @@ class UnionNode final : public CsgNode<T> {
   // starts inside a child (rare: shadow rays start on surfaces, cameras
   // outside) takes the exact path through spans().
   bool firstHit(const Ray<T>& ray, T tmin, T tmax, Hit<T>& hit) const override {
-    T t0, t1;
-    if (this->bounds_.empty() || !this->bounds_.clip(ray, tmin, tmax, t0, t1)) return false;
-    T limit = tmax;
-    bool found = false, startsInside = false;
-    SpanList<T> list;
-    auto visit = [&](std::uint32_t child, T& lim) {
-      if (startsInside) return;
-      list.clear();
-      this->children_[child]->spans(ray, tmin, lim, list);
-      if (list.empty()) return;
-      const Span<T>& s = list[0];
-      if (s.enter.t <= tmin) {
-        startsInside = true;
-        lim = tmin;  // stops the traversal
-        return;
-      }
-      if (s.enter.t < lim) {
-        lim = s.enter.t;
-        hit = s.enter;
-        found = true;
-      }
-    };
-    for (std::uint32_t n : unbounded_) visit(n, limit);
-    if (!startsInside)
-      bvh_.visitFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) { visit(finite_[item], lim); });
-    if (!startsInside) return found;
+    bool inside = false;
+    if (firstEnter(ray, tmin, tmax, hit, inside)) return true;
+    if (!inside) return false;
     SpanList<T> all;
     spans(ray, tmin, tmax, all);
     return firstCrossing(all, tmin, tmax, hit);
+  }
+
+  // The earliest enter of any child, each child asked for its own first enter
+  // only up to the best so far (a nested union recurses without span lists).
+  // A child that contains the ray at tmin has a box containing the ray's
+  // point at tmin, so the front-to-back walk reaches it whatever the limit.
+  bool firstEnter(const Ray<T>& ray, T tmin, T tmax, Hit<T>& hit, bool& inside) const override {
+    T t0, t1;
+    if (this->bounds_.empty() || !this->bounds_.clip(ray, tmin, tmax, t0, t1)) return false;
+    T limit = tmax;
+    bool found = false;
+    Hit<T> child;
+    auto visit = [&](std::uint32_t n, T& lim) {
+      if (inside) return;
+      if (this->children_[n]->firstEnter(ray, tmin, lim, child, inside)) {
+        lim = child.t;
+        hit = child;
+        found = true;
+      }
+      if (inside) lim = tmin;  // stops the traversal
+    };
+    for (std::uint32_t n : unbounded_) visit(n, limit);
+    if (!inside)
+      bvh_.visitFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) { visit(finite_[item], lim); });
+    return found && !inside;
   }
 
   bool anyHit(const Ray<T>& ray, T tmin, T tmax) const override {

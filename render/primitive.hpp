@@ -76,6 +76,24 @@ class Primitive {
     return firstCrossing(list, tmin, tmax, hit);
   }
 
+  // The first enter in (tmin, tmax), for a union looking for its nearest
+  // child: true with `hit` the enter, or false with `inside` set when the
+  // solid contains the ray at tmin (then the caller needs the exact path).
+  // The default reads spans(); a union answers from its children's first
+  // enters without building and merging their span lists.
+  virtual bool firstEnter(const Ray<T>& ray, T tmin, T tmax, Hit<T>& hit, bool& inside) const {
+    SpanList<T> list;
+    spans(ray, tmin, tmax, list);
+    if (list.empty()) return false;
+    if (list[0].enter.t <= tmin) {
+      inside = true;
+      return false;
+    }
+    if (!(list[0].enter.t < tmax)) return false;
+    hit = list[0].enter;
+    return true;
+  }
+
   // Shadow rays: is there any crossing in (tmin, tmax)? Subclasses make this
   // cheaper than firstHit where they can (stop at the first crossing found).
   virtual bool anyHit(const Ray<T>& ray, T tmin, T tmax) const {

@@ -56,6 +56,13 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   d.emulatorMemory = 3 * pixels(profile.width, profile.height);  // the screen, and its RGB copy for the PNG
   d.line = profile.line;
   d.profileText = describe(profile);
+  // `lattice send --device tek4027` waits where the stream asks (the same
+  // requests the driver waits on over a live line).
+  d.replies = devices::Device::ReplyPacing{
+      [profile](std::span<const std::uint8_t> stream) {
+        return reportRecordEnds(std::string(reinterpret_cast<const char*>(stream.data()), stream.size()), profile);
+      },
+      [](int fd, double timeoutSeconds) { Tek4027FdReplies(fd, timeoutSeconds).awaitReply(); }};
   return d;
 }
 

@@ -65,3 +65,93 @@ TEST_CASE("lattice send streams a file to a pty, and resumes after a stall", "[s
   CHECK(noFile.stderrText.find("/nonexistent/lattice.tek") != std::string::npos);
   std::filesystem::remove(file);
 }
+
+namespace {
+
+// A 4027 stream paced with `!REP 00` every 256 bytes or so, rendered by the
+// real binary (so its requests sit where the driver put them).
+std::vector<std::uint8_t> pacedTek4027Stream(const std::filesystem::path& file) {
+  auto rendered = lattice::testing::runLattice(fmt::format(
+      "render {}/scenes/sphere-hole.toml --width 64 --height 48 --device tek4027 --set pacing=report --set record-bytes=256 "
+      "--stream '{}'",
+      LATTICE_SOURCE_DIR, file.string()));
+  INFO(rendered.stderrText);
+  REQUIRE(rendered.exitCode == 0);
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::vector<std::size_t> requestEnds(const std::vector<std::uint8_t>& stream) {
+  const std::string text(stream.begin(), stream.end());
+  std::vector<std::size_t> ends;
+  for (auto at = text.find("!REP 00\r"); at != std::string::npos; at = text.find("!REP 00\r", at + 1))
+    ends.push_back(at + 8);
+  return ends;
+}
+
+}  // namespace
+
+TEST_CASE("lattice send --device tek4027 sends one record per answer, and resumes after a silent terminal",
+          "[send]") {
+  REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
+  auto file = std::filesystem::temp_directory_path() / fmt::format("lattice-send-4027-{}.tek", ::getpid());
+  const auto stream = pacedTek4027Stream(file);
+  const std::vector<std::size_t> ends = requestEnds(stream);
+  REQUIRE(ends.size() >= 4);
+  REQUIRE(ends.back() == stream.size());
+
+  SECTION("each record waits for the answer to the one before") {
+    PtyPair pty;
+    PtyPeer peer(pty);
+    std::size_t overran = 0;
+    std::jthread terminal([&] {
+      for (std::size_t end : ends) {
+        if (!peer.waitFor(end)) return;
+        std::this_thread::sleep_for(std::chrono::milliseconds(40));  // a sender that did not wait would be past `end`
+        if (peer.received() != end) ++overran;
+        for (char c : std::string("!DAT 00\r")) peer.send(static_cast<std::uint8_t>(c));
+      }
+    });
+    auto sent = lattice::testing::runLattice(fmt::format("send '{}' --port {} --baud 38400 --device tek4027 --stall-timeout 5",
+                                                         file.string(), pty.slavePath()));
+    terminal.join();
+    INFO(sent.stderrText);
+    CHECK(sent.exitCode == 0);
+    CHECK(overran == 0);
+    peer.settle(0.05);
+    CHECK(peer.data() == stream);
+    CHECK(sent.stderrText.find(fmt::format("after each of {} records", ends.size())) != std::string::npos);
+  }
+
+  SECTION("a terminal that stops answering: exit 6 and a resume command that keeps --device") {
+    PtyPair pty;
+    PtyPeer peer(pty);
+    std::jthread terminal([&] {  // answers the first two requests only
+      for (std::size_t i = 0; i < 2; ++i) {
+        if (!peer.waitFor(ends[i])) return;
+        for (char c : std::string("!DAT 00\r")) peer.send(static_cast<std::uint8_t>(c));
+      }
+    });
+    auto stalled = lattice::testing::runLattice(fmt::format(
+        "send '{}' --port {} --baud 38400 --device tek4027 --stall-timeout 0.5", file.string(), pty.slavePath()));
+    terminal.join();
+    INFO(stalled.stderrText);
+    CHECK(stalled.exitCode == 6);
+    CHECK(stalled.stderrText.find("did not answer request 3 of") != std::string::npos);
+    CHECK(stalled.stderrText.find(fmt::format("--device tek4027 --resume {}", ends[2])) != std::string::npos);
+    peer.settle(0.05);
+    CHECK(peer.received() == ends[2]);  // nothing of record 4 went out
+  }
+
+  SECTION("without --device the send goes straight through and says what it did not do") {
+    PtyPair pty;
+    PtyPeer peer(pty);
+    auto sent = lattice::testing::runLattice(fmt::format("send '{}' --port {} --baud 38400", file.string(), pty.slavePath()));
+    INFO(sent.stderrText);
+    CHECK(sent.exitCode == 0);
+    REQUIRE(peer.waitFor(stream.size()));
+    CHECK(sent.stderrText.find(fmt::format("holds {} report requests", ends.size())) != std::string::npos);
+    CHECK(sent.stderrText.find("add --device tek4027") != std::string::npos);
+  }
+  std::filesystem::remove(file);
+}

@@ -96,7 +96,7 @@ inline FixedPointScan scanFixedPointCode(const std::string& library,
 // floating point: constructors and builders.
 inline bool isSetUpFunction(const std::string& name) {
   static const std::vector<std::string> setUp = {"::Camera(", "::Renderer(", "::build(", "::Bvh(",
-                                                 "makeQuarticLeaf<", "makeCapsule<", "paddedBox<",
+                                                 "makeQuarticLeaf<", "makeCapsule<", "makeQuarticCapsule<", "paddedBox<",
                                                  "buildPrimitive<", "::QuarticLeaf(", "makeCsgNode<",
                                                  "::LatticeLeaf(", "makePolyline<", "makeLatticeLeaf<",
                                                  "::QuarticArithmetic(", "QuarticArithmetic<lattice::Fixed<32> >::prepare(",
