@@ -69,10 +69,10 @@ std::string describeLookups(const LookupSummary& s) {
                      percent(s.distinctPairs, s.pairSpace), s.pairSpace);
   if (s.onDemand) {
     const OnDemandCounts& d = *s.onDemand;
-    out += fmt::format("\n  built on demand: {} hits and {} misses stored ({} bytes of the {}-byte cache), {} pairs "
-                       "traced, {} stores refused (cache full)",
-                       d.hitsStored, d.missesStored, (d.hitsStored + d.missesStored) * OnDemandTable::kStoredBytes,
-                       d.capacityBytes, d.traced, d.refused);
+    out += fmt::format("\n  built on demand: {} hits and {} misses stored ({} bytes of the {}-byte cache, and a "
+                       "{}-byte miss bitmap), {} pairs traced, {} stores refused (cache full)",
+                       d.hitsStored, d.missesStored, d.mapAnswers * OnDemandTable::kStoredBytes, d.capacityBytes,
+                       d.missBitmapBytes, d.traced, d.refused);
     return out;
   }
   out += fmt::format("\n  entries referenced: {} of {} ({:.2f} %); {:.2f} % of N_iz = {} counted as eq. 1.3 does",

@@ -151,7 +151,9 @@ TEST_CASE("on-demand LHT: it stores each pair asked once, exactly the precompute
   tiny.onDemandCacheBytes = 100 * OnDemandTable::kStoredBytes;
   renderScene<double>(text, "s.toml", tiny);
   const OnDemandCounts t = *tiny.stats->summaries().at(0).onDemand;
-  CHECK(t.hitsStored + t.missesStored <= 100 + 2);  // two threads may each pass the check once
+  CHECK(t.mapAnswers <= 100 + 2);  // two threads may each pass the check once
+  CHECK(t.mapAnswers == t.hitsStored);  // the misses are in the bitmap, outside the bound
+  CHECK(t.missBitmapBytes > 0);
   CHECK(t.refused > 0);
   CHECK(t.traced >= t.hitsStored + t.missesStored + t.refused);  // plus pairs two threads traced at once
   CHECK(t.traced <= t.hitsStored + t.missesStored + t.refused + 64);
