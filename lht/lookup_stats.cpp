@@ -34,6 +34,7 @@ LookupSummary LookupStats::summary() const {
     for (std::uint64_t word = asked_[w].load(std::memory_order_relaxed); word; word &= word - 1) {
       const std::uint64_t bit = w * 64 + static_cast<std::uint64_t>(std::countr_zero(word));
       ++s.distinctPairs;
+      if (s.onDemand) continue;  // its counts say what it built; asking would trace refused pairs again
       const LatticePoint in = index_.pointAt(static_cast<std::uint32_t>(bit / p));
       const LatticePoint out = index_.pointAt(static_cast<std::uint32_t>(bit % p));
       if (!lookup.payload(in, out)) continue;
