@@ -126,9 +126,10 @@ void addRender(CLI::App& root) {
   cmd->callback([flags, cmd] {
     const RenderJob job = jobFrom(*flags, *cmd);
     const RenderResult r = renderScene(job);
-    fmt::print(stderr, "lattice render: {}: {}x{}, {:.2f} s, {} rays ({} arithmetic, {} threads){}\n", job.scene,
-               r.width, r.height, r.seconds, r.rays, job.arithmetic, r.threads,
-               job.picture.empty() ? "" : fmt::format(", picture {}", job.picture));
+    fmt::print(stderr, "lattice render: {}: {}x{}, {:.2f} s{}, {} rays ({} arithmetic, {} threads){}\n", job.scene,
+               r.width, r.height, r.seconds,
+               r.traceSeconds > 0 ? fmt::format(" (trace {:.4f} s)", r.traceSeconds) : std::string(), r.rays,
+               job.arithmetic, r.threads, job.picture.empty() ? "" : fmt::format(", picture {}", job.picture));
   });
 }
 

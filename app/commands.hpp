@@ -10,6 +10,7 @@ namespace lattice::app {
 
 void addDiff(CLI::App& root);
 void addEmulate(CLI::App& root);
+void addExport(CLI::App& root);
 void addLhtInfo(CLI::App& root);
 void addPorts(CLI::App& root);
 void addQuantize(CLI::App& root);
@@ -21,7 +22,7 @@ void addTable1(CLI::App& root);
 using CommandAdder = void (*)(CLI::App& root);
 
 // In the order `lattice --help` lists them.
-inline constexpr CommandAdder kCommands[] = {addDiff,      addEmulate, addLhtInfo, addPorts, addQuantize,
-                                             addRasterize, addRender,  addSend,    addTable1};
+inline constexpr CommandAdder kCommands[] = {addDiff,   addEmulate, addExport, addLhtInfo, addPorts,
+                                             addQuantize, addRasterize, addRender, addSend,   addTable1};
 
 }  // namespace lattice::app

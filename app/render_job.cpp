@@ -59,16 +59,22 @@ RenderSettings renderSettings(const RenderJob& job, const SceneDesc& scene, int 
   return s;
 }
 
+// Returns the seconds the trace took (what bench/peers.sh compares with a
+// peer's own trace timer: no set-up, no PNG).
 template <typename T>
-void renderTruecolour(Renderer<T>& renderer, const RenderJob& job) {
+double renderTruecolour(Renderer<T>& renderer, const RenderJob& job) {
   RgbImage image;
+  double seconds = 0;
   {
     Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
     progress.setEnabled(progress.enabled() && !job.quiet);
+    const auto start = std::chrono::steady_clock::now();
     image = renderImage(renderer, &progress);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     progress.finish();
   }
   io::writePng(job.picture, image);
+  return seconds;
 }
 
 // The transport the job names, and where it goes in words; none when only
@@ -156,7 +162,7 @@ RenderResult renderWith(const lht::SceneWithLattices& loaded, const RenderJob& j
   if (device)
     result.stream = renderToDevice(renderer, job, *device, pipeline, result.destination);
   else
-    renderTruecolour(renderer, job);
+    result.traceSeconds = renderTruecolour(renderer, job);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.width = renderer.width();
   result.height = renderer.height();

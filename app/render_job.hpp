@@ -51,7 +51,8 @@ struct RenderJob {
 struct RenderResult {
   int width = 0;
   int height = 0;
-  double seconds = 0;
+  double seconds = 0;       // scene set-up (tree, lattice tables), trace, output
+  double traceSeconds = 0;  // a truecolour render's trace alone (every pixel's rays); 0 for a device
   std::uint64_t rays = 0;
   unsigned threads = 0;
   std::optional<devices::DriverStats> stream;  // a device's stream

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# POV-Ray peer benchmark: the same scenes (bench/povray/*.pov are translations
-# of scenes/*.toml) rendered by POV-Ray 3.7 and by Lattice at the same size,
+# POV-Ray peer benchmark: the same scenes (scenes/*.toml, written for POV-Ray
+# by `lattice export pov`) rendered by POV-Ray 3.7 and by Lattice at the same size,
 # 1 and 2 threads, median of N runs each; the runs of the two programs
 # alternate so that both see the same machine load. Then the two pictures of
 # each scene are compared (PSNR, bench/povray/psnr.py).
@@ -89,11 +89,12 @@ report() {
   local entry scene w h threads r
   for entry in "${scenes[@]}"; do
     read -r scene w h <<<"$entry"
+    "$lattice" export pov "$root/scenes/$scene.toml" -o "$images/$scene.pov" -q
     for threads in 1 2; do
       local povr=() latr=() povc=() latc=() povw=() latw=() povrss="-" latrss="-" line trace ms
       for ((r = 0; r < runs; r++)); do
         line=$(timed povray -D -A +Q4 +FN8 File_Gamma=1.0 "+W$w" "+H$h" "+WT$threads" \
-          "-I$here/povray/$scene.pov" "+O$images/$scene-povray.png")
+          "-I$images/$scene.pov" "+O$images/$scene-povray.png")
         povw+=("${line% *}"); povrss="${line#* }"
         trace=$(pov_trace_seconds)
         [[ -n "$trace" ]] || { echo "povray-peer.sh: no Trace Time in POV-Ray's statistics:" >&2; cat "$images/stderr" >&2; exit 1; }

@@ -5,6 +5,8 @@
 #                       lattice vs full ray trace of the fuzzy spheres at 512x512
 #   embree_peer_bench   Lattice's CSG union + BVH against Embree 3's spheres
 #   povray-peer.sh      POV-Ray 3.7 against `lattice render`, same scenes
+#   peers.sh            ours (lattice mode, --full), POV-Ray and the Embree peer
+#                       (bench/peers/) alternating on six scenes (peers.md)
 # Each writes a small table to bench/results/<name>.txt (plain text; pictures
 # stay in a temporary directory).
 #
@@ -33,12 +35,12 @@ done
 results="$here/results"
 mkdir -p "$results"
 
-cmake -S "$root" -B "$build" -DLATTICE_WERROR=ON -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S "$root" -B "$build" -DLATTICE_WERROR=ON -DCMAKE_BUILD_TYPE=Release -DLATTICE_EMBREE_PEER=ON >/dev/null
 targets=(lattice render_bench)
 # bench/CMakeLists.txt defines embree_peer_bench only when Embree 3 is found.
 available=$(cmake --build "$build" --target help)
 if [[ "$available" == *embree_peer_bench* ]]; then
-  targets+=(embree_peer_bench)
+  targets+=(embree_peer_bench embree_peer)
 else
   echo "run-all.sh: Embree 3 not found (scripts/setup.sh --bench installs libembree-dev); skipping its peer" >&2
 fi
@@ -82,4 +84,7 @@ if command -v povray >/dev/null; then
 else
   echo "run-all.sh: povray not found (scripts/setup.sh --bench); skipping its peer" >&2
 fi
+peer_scenes="fuzzy-sphere-1000 fuzzy-sphere-5000 thistle torus-floor sphere-hole thesis-camera"
+[[ $quick == 0 ]] || peer_scenes="${peer_scenes/fuzzy-sphere-5000 /}"
+"$here/peers.sh" --build-dir "$build" --runs "$runs" --scenes "$peer_scenes" --sphere-sweep --out "$results/peers.md"
 echo "run-all.sh: tables in $results/"

@@ -41,6 +41,14 @@ class LatticeLeafDesc final : public LeafTemplate<LatticeLeafDesc> {
   }
   Bounds<double> objectBounds() const override { return definition_->objectBounds(); }
   std::string describe() const override { return fmt::format("lattice '{}'", definition_->name); }
+  LeafShape shape() const override {
+    LeafShape s;
+    s.kind = LeafShape::Kind::Lattice;
+    s.object = &definition_->object;
+    s.name = definition_->name;
+    s.castsShadows = definition_->shadows;
+    return s;
+  }
 
   const LatticeDefinitionPtr& definition() const { return definition_; }
 

@@ -39,8 +39,10 @@ class CapsuleLeaf final : public Primitive<T> {
     if (!bounds_.clip(worldRay, tmin, tmax, c0, c1)) return;
     const Ray<T> ray = worldRay.transformed(worldToObject_);  // t is kept
     Interval<T> whole = ball(ray, T(0));
-    widen(whole, ball(ray, length_));
-    widen(whole, body(ray));
+    if (length_ > T(0)) {  // else a sphere
+      widen(whole, ball(ray, length_));
+      widen(whole, body(ray));
+    }
     if (whole.empty() || whole.leave <= tmin || whole.enter >= tmax) return;
     out.push_back({{whole.enter, toWorld(whole.enterNormal), material_}, {whole.leave, toWorld(whole.leaveNormal), material_}});
   }

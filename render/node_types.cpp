@@ -29,16 +29,20 @@ class QuarticLeafDesc final : public LeafTemplate<QuarticLeafDesc> {
   }
   Bounds<double> objectBounds() const override { return shape_.bounds; }
   std::string describe() const override { return name_; }
+  LeafShape shape() const override { return LeafShape::ofQuartic(shape_); }
 
  private:
   QuarticShape shape_;
   std::string name_;
 };
 
-// A capsule: a CSG composite of quartics, built by render/csg_shapes.hpp.
+// A capsule (and a sphere: a capsule of length 0), built by
+// render/csg_shapes.hpp: closed form in float and double, quartics in fixed
+// point.
 class CapsuleLeafDesc final : public LeafTemplate<CapsuleLeafDesc> {
  public:
-  CapsuleLeafDesc(double radius, double length) : radius_(radius), length_(length) {}
+  CapsuleLeafDesc(double radius, double length, std::string name = "capsule")
+      : radius_(radius), length_(length), name_(std::move(name)) {}
   template <typename T>
   PrimitivePtr<T> buildAs(const Mat4d& toWorld, MaterialId m, const BuildOptions&) const {
     return makeCapsule<T>(radius_, length_, toWorld, m);
@@ -46,10 +50,12 @@ class CapsuleLeafDesc final : public LeafTemplate<CapsuleLeafDesc> {
   Bounds<double> objectBounds() const override {
     return {Vec3d(-radius_, -radius_, -radius_), Vec3d(radius_, radius_, length_ + radius_)};
   }
-  std::string describe() const override { return "capsule"; }
+  std::string describe() const override { return name_; }
+  LeafShape shape() const override { return LeafShape::ofCapsule(radius_, length_); }
 
  private:
   double radius_, length_;
+  std::string name_;
 };
 
 // Shape constructors report bad parameters without a position; add it.
@@ -145,7 +151,9 @@ std::map<std::string, NodeParser> builtinNodeTypes() {
   types["sphere"] = [](const toml::table& t, ParseContext& ctx) {
     ctx.checkKeys(t, {"radius"}, true);
     const double r = ctx.positiveNumber(t, "radius");
-    return quarticNode(t, ctx, "sphere", [&] { return sphere(r); });
+    // The same solid as the quartic x^2 + y^2 + z^2 = r^2 (which fixed point
+    // still builds), solved in closed form in float and double.
+    return NodeDesc::makeLeaf(std::make_shared<CapsuleLeafDesc>(r, 0.0, "sphere"), ctx.where(t));
   };
   types["ellipsoid"] = [](const toml::table& t, ParseContext& ctx) {
     ctx.checkKeys(t, {"radii"}, true);

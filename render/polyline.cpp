@@ -36,6 +36,7 @@ class PolylineLeafDesc final : public LeafTemplate<PolylineLeafDesc> {
   }
   Bounds<double> objectBounds() const override { return polylineBounds(points_, radius_); }
   std::string describe() const override { return fmt::format("polyline of {} points", points_.size()); }
+  LeafShape shape() const override { return LeafShape::ofPolyline(points_, radius_); }
 
  private:
   std::vector<Vec3d> points_;

@@ -17,6 +17,7 @@
 
 #include "foundation/bounds.hpp"
 #include "render/camera.hpp"
+#include "render/leaf_shape.hpp"
 #include "render/light.hpp"
 #include "render/material.hpp"
 #include "render/primitive.hpp"
@@ -57,6 +58,9 @@ class LeafDesc {
   virtual Bounds<double> objectBounds() const = 0;
   // A short human-readable name for messages ("sphere", "lattice 'hair'").
   virtual std::string describe() const = 0;
+  // What it is made of, for writing the scene for another renderer
+  // (render/leaf_shape.hpp); Opaque unless the leaf type says.
+  virtual LeafShape shape() const { return {}; }
 
  protected:
   // Fills the slot `out` holds (its alternative names the arithmetic).

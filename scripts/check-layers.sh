@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 # Bottom to top. tests/, bench/ and fuzz/ sit above all of them.
-layers=(foundation render lht quantize devices io app)
+layers=(foundation render lht exporter quantize devices io app)
 
 rank() {
   local i

@@ -1,5 +1,6 @@
 // The closed-form capsule (render/capsule_leaf.cpp) against the quartic-and-
-// CSG capsule it replaces for float and double: the same spans to rounding,
+// CSG capsule it replaces for float and double (and a sphere, a capsule of
+// length 0, against the quartic sphere): the same spans to rounding,
 // on random rays, on rays along the axis and through the end planes, from
 // inside, and under a non-uniform scale. A hit within a hair's width of a
 // silhouette may differ (a tangent line is solved two ways); those are
@@ -53,11 +54,12 @@ void compare(const Primitive<T>& closed, const Primitive<T>& quartic, const Ray<
 TEMPLATE_TEST_CASE("the closed-form capsule gives the quartic capsule's spans", "[shapes][capsule]", float, double) {
   using T = TestType;
   const double tol = std::is_same_v<T, float> ? 2e-4 : 1e-9;
-  const double radius = 0.4, length = 2.0;
+  const double radius = 0.4;
   const Mat4d placements[] = {
       glm::translate(Mat4d(1), Vec3d(0.5, -1, 2)) * glm::rotate(Mat4d(1), 0.7, glm::normalize(Vec3d(1, 2, 0.5))),
       glm::scale(glm::rotate(Mat4d(1), 1.1, glm::normalize(Vec3d(0.3, -1, 2))), Vec3d(1.0, 2.5, 0.5)),
   };
+  for (const double length : {2.0, 0.0})  // a capsule, and a sphere (a scene's `sphere` in float and double)
   for (const Mat4d& m : placements) {
     auto closed = makeCapsule<T>(radius, length, m, 3);
     auto quartic = makeQuarticCapsule<T>(radius, length, m, 3);
@@ -74,8 +76,8 @@ TEMPLATE_TEST_CASE("the closed-form capsule gives the quartic capsule's spans", 
     compare<T>(*closed, *quartic, makeRay<T>(a - (b - a), glm::normalize(b - a)), tol, c);
     compare<T>(*closed, *quartic, makeRay<T>(b + Vec3d(0.1, 0.05, 0) - (b - a) * 2.0, glm::normalize(b - a)), tol, c);
     compare<T>(*closed, *quartic, makeRay<T>((a + b) * 0.5, Vec3d(0, 0.6, 0.8)), tol, c);
-    INFO("agreed " << c.agreed << ", both missed " << c.bothMissed << ", grazes " << c.grazes);
-    CHECK(c.agreed > 500);
+    INFO("length " << length << ": agreed " << c.agreed << ", both missed " << c.bothMissed << ", grazes " << c.grazes);
+    CHECK(c.agreed > 150);
     CHECK(c.bothMissed > 200);
     CHECK(c.grazes <= 4);
   }
