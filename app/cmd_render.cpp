@@ -72,11 +72,12 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
                              lht::lhtPrecisionChoices()));
   cmd.add_option("--lht-form", f.lhtForm,
                  fmt::format("LHT form of every lattice, overriding the scene's `form`: {} (docs/lattices.md, \"The "
-                             "compressed LHT\")",
+                             "compressed LHT\", \"The LHT built on demand\")",
                              lht::lhtFormChoices()));
   cmd.add_option("--lht-cache", f.lhtCache,
-                 "With --lht-form on-demand: the most memory its stored hits and misses take (8MiB, 65536K; default "
-                 "64MiB); beyond it new pairs are traced again rather than stored (docs/lattices.md)");
+                 "With --lht-form on-demand: the most memory its stored hits take, 48 bytes each (8MiB, 65536K; "
+                 "default 64MiB; misses go to a bitmap apart); beyond it new pairs are traced again rather than "
+                 "stored (docs/lattices.md)");
   cmd.add_flag("--lht-stats", j.lhtStats,
                "After rendering, print per lattice: look-ups, hits, misses, distinct (p_i, p_o) asked, entries "
                "referenced (share of N_iz) and look-ups per entry (docs/lattices.md); off, nothing is counted");
