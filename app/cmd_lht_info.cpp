@@ -3,27 +3,13 @@
 #include <fmt/format.h>
 
 #include "app/commands.hpp"
+#include "lht/boundary_index.hpp"
 #include "lht/lht_file.hpp"
 
 namespace {
 
-void runLhtInfo(const std::string& path) {
+void printHashed(const lattice::lht::LatticeHashTable& t) {
   using namespace lattice::lht;
-  const LhtFile lht = readLhtFile(path);
-  const auto& c = lht.box.cells();
-  const auto& t = lht.table;
-  fmt::print("file:          {}\n", path);
-  const LhtPrecisionInfo& precision = lhtPrecisionInfo(t.precision());
-  fmt::print("format:        version {}\n", lht.version);
-  fmt::print("precision:     {} ({}-byte entries: {})\n", precision.name, precision.entryBytes, precision.summary);
-  fmt::print("lattice:       {} x {} x {} cells, lambda {:g}, f_lat {:g} (cell {:g})\n", c[0], c[1], c[2],
-             lht.box.lambda(), lht.box.oversample(), lht.box.cellSize());
-  fmt::print("origin:        ({:g}, {:g}, {:g}) in object coordinates\n", lht.box.origin().x, lht.box.origin().y,
-             lht.box.origin().z);
-  fmt::print("object hash:   {:016x}\n", lht.objectHash);
-  fmt::print("pairs (N_lp):  {}\n", lht.pairs);
-  fmt::print("hits (N_iz):   {}\n", lht.hits);
-  fmt::print("entries:       {} distinct (p_i, p_o)\n", t.entryCount());
   fmt::print("buckets:       {} primary + {} overflow slots\n", t.bucketCount(), t.overflowCount());
   fmt::print("load factor:   {:.3f} entries per bucket\n", t.loadFactor());
   fmt::print("table bytes:   {} ({:.2f} bytes/entry, {} bytes per slot)\n", t.bytes(), t.bytesPerEntry(),
@@ -34,6 +20,48 @@ void runLhtInfo(const std::string& path) {
     fmt::print("  length {:>3}: {} buckets\n", k, chains.chainLengthHistogram[k]);
 }
 
+void printCompressed(const lattice::lht::CompressedTable& t, std::uint64_t nIz) {
+  using namespace lattice::lht;
+  fmt::print("pair layout:   {} ({} bits)\n",
+             t.layout() == PairLayout::Symmetric ? "symmetric, one bit per unordered pair, two payloads a bit"
+                                                 : "ordered, one bit per ordered pair",
+             t.bitCount());
+  fmt::print("table bytes:   {} ({:.2f} bytes/entry, {:.2f} per N_iz): bitmap {}, rank directory {}, payloads {} "
+             "({} bytes each)\n",
+             t.bytes(), t.bytesPerEntry(), nIz ? double(t.bytes()) / double(nIz) : 0.0, t.bitmapBytes(), t.rankBytes(),
+             t.payloads().size(), payloadBytes(t.precision()));
+}
+
+void runLhtInfo(const std::string& path) {
+  using namespace lattice::lht;
+  const LhtFile lht = readLhtFile(path);
+  const auto& c = lht.box.cells();
+  fmt::print("file:          {}\n", path);
+  const LhtPrecisionInfo& precision = lhtPrecisionInfo(lht.precision());
+  fmt::print("format:        version {}\n", lht.version);
+  fmt::print("form:          {}\n", lht.form == LhtForm::Compressed
+                                        ? "compressed (no key, no chain: a rank bitmap over the pair space)"
+                                        : "hashed (thesis sec. 2.3: key, payload, overflow index)");
+  fmt::print("precision:     {} ({}-byte entries: {})\n", precision.name, precision.entryBytes, precision.summary);
+  fmt::print("lattice:       {} x {} x {} cells, lambda {:g}, f_lat {:g} (cell {:g})\n", c[0], c[1], c[2],
+             lht.box.lambda(), lht.box.oversample(), lht.box.cellSize());
+  fmt::print("origin:        ({:g}, {:g}, {:g}) in object coordinates\n", lht.box.origin().x, lht.box.origin().y,
+             lht.box.origin().z);
+  fmt::print("object hash:   {:016x}\n", lht.objectHash);
+  fmt::print("pairs (N_lp):  {}\n", lht.pairs);
+  fmt::print("hits (N_iz):   {}\n", lht.hits);
+  fmt::print("entries:       {} distinct (p_i, p_o)\n", lht.entryCount());
+  // What a render can reference at most (`render --lht-stats` counts what it does).
+  const std::uint64_t points = BoundaryIndex(c).count();
+  const std::uint64_t space = points * (points - 1);
+  fmt::print("pair space:    {} boundary points, {} ordered pairs; entries fill {:.2f} % of it\n", points, space,
+             space ? 100.0 * double(lht.entryCount()) / double(space) : 0.0);
+  if (lht.form == LhtForm::Compressed)
+    printCompressed(lht.compressed, lht.hits);
+  else
+    printHashed(lht.table);
+}
+
 }  // namespace
 
 namespace lattice::app {
@@ -41,8 +69,9 @@ namespace lattice::app {
 void addLhtInfo(CLI::App& root) {
   auto* cmd = root.add_subcommand("lht-info",
                                   "Print the header and statistics of a .lht lattice hash table file: lattice size,\n"
-                                  "spacing, object hash, N_lp / N_iz, entry precision, entries, load factor, bytes\n"
-                                  "per entry and overflow chain lengths. The file's checksum is verified.");
+                                  "spacing, object hash, N_lp / N_iz, form and entry precision, entries, the pair\n"
+                                  "space they fill, bytes per entry, and (hashed) load factor and overflow chain\n"
+                                  "lengths or (compressed) bitmap and payload bytes. The checksum is verified.");
   auto path = std::make_shared<std::string>();
   cmd->add_option("file", *path, "The .lht file")->required();
   cmd->callback([=] { runLhtInfo(*path); });

@@ -18,6 +18,7 @@ struct RasterizeArgs {
   double radius = 0.5, length = 10.0, oversample = 1.0;
   bool stats = false;
   std::string precision;  // empty: the scene's, or the thesis's for --shape
+  std::string form;       // empty: the scene's `form`, or hashed for --shape
   unsigned threads = 0;
 };
 
@@ -25,13 +26,14 @@ void runRasterize(const RasterizeArgs& args, bool oversampleGiven) {
   TableRequest request{args.scene, args.name, args.shape, args.radius, args.length, std::nullopt, {}};
   if (oversampleGiven) request.oversample = args.oversample;  // --oversample overrides the scene
   if (!args.precision.empty()) request.settings.precision = parseLhtPrecision(args.precision, "--precision");
+  if (!args.form.empty()) request.settings.form = parseLhtForm(args.form, "--form");
   request.settings.threads = args.threads;
   const BuiltTable built = buildLatticeTable(request);
   writeLhtFile(args.output, built.lht);
   if (args.stats)
-    fmt::print("pairs={} hits={} entries={} bytes={} precision={} build_ms={:.0f}\n", built.lht.pairs,
-               built.lht.hits, built.lht.table.entryCount(), built.lht.table.bytes(),
-               lhtPrecisionName(built.lht.table.precision()), built.stats.buildMs);
+    fmt::print("pairs={} hits={} entries={} bytes={} precision={} build_ms={:.0f} form={}\n", built.lht.pairs,
+               built.lht.hits, built.lht.entryCount(), built.lht.tableBytes(), lhtPrecisionName(built.lht.precision()),
+               built.stats.buildMs, lhtFormName(built.lht.form));
 }
 
 }  // namespace
@@ -48,7 +50,8 @@ void addRasterize(CLI::App& root) {
       "  lattice rasterize --shape sphere --radius 0.5 --oversample 2 -o sphere.lht --stats\n"
       "  lattice rasterize --shape capsule --length 10 --radius 0.5 -o line.lht\n"
       "  lattice rasterize --scene scenes/fuzzy-sphere-1000.toml --name hair -o hair.lht\n"
-      "  lattice rasterize --shape sphere --precision wide -o sphere-wide.lht");
+      "  lattice rasterize --shape sphere --precision wide -o sphere-wide.lht\n"
+      "  lattice rasterize --shape capsule --length 100 --form compressed -o line.lht");
   cmd->add_option("--scene", args->scene, "Scene file whose [[lattices]] entry to rasterize")->check(CLI::ExistingFile);
   cmd->add_option("--name", args->name, "Name of the [[lattices]] entry (with --scene)");
   cmd->add_option("--shape", args->shape, "sphere (centred) or capsule (axis along z from 0 to --length)");
@@ -60,7 +63,12 @@ void addRasterize(CLI::App& root) {
   cmd->add_option("--precision", args->precision,
                   fmt::format("LHT entry precision: {} (default: the scene's `precision`, else thesis)",
                               lhtPrecisionChoices()));
-  cmd->add_flag("--stats", args->stats, "Print one line: pairs= hits= entries= bytes= precision= build_ms=");
+  cmd->add_option("--form", args->form,
+                  fmt::format("LHT form: {} (default: the scene's `form`, else hashed; docs/lattices.md, \"The "
+                              "compressed LHT\")",
+                              lhtFormChoices()));
+  cmd->add_flag("--stats", args->stats,
+                "Print one line: pairs= hits= entries= bytes= precision= build_ms= form= (bytes: the table in memory)");
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)");
   cmd->callback([args, oversample] { runRasterize(*args, oversample->count() > 0); });
 }

@@ -17,6 +17,7 @@
 #include "devices/device_table.hpp"
 #include "foundation/arithmetics.hpp"
 #include "foundation/resident_memory.hpp"
+#include "lht/lht_form.hpp"
 
 namespace lattice::app {
 namespace {
@@ -26,6 +27,8 @@ struct RenderFlags {
   std::string device = "png";
   bool noLatticeShadows = false;
   std::string lhtPrecision;  // empty: each lattice's own `precision`
+  std::string lhtForm;       // empty: each lattice's own `form`
+  std::string lhtCache;      // as typed
   std::string apolloProfile = "dn660";
   std::string memoryBudget;  // as typed
   PipelineArgs pipeline;
@@ -67,6 +70,17 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
                  fmt::format("LHT entry precision of every lattice, overriding the scene's `precision`: {} "
                              "(docs/lattices.md, \"Entry precision\")",
                              lht::lhtPrecisionChoices()));
+  cmd.add_option("--lht-form", f.lhtForm,
+                 fmt::format("LHT form of every lattice, overriding the scene's `form`: {} (docs/lattices.md, \"The "
+                             "compressed LHT\", \"The LHT built on demand\")",
+                             lht::lhtFormChoices()));
+  cmd.add_option("--lht-cache", f.lhtCache,
+                 "With --lht-form on-demand: the most memory its stored hits take, 48 bytes each (8MiB, 65536K; "
+                 "default 64MiB; misses go to a bitmap apart); beyond it new pairs are traced again rather than "
+                 "stored (docs/lattices.md)");
+  cmd.add_flag("--lht-stats", j.lhtStats,
+               "After rendering, print per lattice: look-ups, hits, misses, distinct (p_i, p_o) asked, entries "
+               "referenced (share of N_iz) and look-ups per entry (docs/lattices.md); off, nothing is counted");
   cmd.add_option("--memory-budget", f.memoryBudget,
                  "Keep peak resident memory within SIZE (8MiB, 8192K, 8388608): picks the quantizer mode and the "
                  "entry form of lattices rasterized now, or exits 8 saying why not (docs/memory.md)");
@@ -81,6 +95,8 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
   if (f.device == "apollo") job.settings.insert(job.settings.begin(), "profile=" + f.apolloProfile);
   job.latticeShadows = !f.noLatticeShadows;
   if (!f.lhtPrecision.empty()) job.precision = lht::parseLhtPrecision(f.lhtPrecision, "--lht-precision");
+  if (!f.lhtForm.empty()) job.form = lht::parseLhtForm(f.lhtForm, "--lht-form");
+  if (!f.lhtCache.empty()) job.onDemandCacheBytes = parseByteCount(f.lhtCache, "--lht-cache");
   if (!f.memoryBudget.empty()) job.memoryBudget = parseByteCount(f.memoryBudget, "--memory-budget");
   job.modeChosenByUser = cmd.count("--mode") > 0 || cmd.count("--sample") > 0;
   job.pipeline = toPipelineOptions(f.pipeline, cmd);

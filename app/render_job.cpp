@@ -19,6 +19,7 @@
 #include "io/stdout_sink.hpp"
 #include "io/tee_sink.hpp"
 #include "lht/lattice_scene.hpp"
+#include "lht/lookup_stats.hpp"
 #include "render/renderer.hpp"
 
 namespace lattice::app {
@@ -204,9 +205,20 @@ RenderResult renderScene(const RenderJob& job) {
   // is, under these settings.
   lht::TableSettings tables;
   tables.precision = job.precision;
+  tables.form = job.form;
+  if (job.onDemandCacheBytes) tables.onDemandCacheBytes = *job.onDemandCacheBytes;
+  if (job.lhtStats) tables.stats = std::make_shared<lht::LookupStatsBook>();
   tables.threads = static_cast<unsigned>(job.threads);  // one thread means one thread throughout
   const lht::SceneWithLattices loaded = lht::loadSceneWithLattices(job.scene, tables);
-  return withArithmetic(job.arithmetic, [&](auto type) { return renderWith<typename decltype(type)::type>(loaded, job); });
+  RenderResult result =
+      withArithmetic(job.arithmetic, [&](auto type) { return renderWith<typename decltype(type)::type>(loaded, job); });
+  if (tables.stats) {
+    const auto summaries = tables.stats->summaries();
+    if (summaries.empty()) fmt::print(stderr, "lattice render: lht-stats: no lattice was looked up\n");
+    for (const lht::LookupSummary& s : summaries)
+      fmt::print(stderr, "lattice render: lht-stats: {}\n", lht::describeLookups(s));
+  }
+  return result;
 }
 
 }  // namespace lattice::app

@@ -18,6 +18,7 @@
 
 #include "devices/device.hpp"
 #include "io/serial_options.hpp"
+#include "lht/lht_form.hpp"
 #include "lht/lht_precision.hpp"
 #include "quantize/run_pipeline.hpp"
 
@@ -38,6 +39,9 @@ struct RenderJob {
   bool fullRayTrace = false;          // lattices replaced by their exact CSG objects
   bool latticeShadows = true;
   std::optional<lht::LhtPrecision> precision;  // every lattice's entry precision
+  std::optional<lht::LhtForm> form;            // every lattice's table form
+  bool lhtStats = false;                       // count and print the lattices' look-ups
+  std::optional<std::uint64_t> onDemandCacheBytes;  // the on-demand form's bound
   std::optional<std::uint64_t> memoryBudget;   // bytes of peak resident memory
   bool modeChosenByUser = false;               // the quantizer mode is the user's (not the budget's)
   quantize::PipelineOptions pipeline;

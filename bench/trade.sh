@@ -17,7 +17,9 @@
 # picture size, ray tracing in full so the error is the quantizer's), and the
 # LHT entry precision (`lattice render --lht-precision`: the thesis's 14-byte
 # entry in the lattice rows, the wide 16-byte and compact 13-byte entries at
-# f_lat 1 and 2 in the "lht precision" rows; docs/lattices.md, "Entry precision").
+# f_lat 1 and 2 in the "lht precision" rows; docs/lattices.md, "Entry precision"),
+# and the LHT form (`--lht-form compressed` and `on-demand` at f_lat 1..4, the
+# "lht form" rows; docs/lattices.md).
 #
 # Timing is CPU time (user + system) with --threads 1: the machine may be
 # shared, and CPU time is what other processes disturb least. The lattice is
@@ -153,6 +155,20 @@ for scene in $scenes; do
       latticeRow "lht precision" "$precision f_lat=$f" "$scene" "$f" "$scene-f$f-$precision" --arith double \
         --lht-precision "$precision"
     done
+  done
+
+  # LHT form (double, thesis entries): the compressed table (rasterized once
+  # into a version-3 cache, as the hashed rows above) and the table built on
+  # demand during the render (no cache can hold it: every timed run traces
+  # the pairs it asks, so its time includes that work; table bytes 0, the
+  # entries it built are in docs/lattices.md, "The LHT built on demand").
+  for f in 1 2 3 4; do
+    echo "trade.sh: $scene: compressed table, f_lat=$f" >&2
+    latticeRow "lht form" "compressed f_lat=$f" "$scene" "$f" "$scene-f$f-compressed" --arith double --lht-form compressed
+    echo "trade.sh: $scene: on-demand table, f_lat=$f" >&2
+    sed -E "s/^oversample *= *[0-9.]+/oversample = $f/" "$root/scenes/$scene.toml" >"$work/$scene-f$f-on-demand.toml"
+    read -r t m < <(measure "$work/$scene-f$f-on-demand.toml" --arith double --lht-form on-demand -o "$work/img.png")
+    row "lht form" "on-demand f_lat=$f" "$t" "$m" 0 0 "$work/img.png"
   done
 
   # Palette and dithering: the Tek 4125 driver's stream, decoded by its emulator.

@@ -83,6 +83,14 @@ void __atomic_store_8(volatile void* p, std::uint64_t v, int) {
   *static_cast<volatile std::uint64_t*>(p) = v;
   restoreInterrupts(m);
 }
+std::uint64_t __atomic_fetch_or_8(volatile void* p, std::uint64_t v, int) {
+  const std::uint32_t m = maskInterrupts();
+  auto* q = static_cast<volatile std::uint64_t*>(p);
+  const std::uint64_t old = *q;
+  *q = old | v;
+  restoreInterrupts(m);
+  return old;
+}
 std::uint64_t __atomic_fetch_add_8(volatile void* p, std::uint64_t v, int) {
   const std::uint32_t m = maskInterrupts();
   auto* q = static_cast<volatile std::uint64_t*>(p);

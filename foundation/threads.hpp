@@ -27,6 +27,15 @@ namespace lattice {
 
 inline constexpr bool kHasThreads = LATTICE_HAS_THREADS;
 
+// Per-thread storage where there are threads; plain static storage where
+// there is one flow of control (a bare-metal target has no thread pointer
+// for thread_local to use).
+#if LATTICE_HAS_THREADS
+#define LATTICE_THREAD_LOCAL thread_local
+#else
+#define LATTICE_THREAD_LOCAL static
+#endif
+
 #if LATTICE_HAS_THREADS
 using Mutex = std::mutex;
 inline unsigned hardwareThreads() { return std::max(1u, std::thread::hardware_concurrency()); }

@@ -12,7 +12,8 @@
 // * The .lht entry parses the bytes as they are and again with the trailing
 //   FNV-1a checksum recomputed, so mutations also reach the checks behind it
 //   (a random flip almost never survives a 64-bit checksum). A table that
-//   parses is walked (chainStats) and probed with find().
+//   parses is walked (chainStats, hashed form) and probed through LhtLookup,
+//   the leaves' look-up, in either form (version 3 is the compressed one).
 // * The fixed .lht bytes also go through readLhtFile, the streamed reader the
 //   CLI uses, by way of a scratch file in $TMPDIR named by the process id
 //   (one per fuzzing worker). PNG bytes go to readPngBytes, the decoder
@@ -32,6 +33,7 @@
 #include "io/png.hpp"
 #include "lht/lattice_scene.hpp"
 #include "lht/lht_file.hpp"
+#include "lht/lht_lookup.hpp"
 #include "foundation/error.hpp"
 
 namespace lattice::fuzz {
@@ -45,7 +47,8 @@ void decode(StreamDecoder& decoder, std::span<const std::uint8_t> bytes) {
 }
 
 void probeLht(const lht::LhtFile& file) {
-  (void)file.table.chainStats();
+  if (file.form == lht::LhtForm::Hashed) (void)file.table.chainStats();
+  const lht::LhtLookup lookup(file);
   const auto& cells = file.box.cells();
   for (int i = 0; i < 64; ++i) {
     const auto coord = [&](int axis, int salt) {
@@ -53,7 +56,7 @@ void probeLht(const lht::LhtFile& file) {
     };
     const lht::LatticePoint in{coord(0, 0), coord(1, 5), coord(2, 11)};
     const lht::LatticePoint out{coord(0, 3), coord(1, 7), coord(2, 13)};
-    (void)file.table.find(in, out);
+    (void)lookup.find(in, out);
   }
 }
 

@@ -41,18 +41,34 @@ LeafDescPtr makeBakedLatticeLeafDesc(std::shared_ptr<const LhtFile> table, bool 
   return std::make_shared<BakedLatticeLeafDesc>(std::move(table), castsShadows, std::move(name), objectBounds);
 }
 
+std::shared_ptr<const LhtFile> makeBakedLhtFile(std::uint32_t version, const LatticeBox& box, std::uint64_t objectHash,
+                                                std::uint64_t pairs, std::uint64_t hits, LatticeHashTable table) {
+  auto file = std::make_shared<LhtFile>();
+  file->version = version;
+  file->box = box;
+  file->objectHash = objectHash;
+  file->pairs = pairs;
+  file->hits = hits;
+  file->form = LhtForm::Hashed;
+  file->table = std::move(table);
+  return file;
+}
+
 std::string bakeLatticeLeaf(SceneBaker& baker, const LhtFile& lht, bool castsShadows, const std::string& name,
                             const Bounds<double>& objectBounds) {
   baker.include("lht/baked_lattice.hpp");
+  if (lht.form != LhtForm::Hashed)
+    throw Error(ErrorKind::Usage, fmt::format("lattice '{}': only the hashed table form can be baked for the firmware "
+                                              "(docs/firmware.md); bake without a compressed or on-demand form",
+                                              name));
   // One table in flash for every instance of the lattice.
   const std::string file = baker.shared(&lht, [&] {
     const LatticeBox& box = lht.box;
     const LatticeHashTable& table = lht.table;
     const std::string slots = baker.flashBytes(table.slotView(), fmt::format("lattice '{}' table slots", name));
     return fmt::format(
-        "std::make_shared<const lattice::lht::LhtFile>(lattice::lht::LhtFile{{{}u, lattice::lht::LatticeBox({{{}, {}, "
-        "{}}}, {}, {}, {}), {}ull, {}ull, {}ull, lattice::lht::LatticeHashTable::inPlace("
-        "static_cast<lattice::lht::LhtPrecision>({}), {}, {}ull, {}ull)}})",
+        "lattice::lht::makeBakedLhtFile({}u, lattice::lht::LatticeBox({{{}, {}, {}}}, {}, {}, {}), {}ull, {}ull, {}ull, "
+        "lattice::lht::LatticeHashTable::inPlace(static_cast<lattice::lht::LhtPrecision>({}), {}, {}ull, {}ull))",
         lht.version, box.cells()[0], box.cells()[1], box.cells()[2], baker.number(box.lambda()),
         baker.number(box.oversample()), baker.vec3(box.origin()), lht.objectHash, lht.pairs, lht.hits,
         static_cast<int>(table.precision()), slots, table.bucketCount(), table.entryCount());

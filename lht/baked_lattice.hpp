@@ -16,6 +16,10 @@ namespace lattice::lht {
 LeafDescPtr makeBakedLatticeLeafDesc(std::shared_ptr<const LhtFile> table, bool castsShadows, std::string name,
                                      Bounds<double> objectBounds);
 
+// The hashed-form table a baked scene rebuilds (its slots read in place).
+std::shared_ptr<const LhtFile> makeBakedLhtFile(std::uint32_t version, const LatticeBox& box, std::uint64_t objectHash,
+                                                std::uint64_t pairs, std::uint64_t hits, LatticeHashTable table);
+
 // The C++ expression (render/scene_baker.hpp) of such a leaf for `table`:
 // its slots go to flash, the rest is written out as numbers.
 std::string bakeLatticeLeaf(SceneBaker& baker, const LhtFile& table, bool castsShadows, const std::string& name,

@@ -41,7 +41,10 @@ std::int32_t normalDirectionMax(LhtPrecision precision) {
 void encodeEntry(const RasterHit& hit, LhtPrecision precision, std::uint8_t* entry) {
   const std::uint8_t key[kEntryKeyBytes] = {hit.in.x, hit.in.y, hit.in.z, hit.out.x, hit.out.y, hit.out.z};
   std::copy(key, key + kEntryKeyBytes, entry);
-  std::uint8_t* payload = entry + kPayload;
+  encodePayload(hit, precision, entry + kPayload);
+}
+
+void encodePayload(const RasterHit& hit, LhtPrecision precision, std::uint8_t* payload) {
   const std::uint32_t s = quantizeFraction(hit.s, lhtPrecisionInfo(precision).sSteps);
   switch (precision) {
     case LhtPrecision::Thesis:
@@ -68,7 +71,10 @@ void encodeEntry(const RasterHit& hit, LhtPrecision precision, std::uint8_t* ent
 // Integers only: the fixed-point renderer calls this per pixel, and the
 // objdump test (tests/lht/fixed_lattice_test.cpp) checks it has no floating point.
 EntryIntegers decodeEntryIntegers(const std::uint8_t* entry, LhtPrecision precision) {
-  const std::uint8_t* payload = entry + kPayload;
+  return decodePayloadIntegers(entry + kPayload, precision);
+}
+
+EntryIntegers decodePayloadIntegers(const std::uint8_t* payload, LhtPrecision precision) {
   EntryIntegers out;
   switch (precision) {
     case LhtPrecision::Thesis:

@@ -47,12 +47,22 @@ std::uint32_t quantizeFraction(double s, std::uint32_t steps);
 // The thesis's normal component: round(clamp(n, -1, 1) * 127), signed.
 std::int8_t quantizeNormalComponent(double n);
 
+// The payload's bytes alone: what the compressed form (no key, no chain,
+// lht/compressed_table.hpp) stores per entry.
+inline std::size_t payloadBytes(LhtPrecision precision) {
+  return entryBytes(precision) - kEntryKeyBytes - kEntryNextBytes;
+}
+
 // Writes hit's key and payload to entry[0, entryBytes(precision) - 4); the
 // overflow index is the table's business.
 void encodeEntry(const RasterHit& hit, LhtPrecision precision, std::uint8_t* entry);
+// Writes hit's payload alone (payloadBytes(precision) bytes).
+void encodePayload(const RasterHit& hit, LhtPrecision precision, std::uint8_t* payload);
 // Reads an entry's payload (any bytes: a corrupt payload decodes to some
 // valid s and non-zero direction).
 EntryIntegers decodeEntryIntegers(const std::uint8_t* entry, LhtPrecision precision);
+// The same from the payload's first byte.
+EntryIntegers decodePayloadIntegers(const std::uint8_t* payload, LhtPrecision precision);
 // The largest |component| decodeEntryIntegers() gives for this precision.
 std::int32_t normalDirectionMax(LhtPrecision precision);
 

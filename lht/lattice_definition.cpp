@@ -8,7 +8,7 @@
 
 namespace lattice::lht {
 
-std::uint64_t LatticeDefinition::hashFor(LhtPrecision form) const {
+std::uint64_t LatticeDefinition::hashFor(LhtPrecision entryForm) const {
   // From our canonical form of the values (lht/canonical_toml.hpp), never a
   // formatter's output (toml++ 3.3.0's formatter overflowed a float-to-int
   // cast on small numbers in nested arrays: issue 15). "lattice2" marks the
@@ -16,7 +16,7 @@ std::uint64_t LatticeDefinition::hashFor(LhtPrecision form) const {
   // rasterized from another definition (docs/lattices.md). The thesis's
   // precision adds nothing to the key.
   const std::string formText =
-      form == LhtPrecision::Thesis ? "" : fmt::format(" precision={}", lhtPrecisionName(form));
+      entryForm == LhtPrecision::Thesis ? "" : fmt::format(" precision={}", lhtPrecisionName(entryForm));
   return fnv1a64(fmt::format("lattice2 spacing={} oversample={}{} object={}", canonicalDouble(lambda),
                              canonicalDouble(oversample), formText, objectText));
 }

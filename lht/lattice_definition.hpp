@@ -15,12 +15,17 @@
 #include <optional>
 #include <string>
 
+#include "lht/lht_form.hpp"
 #include "lht/lht_precision.hpp"
 #include "render/scene.hpp"
 
 namespace lattice::lht {
 
 class LatticeDefinition;
+class LookupStatsBook;
+
+// 64 MiB: Plate 7 at f_lat 4 stores 1.3 million answers (62 MiB at 48 bytes).
+inline constexpr std::uint64_t kDefaultOnDemandCacheBytes = std::uint64_t(64) << 20;
 
 // Under a memory budget: the entry form to pack a freshly rasterized table
 // in, given the form asked for, its entry count and the bytes its hit list
@@ -34,6 +39,12 @@ struct TableSettings {
   unsigned threads = 0;                   // rasterizer threads; 0: all cores
   bool progress = true;                   // a progress bar while rasterizing (on a terminal)
   TablePackingHook packing;               // unset: tables are packed as asked
+  std::optional<LhtForm> form;            // every table's form; unset: each definition's own
+  // The on-demand form's bound on stored answers (`--lht-cache SIZE`).
+  std::uint64_t onDemandCacheBytes = kDefaultOnDemandCacheBytes;
+  // Set: every lattice leaf counts its look-ups here (`render --lht-stats`,
+  // lht/lookup_stats.hpp); unset, the leaves count nothing.
+  std::shared_ptr<LookupStatsBook> stats;
 };
 
 class LatticeDefinition {
@@ -46,13 +57,16 @@ class LatticeDefinition {
   std::optional<std::filesystem::path> cache;
   bool shadows = true;  // false: this lattice casts no shadows (thesis plate 3)
   LhtPrecision precision = LhtPrecision::Thesis;  // the entry form the file asks for
+  LhtForm form = LhtForm::Hashed;                 // the table form the file asks for (`form`)
   std::string origin;                             // "scene.toml:12:1"
 
   // The entry form its table is built in under `settings`.
   LhtPrecision precisionUnder(const TableSettings& settings) const { return settings.precision.value_or(precision); }
+  // The table form under `settings`.
+  LhtForm formUnder(const TableSettings& settings) const { return settings.form.value_or(form); }
   // Hash of everything that decides the table's contents (the entry form
   // included, so a cache of another form is stale).
-  std::uint64_t hashFor(LhtPrecision form) const;
+  std::uint64_t hashFor(LhtPrecision entryForm) const;
   std::uint64_t hash() const { return hashFor(precision); }  // in the form the file asks for
   // The object's box in its own coordinates (computed once, shared by copies).
   const Bounds<double>& objectBounds() const;

@@ -3,7 +3,7 @@
 // of lht/lattice_entry_reader.hpp for --arith fixed (docs/fixed-point.md).
 //
 // Method and tunables:
-// * Entries are decoded to integers (decodeEntryIntegers, the same decoder
+// * Entries are decoded to integers (decodePayloadIntegers, the same decoder
 //   find() uses before its conversion to double): s is a fraction of
 //   integers, the normal an integer direction normalized in Q31.32.
 // * The integer direction (components up to normalDirectionMax: 127, or
@@ -36,8 +36,8 @@ class EntryReader<Fixed32> {
  public:
   static constexpr double kSmallestCell = 1e-6;
 
-  EntryReader(const LatticeHashTable& table, const Mat4d& latticeToWorld)
-      : table_(&table), precision_(table.precision()) {
+  EntryReader(const LhtLookup& table, const Mat4d& latticeToWorld)
+      : table_(table), precision_(table.precision()) {
     const double cell = singularValueRange(latticeToWorld).smallest;
     if (!(cell >= kSmallestCell))
       throw Error(ErrorKind::Input,
@@ -52,9 +52,9 @@ class EntryReader<Fixed32> {
   }
 
   bool read(const LatticePoint& from, const LatticePoint& to, Fixed32& s, Vec3<Fixed32>& worldNormal) const {
-    const std::uint8_t* entry = table_->findEntry(from, to);
-    if (!entry) return false;
-    const EntryIntegers e = decodeEntryIntegers(entry, precision_);
+    const std::uint8_t* payload = table_.payload(from, to);
+    if (!payload) return false;
+    const EntryIntegers e = decodePayloadIntegers(payload, precision_);
     // int: std::int32_t is long on 32-bit ARM, and Fixed is built from int.
     const auto fixed = [](std::int32_t v) { return Fixed32(static_cast<int>(v)); };
     s = fixed(e.sNumerator) / fixed(e.sDenominator);
@@ -63,7 +63,7 @@ class EntryReader<Fixed32> {
   }
 
  private:
-  const LatticeHashTable* table_;
+  LhtLookup table_;
   LhtPrecision precision_;
   Mat3<Fixed32> directionToWorld_{Fixed32(1)};
 };

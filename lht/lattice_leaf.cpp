@@ -8,6 +8,7 @@
 #include "foundation/transform_condition.hpp"
 #include "lht/lattice_entry_reader.hpp"
 #include "lht/lattice_entry_reader_fixed.hpp"
+#include "lht/lht_lookup.hpp"
 #include "foundation/error.hpp"
 #include "foundation/arithmetics.hpp"
 
@@ -19,11 +20,13 @@ template <typename T>
 class LatticeLeaf final : public Primitive<T> {
  public:
   // latticeToWorld: the lattice box's own map, then the instance's transform.
-  LatticeLeaf(std::shared_ptr<const LhtFile> lht, const Mat4d& latticeToWorld, MaterialId material, bool castsShadows)
+  LatticeLeaf(std::shared_ptr<const LhtFile> lht, const Mat4d& latticeToWorld, MaterialId material, bool castsShadows,
+              LookupStats* stats)
       : lht_(std::move(lht)),
-        reader_(checked(lht_->table, latticeToWorld), latticeToWorld),
+        reader_(checked(LhtLookup(*lht_), latticeToWorld), latticeToWorld),
         material_(material),
-        castsShadows_(castsShadows) {
+        castsShadows_(castsShadows),
+        stats_(stats) {
     worldToLattice_ = Mat4<T>(glm::inverse(latticeToWorld));
     const auto& c = lht_->box.cells();
     box_ = {Vec3<T>(T(0)), Vec3<T>(T(c[0]), T(c[1]), T(c[2]))};
@@ -50,8 +53,11 @@ class LatticeLeaf final : public Primitive<T> {
     if (in == outPoint) return;
     Span<T> span;
     T enterS, leaveS(0);
-    if (!reader_.read(in, outPoint, enterS, span.enter.normal)) return;
+    const bool haveEnter = reader_.read(in, outPoint, enterS, span.enter.normal);
+    if (stats_) stats_->record(in, outPoint, haveEnter);
+    if (!haveEnter) return;
     const bool haveLeave = reader_.read(outPoint, in, leaveS, span.leave.normal);
+    if (stats_) stats_->record(outPoint, in, haveLeave);
     span.enter.t = t0 + (t1 - t0) * enterS;
     span.enter.material = material_;
     // (p_o, p_i) hits whenever (p_i, p_o) does (same segment); guard anyway.
@@ -76,7 +82,7 @@ class LatticeLeaf final : public Primitive<T> {
     return {coord(0), coord(1), coord(2)};
   }
   // The transform is held to T's condition limit before the reader sees it.
-  static const LatticeHashTable& checked(const LatticeHashTable& table, const Mat4d& latticeToWorld) {
+  static LhtLookup checked(LhtLookup table, const Mat4d& latticeToWorld) {
     const std::string problem = conditionProblemFor<T>(latticeToWorld);
     if (!problem.empty()) throw Error(ErrorKind::Input, "lattice: " + problem);
     return table;
@@ -86,6 +92,7 @@ class LatticeLeaf final : public Primitive<T> {
   EntryReader<T> reader_;  // entries -> s and world normals, per arithmetic
   MaterialId material_;
   bool castsShadows_;
+  LookupStats* stats_;  // null unless --lht-stats
   Mat4<T> worldToLattice_{T(1)};
   Bounds<T> box_;
   Bounds<T> bounds_;
@@ -95,14 +102,14 @@ class LatticeLeaf final : public Primitive<T> {
 
 template <typename T>
 PrimitivePtr<T> makeLatticeLeaf(std::shared_ptr<const LhtFile> table, const Mat4d& objectToWorld, MaterialId material,
-                                bool castsShadows) {
+                                bool castsShadows, LookupStats* stats) {
   if (!table) throw Error(ErrorKind::Internal, "makeLatticeLeaf: no table");
   const Mat4d latticeToWorld = objectToWorld * table->box.latticeToObject();
-  return std::make_unique<LatticeLeaf<T>>(std::move(table), latticeToWorld, material, castsShadows);
+  return std::make_unique<LatticeLeaf<T>>(std::move(table), latticeToWorld, material, castsShadows, stats);
 }
 
 #define LATTICE_INSTANTIATE(T) \
-  template PrimitivePtr<T> makeLatticeLeaf<T>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId, bool);
+  template PrimitivePtr<T> makeLatticeLeaf<T>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId, bool, LookupStats*);
 LATTICE_FOR_EACH_ARITHMETIC(LATTICE_INSTANTIATE)
 #undef LATTICE_INSTANTIATE
 

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "lht/lht_file.hpp"
+#include "lht/lookup_stats.hpp"
 #include "render/primitive.hpp"
 #include "foundation/arithmetics.hpp"
 
@@ -24,12 +25,14 @@ namespace lattice::lht {
 // starts on and dropped; without that, every lit lattice point would shadow
 // itself ("acne"). Crossings further away - another part of the same object,
 // another lattice - shadow as usual.
+// stats: null, or where every look-up is counted (`render --lht-stats`).
 template <typename T>
 PrimitivePtr<T> makeLatticeLeaf(std::shared_ptr<const LhtFile> table, const Mat4d& objectToWorld, MaterialId material,
-                                bool castsShadows = true);
+                                bool castsShadows = true, LookupStats* stats = nullptr);
 
-#define LATTICE_DECLARE(T) \
-  extern template PrimitivePtr<T> makeLatticeLeaf<T>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId, bool);
+#define LATTICE_DECLARE(T)                                                                                  \
+  extern template PrimitivePtr<T> makeLatticeLeaf<T>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId, bool, \
+                                                     LookupStats*);
 LATTICE_FOR_EACH_ARITHMETIC(LATTICE_DECLARE)
 #undef LATTICE_DECLARE
 

@@ -38,7 +38,7 @@ class LatticeLeafDesc final : public LeafTemplate<LatticeLeafDesc> {
     // The full ray trace swaps the lattice for the object it was rasterized from.
     if (options.fullRayTrace) return buildPrimitive<T>(definition_->object, toWorld, options, material);
     return makeLatticeLeaf<T>(tables_->table(definition_), toWorld, material,
-                              options.latticeShadows && definition_->shadows);
+                              options.latticeShadows && definition_->shadows, tables_->lookupStats(definition_));
   }
   Bounds<double> objectBounds() const override { return definition_->objectBounds(); }
   std::string describe() const override { return fmt::format("lattice '{}'", definition_->name); }
@@ -84,7 +84,7 @@ void parseLatticeSection(const toml::node& section, ParseContext& context, Latti
   for (const toml::node& entry : *list) {
     const toml::table* table = entry.as_table();
     if (!table) context.fail(entry, "each [[lattices]] entry must be a table");
-    context.checkKeys(*table, {"name", "spacing", "oversample", "cache", "object", "shadows", "precision"});
+    context.checkKeys(*table, {"name", "spacing", "oversample", "cache", "object", "shadows", "precision", "form"});
     auto def = std::make_shared<LatticeDefinition>();
     const auto name = context.string(*table, "name");
     if (!name || name->empty()) context.fail(*table, "a [[lattices]] entry needs a non-empty `name`");
@@ -101,6 +101,13 @@ void parseLatticeSection(const toml::node& section, ParseContext& context, Latti
         context.fail(*table->get("precision"), fmt::format("unknown LHT entry `precision` '{}'; use one of {}",
                                                            *precision, lhtPrecisionChoices()));
       def->precision = *parsed;
+    }
+    if (const auto form = context.string(*table, "form")) {
+      const auto parsed = lhtFormFromName(*form);
+      if (!parsed)
+        context.fail(*table->get("form"),
+                     fmt::format("unknown LHT `form` '{}'; use one of {}", *form, lhtFormChoices()));
+      def->form = *parsed;
     }
     if (const auto cache = context.string(*table, "cache")) {
       std::filesystem::path path(*cache);

@@ -8,6 +8,7 @@
 //   cache = "hair.lht"           # optional; relative to the scene file
 //   shadows = true               # false: casts no shadows, like particles (plate 3)
 //   precision = "thesis"         # LHT entry: thesis (14 B), wide (16 B), compact (13 B)
+//   form = "hashed"              # LHT form: hashed (the thesis's), compressed (no key)
 //   object = { type = "union", children = [ ... ] }   # any CSG subtree
 //
 //   [[objects]]

@@ -15,6 +15,7 @@
 
 #include "lht/lattice_definition.hpp"
 #include "lht/lht_file.hpp"
+#include "lht/lookup_stats.hpp"
 
 namespace lattice::lht {
 
@@ -26,13 +27,18 @@ class LatticeTables {
 
   const TableSettings& settings() const { return settings_; }
   std::shared_ptr<const LhtFile> table(const LatticeDefinitionPtr& lattice) const;
+  // Where the lattice's leaves count their look-ups: null unless the
+  // settings ask for statistics (builds the table first).
+  LookupStats* lookupStats(const LatticeDefinitionPtr& lattice) const;
 
  private:
   struct Slot {
     LatticeDefinitionPtr lattice;  // keeps the key's address from being reused
     std::once_flag once;
     std::shared_ptr<const LhtFile> table;
+    LookupStats* stats = nullptr;  // owned by settings_.stats
   };
+  std::shared_ptr<Slot> slotOf(const LatticeDefinitionPtr& lattice) const;
   const TableSettings settings_;
   mutable Mutex mutex_;  // guards slots_ (not the building, which each slot's once_flag orders)
   mutable std::map<const LatticeDefinition*, std::shared_ptr<Slot>> slots_;

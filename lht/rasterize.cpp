@@ -26,23 +26,78 @@ bool traceSegment(const Primitive<double>& object, const Mat4d& latticeToObject,
   return true;
 }
 
+}  // namespace
+
+PairTracer::PairTracer(const LatticeBox& box, const Primitive<double>& object, double grazeTolerance)
+    : box_(box), object_(object), grazeTolerance_(grazeTolerance), latticeToObject_(box.latticeToObject()) {
+  // The object's box in lattice coordinates, grown by the graze tolerance:
+  // a segment that misses it cannot touch the object.
+  const Bounds<double>& b = object.bounds();
+  if (b.isFinite() && !b.empty()) {
+    bounds_ = transformBounds(b, box.objectToLattice());
+    bounds_.lo -= Vec3d(2 * grazeTolerance);
+    bounds_.hi += Vec3d(2 * grazeTolerance);
+  } else {
+    bounds_ = Bounds<double>::infinite();
+  }
+}
+
+bool PairTracer::trace(const LatticePoint& in, const LatticePoint& out, RasterHit& hit) const {
+  bool traced = false;
+  return in != out && trace(in, box_.facesOf(in), out, box_.facesOf(out), hit, traced);
+}
+
+bool PairTracer::trace(const LatticePoint& in, std::uint8_t facesIn, const LatticePoint& out, std::uint8_t facesOut,
+                       RasterHit& hit, bool& traced) const {
+  traced = false;
+  // Points sharing a face span a segment inside that face, and the object
+  // lies at least lambda/2 inside the box: a certain miss.
+  if (facesIn & facesOut) return false;
+  const Vec3d from = in.toVec(), to = out.toVec();
+  double t0, t1;
+  if (!bounds_.clip(Ray<double>{from, to - from}, 0.0, 1.0, t0, t1)) return false;
+  traced = true;
+  hit = RasterHit{in, out, 0.0, {}};
+  if (!traceClosed(from, to, hit.s, hit.normal)) return false;
+  hit.normal = glm::normalize(hit.normal);
+  return true;
+}
+
+// The segment against the closed object: if it misses, the four segments
+// shifted sideways by the graze tolerance decide whether it touches the
+// surface (an exactly tangent segment gives a double root that rounding may
+// lose either way; a shifted one cuts a clean chord).
+bool PairTracer::traceClosed(const Vec3d& from, const Vec3d& to, double& s, Vec3d& normal) const {
+  if (traceSegment(object_, latticeToObject_, from, to, s, normal)) return true;
+  const Vec3d d = to - from;
+  const Vec3d a = std::abs(d.x) <= std::abs(d.y) && std::abs(d.x) <= std::abs(d.z) ? Vec3d(1, 0, 0)
+                  : std::abs(d.y) <= std::abs(d.z)                                 ? Vec3d(0, 1, 0)
+                                                                                  : Vec3d(0, 0, 1);
+  const Vec3d u = glm::normalize(glm::cross(d, a));
+  const Vec3d v = glm::normalize(glm::cross(d, u));
+  const double e = grazeTolerance_;
+  bool found = false;
+  for (const Vec3d& offset : {u * e, -u * e, v * e, -v * e}) {
+    double sOffset;
+    Vec3d nOffset;
+    if (traceSegment(object_, latticeToObject_, from + offset, to + offset, sOffset, nOffset) &&
+        (!found || sOffset < s)) {
+      found = true;
+      s = sOffset;
+      normal = nOffset;
+    }
+  }
+  return found;
+}
+
+namespace {
+
 class Rasterizer {
  public:
   Rasterizer(const LatticeBox& box, const Primitive<double>& object, const RasterOptions& options)
-      : object_(object), options_(options), points_(box.boundaryPoints()) {
-    latticeToObject_ = box.latticeToObject();
+      : options_(options), points_(box.boundaryPoints()), tracer_(box, object, options.grazeTolerance) {
     faces_.reserve(points_.size());
     for (const LatticePoint& p : points_) faces_.push_back(box.facesOf(p));
-    // The object's box in lattice coordinates, grown by the graze tolerance:
-    // a segment that misses it cannot touch the object.
-    const Bounds<double>& b = object.bounds();
-    if (b.isFinite() && !b.empty()) {
-      bounds_ = transformBounds(b, box.objectToLattice());
-      bounds_.lo -= Vec3d(2 * options.grazeTolerance);
-      bounds_.hi += Vec3d(2 * options.grazeTolerance);
-    } else {
-      bounds_ = Bounds<double>::infinite();
-    }
     perPoint_.resize(points_.size());
   }
 
@@ -89,7 +144,6 @@ class Rasterizer {
  private:
   void tracePoint(std::size_t i, RasterStats& stats) {
     const LatticePoint& in = points_[i];
-    const Vec3d from = in.toVec();
     std::vector<RasterHit>& out = perPoint_[i];
     for (std::size_t j = 0; j < points_.size(); ++j) {
       const int multiplicity = LatticeBox::pairMultiplicity(faces_[i], faces_[j]);
@@ -97,55 +151,21 @@ class Rasterizer {
       stats.pairs += static_cast<std::uint64_t>(multiplicity);
       if (i == j) continue;  // a point, not a segment
       ++stats.distinctPairs;
-      // Points sharing a face span a segment inside that face, and the object
-      // lies at least lambda/2 inside the box: a certain miss.
-      if (faces_[i] & faces_[j]) continue;
-      const Vec3d to = points_[j].toVec();
-      double t0, t1;
-      if (!bounds_.clip(Ray<double>{from, to - from}, 0.0, 1.0, t0, t1)) continue;
-      ++stats.traced;
-      RasterHit hit{in, points_[j], 0.0, {}};
-      if (traceClosed(from, to, hit.s, hit.normal)) {
+      RasterHit hit;
+      bool traced = false;
+      const bool hits = tracer_.trace(in, faces_[i], points_[j], faces_[j], hit, traced);
+      if (traced) ++stats.traced;
+      if (hits) {
         stats.hits += static_cast<std::uint64_t>(multiplicity);
-        hit.normal = glm::normalize(hit.normal);
         out.push_back(hit);
       }
     }
   }
 
-  // The segment against the closed object: if it misses, the four segments
-  // shifted sideways by the graze tolerance decide whether it touches the
-  // surface (an exactly tangent segment gives a double root that rounding may
-  // lose either way; a shifted one cuts a clean chord).
-  bool traceClosed(const Vec3d& from, const Vec3d& to, double& s, Vec3d& normal) const {
-    if (traceSegment(object_, latticeToObject_, from, to, s, normal)) return true;
-    const Vec3d d = to - from;
-    const Vec3d a = std::abs(d.x) <= std::abs(d.y) && std::abs(d.x) <= std::abs(d.z) ? Vec3d(1, 0, 0)
-                    : std::abs(d.y) <= std::abs(d.z)                                 ? Vec3d(0, 1, 0)
-                                                                                    : Vec3d(0, 0, 1);
-    const Vec3d u = glm::normalize(glm::cross(d, a));
-    const Vec3d v = glm::normalize(glm::cross(d, u));
-    const double e = options_.grazeTolerance;
-    bool found = false;
-    for (const Vec3d& offset : {u * e, -u * e, v * e, -v * e}) {
-      double sOffset;
-      Vec3d nOffset;
-      if (traceSegment(object_, latticeToObject_, from + offset, to + offset, sOffset, nOffset) &&
-          (!found || sOffset < s)) {
-        found = true;
-        s = sOffset;
-        normal = nOffset;
-      }
-    }
-    return found;
-  }
-
-  const Primitive<double>& object_;
   RasterOptions options_;
   std::vector<LatticePoint> points_;
+  PairTracer tracer_;
   std::vector<std::uint8_t> faces_;
-  Mat4d latticeToObject_{1.0};
-  Bounds<double> bounds_;
   std::vector<std::vector<RasterHit>> perPoint_;
   std::atomic<std::size_t> next_{0};
 };

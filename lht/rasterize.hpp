@@ -43,4 +43,28 @@ struct RasterOptions {
 // `object` is in object coordinates; box says how they map to lattice ones.
 RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const RasterOptions& options = {});
 
+// One pair's answer, exactly as rasterize() gives it: the rasterizer and the
+// on-demand table (lht/on_demand_table.hpp) share it, so an entry built on
+// demand has the bytes the precomputed table would hold.
+class PairTracer {
+ public:
+  PairTracer(const LatticeBox& box, const Primitive<double>& object, double grazeTolerance = RasterOptions{}.grazeTolerance);
+  // The hit of the segment from `in` to `out` (points on the box's surface),
+  // with its unit normal; false for a miss, including the pairs rasterize()
+  // never traces (a shared face, a segment missing the object's box).
+  bool trace(const LatticePoint& in, const LatticePoint& out, RasterHit& hit) const;
+  // The same for pairs whose faces are known (the rasterizer's inner loop).
+  bool trace(const LatticePoint& in, std::uint8_t facesIn, const LatticePoint& out, std::uint8_t facesOut,
+             RasterHit& hit, bool& traced) const;
+
+ private:
+  bool traceClosed(const Vec3d& from, const Vec3d& to, double& s, Vec3d& normal) const;
+
+  const LatticeBox& box_;
+  const Primitive<double>& object_;
+  double grazeTolerance_;
+  Mat4d latticeToObject_{1.0};
+  Bounds<double> bounds_;
+};
+
 }  // namespace lattice::lht

@@ -49,6 +49,11 @@ class LatticeHashTable {
   // absent): fixed-point rendering decodes them with decodeEntryIntegers()
   // instead of through LhtHit's doubles.
   const std::uint8_t* findEntry(const LatticePoint& in, const LatticePoint& out) const;
+  // The entry's payload (payloadBytes(precision()) bytes after the key); null if absent.
+  const std::uint8_t* findPayload(const LatticePoint& in, const LatticePoint& out) const {
+    const std::uint8_t* e = findEntry(in, out);
+    return e ? e + kEntryKeyBytes : nullptr;
+  }
 
   LhtPrecision precision() const { return precision_; }
   std::size_t entryStride() const { return stride_; }

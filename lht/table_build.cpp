@@ -16,8 +16,12 @@ namespace {
 // The steps every table goes through; `hashFor` names the object for the
 // form the table ends up in.
 BuiltTable packTable(const LatticeObject& object, double lambda, double oversample, const TableSettings& settings,
+                     LhtForm tableForm,
                      const std::function<LhtPrecision(std::uint64_t, std::uint64_t)>& chooseForm,
                      const std::function<std::uint64_t(LhtPrecision)>& hashFor) {
+  if (tableForm == LhtForm::OnDemand)
+    throw Error(ErrorKind::Usage, "an on-demand table is built while rendering, not rasterized; use --form hashed or "
+                                  "compressed");
   BuiltTable built;
   LhtFile& lht = built.lht;
   lht.box = LatticeBox(object.bounds, lambda, oversample);
@@ -30,7 +34,11 @@ BuiltTable packTable(const LatticeObject& object, double lambda, double oversamp
   lht.objectHash = hashFor(form);
   lht.pairs = raster.stats.pairs;
   lht.hits = raster.stats.hits;
-  lht.table = LatticeHashTable(raster.hits, form);
+  lht.form = tableForm;
+  if (tableForm == LhtForm::Compressed)
+    lht.compressed = CompressedTable(raster.hits, lht.box.cells(), form);
+  else
+    lht.table = LatticeHashTable(raster.hits, form);
   return built;
 }
 
@@ -62,7 +70,7 @@ BuiltTable buildLatticeTable(const LatticeDefinition& lattice, const TableSettin
     const LatticeObject solid = sceneObject(lattice.object, lattice.objectText);
     const LhtPrecision requested = lattice.precisionUnder(settings);
     return packTable(
-        solid, lattice.lambda, lattice.oversample, settings,
+        solid, lattice.lambda, lattice.oversample, settings, lattice.formUnder(settings),
         [&](std::uint64_t entries, std::uint64_t hitListBytes) {
           return settings.packing ? settings.packing(lattice, requested, entries, hitListBytes) : requested;
         },
@@ -84,7 +92,7 @@ BuiltTable buildLatticeTable(const TableRequest& request) {
   const LatticeObject object = shapeObject(request);
   const LhtPrecision form = request.settings.precision.value_or(LhtPrecision::Thesis);
   return packTable(
-      object, 1.0, request.oversample.value_or(1.0), request.settings,
+      object, 1.0, request.oversample.value_or(1.0), request.settings, request.settings.form.value_or(LhtForm::Hashed),
       [&](std::uint64_t, std::uint64_t) { return form; }, [&](LhtPrecision) { return object.hash(); });
 }
 

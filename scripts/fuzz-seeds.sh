@@ -3,7 +3,7 @@
 # binaries are committed: scenes/*.toml for the scene loader, the golden Tek
 # streams for the two decoders, the golden PNGs for the PNG reader, and small
 # .lht files rasterized by the `lattice` binary given (a sphere and a
-# capsule in each entry precision).
+# capsule in each entry precision, and the sphere in the compressed form).
 #   scripts/fuzz-seeds.sh OUT_DIR LATTICE_BINARY
 # Writes OUT_DIR/<target>/ for scene, lht, tek4125, tek4027, png. The
 # regression inputs (fuzz/regressions/<target>/) join each corpus too.
@@ -28,6 +28,9 @@ for precision in thesis wide compact; do
     -o "$out/lht/sphere-$precision.lht" >/dev/null
   "$lattice" rasterize --shape capsule --radius 0.6 --length 2 --precision "$precision" --threads 1 \
     -o "$out/lht/capsule-$precision.lht" >/dev/null
+  # The compressed form: .lht version 3.
+  "$lattice" rasterize --shape sphere --radius 1.5 --precision "$precision" --form compressed --threads 1 \
+    -o "$out/lht/sphere-$precision-compressed.lht" >/dev/null
 done
 for t in scene lht tek4125 tek4027 png; do
   echo "fuzz-seeds: $t: $(find "$out/$t" -type f | wc -l) files, $(du -sk "$out/$t" | cut -f1) KiB"

@@ -104,8 +104,9 @@ TEST_CASE("fixed point: the lattice leaf's per-pixel code has no floating point"
 #else
   // The integer helpers the Fixed32 leaf calls per pixel: the table lookup
   // and the entry decoders of every precision (their names do not say Fixed).
-  const std::vector<std::string> integerPath = {"lht::LatticeHashTable::findEntry(", "lht::decodeEntryIntegers(",
-                                                "lht::decodeOctahedral(", "lht::LatticeHashTable::bucketOf("};
+  const std::vector<std::string> integerPath = {"lht::LatticeHashTable::findEntry(", "lht::decodePayloadIntegers(",
+                                                "lht::decodeOctahedral(", "lht::LatticeHashTable::bucketOf(",
+                                                "lht::CompressedTable::findPayload("};
   const testing::FixedPointScan scan =
       testing::scanFixedPointCode(std::string(LATTICE_BINARY_DIR) + "/lht/liblattice_lht.a", integerPath);
   const auto seen = [&](const std::string& name) {

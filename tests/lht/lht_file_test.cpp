@@ -144,8 +144,8 @@ TEST_CASE("lht file: every kind of bad file is refused with a message naming it 
   }
   SECTION("wrong version") {
     std::vector<std::uint8_t> bad = good;
-    bad[8] = 3;
-    CHECK(refusal(bad).find("version 3") != std::string::npos);
+    bad[8] = 4;
+    CHECK(refusal(bad).find("version 4") != std::string::npos);
   }
   SECTION("an unknown precision code, even with a valid checksum") {
     std::vector<std::uint8_t> bad = good;

@@ -1,6 +1,7 @@
-// The entry-precision knob from the command line, run through the real
-// `lattice` binary (test_lht depends on it): `rasterize --precision`,
-// `render --lht-precision` overriding the scene, and `lht-info` reporting it.
+// The entry-precision and form knobs from the command line, run through the
+// real `lattice` binary (test_lht depends on it): `rasterize --precision` and
+// `--form`, `render --lht-precision` and `--lht-form` overriding the scene,
+// `lht-info` reporting them, and `render --lht-stats`.
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
@@ -132,4 +133,53 @@ TEST_CASE("precision CLI: a bad precision in a scene names the file and line and
   CHECK(run.stderrText.find(dir / "s.toml:18:13:") != std::string::npos);
   CHECK(run.stderrText.find("unknown LHT entry `precision` 'double'") != std::string::npos);
   CHECK(run.stderrText.find("thesis (14 B/entry), wide (16 B/entry), compact (13 B/entry)") != std::string::npos);
+}
+
+TEST_CASE("form CLI: rasterize --form compressed writes version 3, lht-info shows the form, render uses it") {
+  REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
+  const TempDir dir("form-cli");
+  const std::string lht = dir / "c.lht";
+  const auto run = runLattice(fmt::format("rasterize --shape sphere --oversample 2 --form compressed -o '{}' --stats >'{}'",
+                                          lht, dir / "stats.txt"));
+  INFO(run.stderrText);
+  REQUIRE(run.exitCode == 0);
+  CHECK(readText(dir / "stats.txt").find("form=compressed") != std::string::npos);
+  const LhtFile read = readLhtFile(lht);
+  CHECK(read.form == LhtForm::Compressed);
+  CHECK(read.entryCount() == 1562);
+  REQUIRE(runLattice(fmt::format("lht-info '{}' >'{}'", lht, dir / "info.txt")).exitCode == 0);
+  const std::string info = readText(dir / "info.txt");
+  CHECK(info.find("format:        version 3") != std::string::npos);
+  CHECK(info.find("form:          compressed") != std::string::npos);
+  CHECK(info.find("pair space:    98 boundary points, 9506 ordered pairs") != std::string::npos);
+  CHECK(info.find("pair layout:   symmetric") != std::string::npos);
+  // The scene's cache in each form; the pictures are the same bytes.
+  std::ofstream(dir / "s.toml") << ballScene();
+  REQUIRE(runLattice(fmt::format("render '{}' --lht-form compressed -o '{}'", dir / "s.toml", dir / "c.png")).exitCode == 0);
+  CHECK(readLhtFile(dir / "ball.lht").form == LhtForm::Compressed);
+  std::filesystem::remove(dir / "ball.lht");
+  REQUIRE(runLattice(fmt::format("render '{}' -o '{}'", dir / "s.toml", dir / "h.png")).exitCode == 0);
+  CHECK(readLhtFile(dir / "ball.lht").form == LhtForm::Hashed);
+  CHECK(readText(dir / "c.png") == readText(dir / "h.png"));
+  const auto bad = runLattice(fmt::format("render '{}' --lht-form zip -o '{}'", dir / "s.toml", dir / "x.png"));
+  CHECK(bad.exitCode == 2);
+  CHECK(bad.stderrText.find("--lht-form: unknown LHT form 'zip'; use one of hashed, compressed") != std::string::npos);
+}
+
+TEST_CASE("form CLI: render --lht-stats prints each lattice's look-ups; without it nothing is counted") {
+  REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
+  const TempDir dir("stats-cli");
+  std::ofstream(dir / "s.toml") << ballScene();
+  const auto counted = runLattice(fmt::format("render '{}' --lht-stats -o '{}'", dir / "s.toml", dir / "a.png"));
+  REQUIRE(counted.exitCode == 0);
+  INFO(counted.stderrText);
+  CHECK(counted.stderrText.find("lht-stats: lattice 'ball' (f_lat 2): ") != std::string::npos);
+  CHECK(counted.stderrText.find("distinct (p_i, p_o) asked: ") != std::string::npos);
+  CHECK(counted.stderrText.find("of N_iz = 3486 counted as eq. 1.3 does") != std::string::npos);
+  const auto plain = runLattice(fmt::format("render '{}' -o '{}'", dir / "s.toml", dir / "b.png"));
+  REQUIRE(plain.exitCode == 0);
+  CHECK(plain.stderrText.find("lht-stats") == std::string::npos);
+  CHECK(readText(dir / "a.png") == readText(dir / "b.png"));
+  const auto full = runLattice(fmt::format("render '{}' --full --lht-stats -o '{}'", dir / "s.toml", dir / "f.png"));
+  CHECK(full.stderrText.find("lht-stats: no lattice was looked up") != std::string::npos);
 }
