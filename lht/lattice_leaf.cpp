@@ -130,50 +130,52 @@ class LatticeLeaf final : public Primitive<T> {
   bool blend(const Vec3<T>& enter, const Vec3<T>& leave, T& enterS, Vec3<T>& enterNormal, T& leaveS,
              Vec3<T>& leaveNormal) const {
     const Corners in = cornersOf(enter), outs = cornersOf(leave);
-    struct Hit {
-      int i, o;
+    struct Pair {
+      int i, o;  // corners of the entry and of the exit
       T w;
     };
-    Hit hits[16];
-    int hitCount = 0;
-    T total(0), covered(0), sSum(0), best(0);
-    Vec3<T> nSum(T(0)), bestNormal(T(0));
+    // The pairs, heaviest first, so that a ray the object is not near is
+    // decided as soon as the missing pairs hold over half the weight.
+    Pair pairs[16];
+    int pairCount = 0;
+    T total(0);
     for (int i = 0; i < in.count; ++i)
       for (int o = 0; o < outs.count; ++o) {
         if (in.point[i] == outs.point[o]) continue;  // no segment
-        const T w = in.weight[i] * outs.weight[o];
-        total += w;
-        T s;
-        Vec3<T> n;
-        if (!read(in.point[i], outs.point[o], s, n)) continue;
-        hits[hitCount++] = {i, o, w};
-        covered += w;
-        sSum += w * s;
-        nSum += w * n;
-        if (w > best) best = w, bestNormal = n;
+        const Pair pair{i, o, in.weight[i] * outs.weight[o]};
+        total += pair.w;
+        int k = pairCount++;
+        for (; k > 0 && pairs[k - 1].w < pair.w; --k) pairs[k] = pairs[k - 1];
+        pairs[k] = pair;
       }
+    Pair heaviest{0, 0, T(0)};
+    int hitCount = 0;
+    T missed(0), covered(0), sSum(0);
+    Vec3<T> nSum(T(0)), bestNormal(T(0));
+    for (int k = 0; k < pairCount; ++k) {
+      const Pair& pair = pairs[k];
+      T s;
+      Vec3<T> n;
+      if (!read(in.point[pair.i], outs.point[pair.o], s, n)) {
+        missed += pair.w;
+        if (missed + missed > total) return false;
+        continue;
+      }
+      if (hitCount++ == 0) bestNormal = n, heaviest = pair;
+      covered += pair.w;
+      sSum += pair.w * s;
+      nSum += pair.w * n;
+    }
     if (hitCount == 0 || covered + covered < total) return false;
     enterS = sSum / covered;
     // Opposite normals can cancel; the heaviest hit's normal stands in.
     enterNormal = lattice::length(nSum) > covered * T(0.25) ? lattice::normalize(nSum) : bestNormal;
-    T lSum(0), lCovered(0), lBest(0);
-    Vec3<T> lnSum(T(0)), lBestNormal(-enterNormal);
-    for (int h = 0; h < hitCount; ++h) {
-      T s;
-      Vec3<T> n;
-      if (!read(outs.point[hits[h].o], in.point[hits[h].i], s, n)) continue;
-      lCovered += hits[h].w;
-      lSum += hits[h].w * s;
-      lnSum += hits[h].w * n;
-      if (hits[h].w > lBest) lBest = hits[h].w, lBestNormal = n;
-    }
-    if (!(lCovered > T(0))) {
+    // The exit from the heaviest hitting pair alone: blending it too cost
+    // 0.035 s of 0.50 on Plate 6 at f_lat 1 for 0.01 dB (docs/lattices.md).
+    if (!read(outs.point[heaviest.o], in.point[heaviest.i], leaveS, leaveNormal)) {
       leaveS = T(0);
       leaveNormal = -enterNormal;
-      return true;
     }
-    leaveS = lSum / lCovered;
-    leaveNormal = lattice::length(lnSum) > lCovered * T(0.25) ? lattice::normalize(lnSum) : lBestNormal;
     return true;
   }
 

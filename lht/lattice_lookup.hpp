@@ -8,9 +8,12 @@
 //           lies on, the (up to) four lattice points around it are taken
 //           with bilinear weights, and the (up to) 16 pairs between them are
 //           read; the ray hits when the hitting pairs hold at least half the
-//           weight, and s and the normal are the weighted means over those
-//           pairs. Same table, same size; a 4-D multilinear interpolation of
-//           what the table samples (docs/lattices.md, "Look-ups")
+//           weight; s and the normal where it enters are the weighted means
+//           over those pairs, where it leaves is read from the heaviest of
+//           them. Same table, same size; a 4-D multilinear interpolation of
+//           what the table samples (docs/lattices.md, "Look-ups"). Pairs
+//           are read heaviest first and a miss is decided as soon as the
+//           missing pairs hold over half the weight.
 #include <optional>
 #include <string>
 #include <string_view>
