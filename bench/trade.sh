@@ -17,7 +17,9 @@
 # picture size, ray tracing in full so the error is the quantizer's), and the
 # LHT entry precision (`lattice render --lht-precision`: the thesis's 14-byte
 # entry in the lattice rows, the wide 16-byte and compact 13-byte entries at
-# f_lat 1 and 2 in the "lht precision" rows; docs/lattices.md, "Entry precision").
+# f_lat 1 and 2 in the "lht precision" rows; docs/lattices.md, "Entry precision"),
+# and the look-up (`--lattice-lookup blend` at f_lat 1..4 in the "lattice lookup"
+# rows, the thesis's in the lattice rows; docs/lattices.md, "Look-ups").
 #
 # Timing is CPU time (user + system) with --threads 1: the machine may be
 # shared, and CPU time is what other processes disturb least. The lattice is
@@ -40,7 +42,7 @@ while [[ $# -gt 0 ]]; do
     --scenes) scenes=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --no-docs) docs=0; shift ;;
-    -h|--help) sed -n 2,25p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,27p "$0"; exit 0 ;;
     *) echo "trade.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -153,6 +155,12 @@ for scene in $scenes; do
       latticeRow "lht precision" "$precision f_lat=$f" "$scene" "$f" "$scene-f$f-$precision" --arith double \
         --lht-precision "$precision"
     done
+  done
+
+  # The blended look-up (double) on the same tables; the thesis's look-up is the lattice rows.
+  for f in 1 2 3 4; do
+    echo "trade.sh: $scene: blend look-up, f_lat=$f" >&2
+    latticeRow "lattice lookup" "blend f_lat=$f" "$scene" "$f" "$scene-f$f" --arith double --lattice-lookup blend
   done
 
   # Palette and dithering: the Tek 4125 driver's stream, decoded by its emulator.
