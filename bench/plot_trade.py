@@ -21,6 +21,7 @@ GROUP_COLOURS = {
     "arithmetic": "#d62728",
     "lattice": "#1f77b4",
     "lht precision": "#17becf",
+    "lht form": "#bcbd22",
     "lattice lookup": "#ff7f0e",
     "palette": "#2ca02c",
     "quantizer mode": "#9467bd",
