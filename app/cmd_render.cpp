@@ -17,6 +17,7 @@
 #include "devices/device_table.hpp"
 #include "foundation/arithmetics.hpp"
 #include "foundation/resident_memory.hpp"
+#include "lht/lattice_lookup.hpp"
 #include "lht/lht_form.hpp"
 
 namespace lattice::app {
@@ -28,6 +29,7 @@ struct RenderFlags {
   bool noLatticeShadows = false;
   std::string lhtPrecision;  // empty: each lattice's own `precision`
   std::string lhtForm;       // empty: each lattice's own `form`
+  std::string lookup;        // empty: each lattice's own `lookup`
   std::string lhtCache;      // as typed
   std::string apolloProfile = "dn660";
   std::string memoryBudget;  // as typed
@@ -74,6 +76,11 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
                  fmt::format("LHT form of every lattice, overriding the scene's `form`: {} (docs/lattices.md, \"The "
                              "compressed LHT\", \"The LHT built on demand\")",
                              lht::lhtFormChoices()));
+  cmd.add_option("--lattice-lookup", f.lookup,
+                 fmt::format("How lattice leaves read their table, overriding the scene's `lookup`: {} (thesis: "
+                             "nearest lattice points, one pair; blend: the 16 pairs around the ray, weighted; "
+                             "docs/lattices.md, \"Look-ups\")",
+                             lht::latticeLookupChoices()));
   cmd.add_option("--lht-cache", f.lhtCache,
                  "With --lht-form on-demand: the most memory its stored hits take, 48 bytes each (8MiB, 65536K; "
                  "default 64MiB; misses go to a bitmap apart); beyond it new pairs are traced again rather than "
@@ -96,6 +103,7 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
   job.latticeShadows = !f.noLatticeShadows;
   if (!f.lhtPrecision.empty()) job.precision = lht::parseLhtPrecision(f.lhtPrecision, "--lht-precision");
   if (!f.lhtForm.empty()) job.form = lht::parseLhtForm(f.lhtForm, "--lht-form");
+  if (!f.lookup.empty()) job.lookup = lht::parseLatticeLookup(f.lookup, "--lattice-lookup");
   if (!f.lhtCache.empty()) job.onDemandCacheBytes = parseByteCount(f.lhtCache, "--lht-cache");
   if (!f.memoryBudget.empty()) job.memoryBudget = parseByteCount(f.memoryBudget, "--memory-budget");
   job.modeChosenByUser = cmd.count("--mode") > 0 || cmd.count("--sample") > 0;

@@ -206,6 +206,7 @@ RenderResult renderScene(const RenderJob& job) {
   lht::TableSettings tables;
   tables.precision = job.precision;
   tables.form = job.form;
+  tables.lookup = job.lookup;
   if (job.onDemandCacheBytes) tables.onDemandCacheBytes = *job.onDemandCacheBytes;
   if (job.lhtStats) tables.stats = std::make_shared<lht::LookupStatsBook>();
   tables.threads = static_cast<unsigned>(job.threads);  // one thread means one thread throughout

@@ -18,6 +18,7 @@
 
 #include "devices/device.hpp"
 #include "io/serial_options.hpp"
+#include "lht/lattice_lookup.hpp"
 #include "lht/lht_form.hpp"
 #include "lht/lht_precision.hpp"
 #include "quantize/run_pipeline.hpp"
@@ -40,6 +41,7 @@ struct RenderJob {
   bool latticeShadows = true;
   std::optional<lht::LhtPrecision> precision;  // every lattice's entry precision
   std::optional<lht::LhtForm> form;            // every lattice's table form
+  std::optional<lht::LatticeLookup> lookup;    // every lattice leaf's look-up
   bool lhtStats = false;                       // count and print the lattices' look-ups
   std::optional<std::uint64_t> onDemandCacheBytes;  // the on-demand form's bound
   std::optional<std::uint64_t> memoryBudget;   // bytes of peak resident memory

@@ -22,6 +22,7 @@ GROUP_COLOURS = {
     "lattice": "#1f77b4",
     "lht precision": "#17becf",
     "lht form": "#bcbd22",
+    "lattice lookup": "#ff7f0e",
     "palette": "#2ca02c",
     "quantizer mode": "#9467bd",
 }

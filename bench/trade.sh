@@ -18,8 +18,10 @@
 # LHT entry precision (`lattice render --lht-precision`: the thesis's 14-byte
 # entry in the lattice rows, the wide 16-byte and compact 13-byte entries at
 # f_lat 1 and 2 in the "lht precision" rows; docs/lattices.md, "Entry precision"),
-# and the LHT form (`--lht-form compressed` and `on-demand` at f_lat 1..4, the
-# "lht form" rows; docs/lattices.md).
+# the LHT form (`--lht-form compressed` and `on-demand` at f_lat 1..4, the
+# "lht form" rows; docs/lattices.md), and the look-up (`--lattice-lookup blend`
+# at f_lat 1..4 in the "lattice lookup" rows, the thesis's in the lattice rows;
+# docs/lattices.md, "Look-ups").
 #
 # Timing is CPU time (user + system) with --threads 1: the machine may be
 # shared, and CPU time is what other processes disturb least. The lattice is
@@ -42,7 +44,7 @@ while [[ $# -gt 0 ]]; do
     --scenes) scenes=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --no-docs) docs=0; shift ;;
-    -h|--help) sed -n 2,25p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,29p "$0"; exit 0 ;;
     *) echo "trade.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -169,6 +171,12 @@ for scene in $scenes; do
     sed -E "s/^oversample *= *[0-9.]+/oversample = $f/" "$root/scenes/$scene.toml" >"$work/$scene-f$f-on-demand.toml"
     read -r t m < <(measure "$work/$scene-f$f-on-demand.toml" --arith double --lht-form on-demand -o "$work/img.png")
     row "lht form" "on-demand f_lat=$f" "$t" "$m" 0 0 "$work/img.png"
+  done
+
+  # The blended look-up (double) on the same tables; the thesis's look-up is the lattice rows.
+  for f in 1 2 3 4; do
+    echo "trade.sh: $scene: blend look-up, f_lat=$f" >&2
+    latticeRow "lattice lookup" "blend f_lat=$f" "$scene" "$f" "$scene-f$f" --arith double --lattice-lookup blend
   done
 
   # Palette and dithering: the Tek 4125 driver's stream, decoded by its emulator.

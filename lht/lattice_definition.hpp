@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 
+#include "lht/lattice_lookup.hpp"
 #include "lht/lht_form.hpp"
 #include "lht/lht_precision.hpp"
 #include "render/scene.hpp"
@@ -45,6 +46,9 @@ struct TableSettings {
   // Set: every lattice leaf counts its look-ups here (`render --lht-stats`,
   // lht/lookup_stats.hpp); unset, the leaves count nothing.
   std::shared_ptr<LookupStatsBook> stats;
+  // Every leaf's look-up (`--lattice-lookup`); unset: each definition's own.
+  // Not part of the table: the same cache serves both.
+  std::optional<LatticeLookup> lookup;
 };
 
 class LatticeDefinition {
@@ -58,12 +62,15 @@ class LatticeDefinition {
   bool shadows = true;  // false: this lattice casts no shadows (thesis plate 3)
   LhtPrecision precision = LhtPrecision::Thesis;  // the entry form the file asks for
   LhtForm form = LhtForm::Hashed;                 // the table form the file asks for (`form`)
+  LatticeLookup lookup = LatticeLookup::Thesis;   // how its leaves read the table (`lookup`)
   std::string origin;                             // "scene.toml:12:1"
 
   // The entry form its table is built in under `settings`.
   LhtPrecision precisionUnder(const TableSettings& settings) const { return settings.precision.value_or(precision); }
   // The table form under `settings`.
   LhtForm formUnder(const TableSettings& settings) const { return settings.form.value_or(form); }
+  // The leaves' look-up under `settings`.
+  LatticeLookup lookupUnder(const TableSettings& settings) const { return settings.lookup.value_or(lookup); }
   // Hash of everything that decides the table's contents (the entry form
   // included, so a cache of another form is stale).
   std::uint64_t hashFor(LhtPrecision entryForm) const;

@@ -7,6 +7,7 @@
 // takes part in union, intersection and difference.
 #include <memory>
 
+#include "lht/lattice_lookup.hpp"
 #include "lht/lht_file.hpp"
 #include "lht/lookup_stats.hpp"
 #include "render/primitive.hpp"
@@ -26,13 +27,15 @@ namespace lattice::lht {
 // itself ("acne"). Crossings further away - another part of the same object,
 // another lattice - shadow as usual.
 // stats: null, or where every look-up is counted (`render --lht-stats`).
+// lookup: how a ray becomes look-ups (lht/lattice_lookup.hpp).
 template <typename T>
 PrimitivePtr<T> makeLatticeLeaf(std::shared_ptr<const LhtFile> table, const Mat4d& objectToWorld, MaterialId material,
-                                bool castsShadows = true, LookupStats* stats = nullptr);
+                                bool castsShadows = true, LookupStats* stats = nullptr,
+                                LatticeLookup lookup = LatticeLookup::Thesis);
 
 #define LATTICE_DECLARE(T)                                                                                  \
   extern template PrimitivePtr<T> makeLatticeLeaf<T>(std::shared_ptr<const LhtFile>, const Mat4d&, MaterialId, bool, \
-                                                     LookupStats*);
+                                                     LookupStats*, LatticeLookup);
 LATTICE_FOR_EACH_ARITHMETIC(LATTICE_DECLARE)
 #undef LATTICE_DECLARE
 

@@ -38,7 +38,8 @@ class LatticeLeafDesc final : public LeafTemplate<LatticeLeafDesc> {
     // The full ray trace swaps the lattice for the object it was rasterized from.
     if (options.fullRayTrace) return buildPrimitive<T>(definition_->object, toWorld, options, material);
     return makeLatticeLeaf<T>(tables_->table(definition_), toWorld, material,
-                              options.latticeShadows && definition_->shadows, tables_->lookupStats(definition_));
+                              options.latticeShadows && definition_->shadows, tables_->lookupStats(definition_),
+                              definition_->lookupUnder(tables_->settings()));
   }
   Bounds<double> objectBounds() const override { return definition_->objectBounds(); }
   std::string describe() const override { return fmt::format("lattice '{}'", definition_->name); }
@@ -84,7 +85,8 @@ void parseLatticeSection(const toml::node& section, ParseContext& context, Latti
   for (const toml::node& entry : *list) {
     const toml::table* table = entry.as_table();
     if (!table) context.fail(entry, "each [[lattices]] entry must be a table");
-    context.checkKeys(*table, {"name", "spacing", "oversample", "cache", "object", "shadows", "precision", "form"});
+    context.checkKeys(*table, {"name", "spacing", "oversample", "cache", "object", "shadows", "precision", "form",
+                               "lookup"});
     auto def = std::make_shared<LatticeDefinition>();
     const auto name = context.string(*table, "name");
     if (!name || name->empty()) context.fail(*table, "a [[lattices]] entry needs a non-empty `name`");
@@ -108,6 +110,13 @@ void parseLatticeSection(const toml::node& section, ParseContext& context, Latti
         context.fail(*table->get("form"),
                      fmt::format("unknown LHT `form` '{}'; use one of {}", *form, lhtFormChoices()));
       def->form = *parsed;
+    }
+    if (const auto lookup = context.string(*table, "lookup")) {
+      const auto parsed = latticeLookupFromName(*lookup);
+      if (!parsed)
+        context.fail(*table->get("lookup"),
+                     fmt::format("unknown lattice `lookup` '{}'; use one of {}", *lookup, latticeLookupChoices()));
+      def->lookup = *parsed;
     }
     if (const auto cache = context.string(*table, "cache")) {
       std::filesystem::path path(*cache);

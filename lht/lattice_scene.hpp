@@ -9,6 +9,7 @@
 //   shadows = true               # false: casts no shadows, like particles (plate 3)
 //   precision = "thesis"         # LHT entry: thesis (14 B), wide (16 B), compact (13 B)
 //   form = "hashed"              # LHT form: hashed (the thesis's), compressed (no key)
+//   lookup = "thesis"            # look-up: thesis (nearest points) or blend (16 pairs)
 //   object = { type = "union", children = [ ... ] }   # any CSG subtree
 //
 //   [[objects]]

@@ -159,3 +159,32 @@ TEST_CASE("lattice leaf: the float path agrees with double") {
   }
   CHECK(agree >= total - 2);  // a ray exactly between two grid points may round differently
 }
+
+TEST_CASE("lattice leaf: the blended look-up agrees with the exact capsule at least as well as the thesis's") {
+  // A line one cell thick (f_lat 1), as the plates' hairs are: rounding the
+  // ray's ends decides hit or miss across most of its width.
+  const LatticeObject capsule = capsuleObject(0.05, 1.0);
+  const auto lht = rasterizeObject(capsule, 0.1, 1.0);
+  const Mat4d place = glm::translate(Mat4d(1.0), Vec3d(0.3, -0.2, 0.5)) *
+                      glm::rotate(Mat4d(1.0), 0.7, glm::normalize(Vec3d(1, 1, 0)));
+  const auto thesis = makeLatticeLeaf<double>(lht, place, 3, true, nullptr, LatticeLookup::Thesis);
+  const auto blend = makeLatticeLeaf<double>(lht, place, 3, true, nullptr, LatticeLookup::Blend);
+  const auto exact = makeCapsule<double>(0.05, 1.0, place, 3);
+  const double cell = 0.1;
+  int thesisDisagree = 0, blendDisagree = 0;
+  for (const Vec3d& dir : {Vec3d(0, 0, -1), Vec3d(1, 0.3, -0.2), Vec3d(-0.4, 1, 0.5)}) {
+    INFO("direction " << dir.x << " " << dir.y << " " << dir.z);
+    const Agreement t = compare(*thesis, *exact, dir, cell);
+    const Agreement b = compare(*blend, *exact, dir, cell);
+    INFO("disagreeing rays: thesis " << t.disagree << ", blend " << b.disagree << "; mean normal dot: thesis "
+                                     << t.meanNormalDot << ", blend " << b.meanNormalDot);
+    REQUIRE(b.bothHit > 50);
+    CHECK(b.farFromSilhouette == 0);
+    CHECK(b.worstT <= 1.5 * cell);
+    CHECK(b.meanNormalDot >= t.meanNormalDot - 0.01);
+    thesisDisagree += t.disagree;
+    blendDisagree += b.disagree;
+  }
+  INFO("disagreeing rays over the three directions: thesis " << thesisDisagree << ", blend " << blendDisagree);
+  CHECK(blendDisagree <= thesisDisagree);
+}

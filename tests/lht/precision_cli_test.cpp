@@ -183,3 +183,35 @@ TEST_CASE("form CLI: render --lht-stats prints each lattice's look-ups; without 
   const auto full = runLattice(fmt::format("render '{}' --full --lht-stats -o '{}'", dir / "s.toml", dir / "f.png"));
   CHECK(full.stderrText.find("lht-stats: no lattice was looked up") != std::string::npos);
 }
+
+TEST_CASE("precision CLI: render --lattice-lookup and the scene's `lookup` pick the look-up; bad names are refused") {
+  REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
+  const TempDir dir("lookup-cli");
+  std::ofstream(dir / "s.toml") << ballScene();
+  std::ofstream(dir / "b.toml") << ballScene("lookup = \"blend\"\n");
+  struct Case {
+    const char* scene;
+    const char* args;
+    const char* png;
+  };
+  for (const Case& c : {Case{"s.toml", "--lattice-lookup thesis", "t.png"}, Case{"s.toml", "--lattice-lookup blend", "b.png"},
+                        Case{"b.toml", "", "key.png"}, Case{"b.toml", "--lattice-lookup thesis", "over.png"},
+                        Case{"s.toml", "", "default.png"}}) {
+    const auto run = runLattice(fmt::format("render '{}' {} -o '{}'", dir / c.scene, c.args, dir / c.png));
+    INFO(c.scene << " " << c.args << ": " << run.stderrText);
+    REQUIRE(run.exitCode == 0);
+  }
+  const auto bytes = [&](const char* png) { return readText(dir / png); };
+  CHECK(bytes("t.png") != bytes("b.png"));       // the option reaches the leaves
+  CHECK(bytes("key.png") == bytes("b.png"));     // the scene key does the same
+  CHECK(bytes("over.png") == bytes("t.png"));    // the option overrides the key
+  CHECK(bytes("default.png") == bytes("t.png"));  // thesis is the default
+  const auto bad = runLattice(fmt::format("render '{}' --lattice-lookup nearest -o '{}'", dir / "s.toml", dir / "x.png"));
+  CHECK(bad.exitCode != 0);
+  CHECK(bad.stderrText.find("unknown lattice look-up 'nearest'; use one of thesis, blend") != std::string::npos);
+  std::ofstream(dir / "bad.toml") << ballScene("lookup = \"nearest\"\n");
+  const auto badKey = runLattice(fmt::format("render '{}' -o '{}'", dir / "bad.toml", dir / "x.png"));
+  CHECK(badKey.exitCode != 0);
+  CHECK(badKey.stderrText.find("bad.toml") != std::string::npos);
+  CHECK(badKey.stderrText.find("unknown lattice `lookup` 'nearest'; use one of thesis, blend") != std::string::npos);
+}
