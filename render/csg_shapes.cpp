@@ -1,7 +1,8 @@
 // The capsule: an exact swept ball, so lattice hairs (spheres joined by
 // cylinders, thesis 3.4) have true surfaces and normals. Two forms: quartics
 // joined by CSG (every arithmetic; the reference), and one closed-form leaf
-// (capsule_leaf.cpp) that float and double use because it is 2-4x faster.
+// (capsule_leaf.cpp) that float and double use: 1.7-3x faster, measured in
+// docs/benchmarks.md ("Issue 13 steps").
 #include "render/csg_shapes.hpp"
 
 #include <type_traits>
