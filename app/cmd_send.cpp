@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,31 +50,30 @@ void runSend(const SendArgs& args) {
   // A terminal that answers requests (the 4027's `!REP`) is sent one record
   // at a time; without --device a paced stream would overrun its buffer, so
   // say so (found by asking every device that paces where this stream asks).
+  std::optional<lattice::devices::Device> device;
   lattice::io::ReplyGate gate;
-  bool gated = false;
   if (!args.device.empty()) {
-    const lattice::devices::Device device = lattice::devices::makeDevice(args.device, args.settings);
-    if (device.replies) {
-      gate.points = device.replies->points(bytes);
-      gated = !gate.points.empty();
-    }
+    device = lattice::devices::makeDevice(args.device, args.settings);
+    if (device->replies) gate.points = device->replies->points(bytes);
   } else {
     for (const auto& entry : lattice::devices::deviceTable()) {
-      const lattice::devices::Device device = entry.make({});
-      if (device.replies && !device.replies->points(bytes).empty())
+      const lattice::devices::Device candidate = entry.make({});
+      if (!candidate.replies) continue;
+      const std::size_t requests = candidate.replies->points(bytes).size();
+      if (requests > 0)
         fmt::print(stderr,
                    "lattice send: note: {} holds {} report requests; a {} overruns its buffer unless each is "
                    "answered before the next record: add --device {} to wait for the answers\n",
-                   args.stream, device.replies->points(bytes).size(), device.title, device.name);
+                   args.stream, requests, candidate.title, candidate.name);
     }
   }
+  const bool gated = !gate.points.empty();
   auto sink = lattice::io::openSerialSink(args.serial);
   if (gated) {
-    const lattice::devices::Device device = lattice::devices::makeDevice(args.device, args.settings);
     const int fd = sink->fd();
     const double timeout = args.serial.stallTimeoutSeconds;
-    gate.await = [await = device.replies->await, fd, timeout] { await(fd, timeout); };
-    fmt::print(stderr, "lattice send: waiting for the {}'s answer after each of {} records\n", device.title,
+    gate.await = [await = device->replies->await, fd, timeout] { await(fd, timeout); };
+    fmt::print(stderr, "lattice send: waiting for the {}'s answer after each of {} records\n", device->title,
                gate.points.size());
   }
   lattice::Progress progress("send", bytes.size() > args.resume ? bytes.size() - args.resume : 0, "B");
