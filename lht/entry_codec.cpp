@@ -98,6 +98,11 @@ EntryIntegers decodePayloadIntegers(const std::uint8_t* payload, LhtPrecision pr
   return out;
 }
 
+EntryFraction decodePayloadFraction(const std::uint8_t* payload, LhtPrecision precision) {
+  if (precision == LhtPrecision::Wide) return {loadUnsigned16(payload), 65535};
+  return {payload[0], 255};  // Thesis and Compact: one byte first
+}
+
 LhtHit toHit(const EntryIntegers& integers) {
   LhtHit hit;
   hit.s = integers.sNumerator / double(integers.sDenominator);

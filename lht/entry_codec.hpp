@@ -63,6 +63,13 @@ void encodePayload(const RasterHit& hit, LhtPrecision precision, std::uint8_t* p
 EntryIntegers decodeEntryIntegers(const std::uint8_t* entry, LhtPrecision precision);
 // The same from the payload's first byte.
 EntryIntegers decodePayloadIntegers(const std::uint8_t* payload, LhtPrecision precision);
+// s alone as the fraction of integers decodePayloadIntegers() gives, the
+// normal left undecoded: what shadow rays and the far end of a chord read.
+struct EntryFraction {
+  std::int32_t numerator = 0;
+  std::int32_t denominator = 1;
+};
+EntryFraction decodePayloadFraction(const std::uint8_t* payload, LhtPrecision precision);
 // The largest |component| decodeEntryIntegers() gives for this precision.
 std::int32_t normalDirectionMax(LhtPrecision precision);
 

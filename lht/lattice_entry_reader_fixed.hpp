@@ -51,18 +51,28 @@ class EntryReader<Fixed32> {
     directionToWorld_ = Mat3<Fixed32>(normalToWorld * std::ldexp(1.0, -extraBits));
   }
 
-  bool read(const LatticePoint& from, const LatticePoint& to, Fixed32& s, Vec3<Fixed32>& worldNormal) const {
-    const std::uint8_t* payload = table_.payload(from, to);
-    if (!payload) return false;
-    const EntryIntegers e = decodePayloadIntegers(payload, precision_);
-    // int: std::int32_t is long on 32-bit ARM, and Fixed is built from int.
-    const auto fixed = [](std::int32_t v) { return Fixed32(static_cast<int>(v)); };
-    s = fixed(e.sNumerator) / fixed(e.sDenominator);
-    worldNormal = lattice::normalize(directionToWorld_ * Vec3<Fixed32>(fixed(e.normal[0]), fixed(e.normal[1]), fixed(e.normal[2])));
+  const std::uint8_t* find(const LatticePoint& from, const LatticePoint& to) const { return table_.payload(from, to); }
+  Fixed32 s(const std::uint8_t* entry) const {
+    const EntryFraction f = decodePayloadFraction(entry, precision_);
+    return fixed(f.numerator) / fixed(f.denominator);
+  }
+  Vec3<Fixed32> normal(const std::uint8_t* entry) const {
+    const EntryIntegers e = decodePayloadIntegers(entry, precision_);
+    return lattice::normalize(directionToWorld_ * Vec3<Fixed32>(fixed(e.normal[0]), fixed(e.normal[1]), fixed(e.normal[2])));
+  }
+
+  bool read(const LatticePoint& from, const LatticePoint& to, Fixed32& sOut, Vec3<Fixed32>& worldNormal) const {
+    const std::uint8_t* entry = find(from, to);
+    if (!entry) return false;
+    sOut = s(entry);
+    worldNormal = normal(entry);
     return true;
   }
 
  private:
+  // int: std::int32_t is long on 32-bit ARM, and Fixed is built from int.
+  static Fixed32 fixed(std::int32_t v) { return Fixed32(static_cast<int>(v)); }
+
   LhtLookup table_;
   LhtPrecision precision_;
   Mat3<Fixed32> directionToWorld_{Fixed32(1)};

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "foundation/transform_condition.hpp"
+#include "lht/lattice_chord.hpp"
 #include "lht/lattice_entry_reader.hpp"
 #include "lht/lattice_entry_reader_fixed.hpp"
 #include "lht/lht_lookup.hpp"
@@ -27,40 +28,67 @@ class LatticeLeaf final : public Primitive<T> {
         material_(material),
         castsShadows_(castsShadows),
         stats_(stats),
-        lookup_(lookup) {
-    worldToLattice_ = Mat4<T>(glm::inverse(latticeToWorld));
+        lookup_(lookup),
+        worldToLattice_(Mat4<T>(glm::inverse(latticeToWorld))) {
     const auto& c = lht_->box.cells();
-    box_ = {Vec3<T>(T(0)), Vec3<T>(T(c[0]), T(c[1]), T(c[2]))};
+    cells_ = Vec3<T>(T(c[0]), T(c[1]), T(c[2]));
     const Bounds<double> world = transformBounds(Bounds<double>{Vec3d(0.0), Vec3d(c[0], c[1], c[2])}, latticeToWorld);
     bounds_ = {Vec3<T>(world.lo), Vec3<T>(world.hi)};
   }
 
   const Bounds<T>& bounds() const override { return bounds_; }
 
+  // The three queries below give what the defaults derive from spans(),
+  // reading the exit only when the entry does not settle the answer and
+  // decoding a normal only for the crossing returned.
   bool anyHit(const Ray<T>& ray, T tmin, T tmax) const override {
-    return castsShadows_ && Primitive<T>::anyHit(ray, tmin, tmax);
+    if (!castsShadows_) return false;
+    if (lookup_ == LatticeLookup::Blend) return Primitive<T>::anyHit(ray, tmin, tmax);
+    Located at;
+    const Found found = locate(ray, tmin, tmax, at);
+    return found == Found::EnterAhead || (found == Found::StartsInside && at.leaveT < tmax);
+  }
+
+  bool firstHit(const Ray<T>& ray, T tmin, T tmax, Hit<T>& hit) const override {
+    if (lookup_ == LatticeLookup::Blend) return Primitive<T>::firstHit(ray, tmin, tmax, hit);
+    Located at;
+    switch (locate(ray, tmin, tmax, at)) {
+      case Found::None: return false;
+      case Found::EnterAhead: hit = {at.enterT, reader_.normal(at.enterEntry), material_}; return true;
+      case Found::StartsInside:
+        if (!(at.leaveT < tmax)) return false;
+        hit = {at.leaveT, at.leaveEntry ? reader_.normal(at.leaveEntry) : -reader_.normal(at.enterEntry), material_};
+        return true;
+    }
+    return false;
+  }
+
+  bool firstEnter(const Ray<T>& ray, T tmin, T tmax, Hit<T>& hit, bool& inside) const override {
+    if (lookup_ == LatticeLookup::Blend) return Primitive<T>::firstEnter(ray, tmin, tmax, hit, inside);
+    Located at;
+    switch (locate(ray, tmin, tmax, at)) {
+      case Found::None: return false;
+      case Found::EnterAhead: hit = {at.enterT, reader_.normal(at.enterEntry), material_}; return true;
+      case Found::StartsInside: inside = true; return false;
+    }
+    return false;
   }
 
   void spans(const Ray<T>& ray, T tmin, T tmax, SpanList<T>& out) const override {
-    const Ray<T> local = ray.transformed(worldToLattice_);
-    T t0, t1;
-    // The whole line through the box, not just (tmin, tmax): the lookup needs
-    // the box's entry and exit even for a ray starting inside it.
-    const T inf = std::numeric_limits<T>::infinity();
-    if (!box_.clip(local, -inf, inf, t0, t1) || !(t1 > t0)) return;
-    if (t1 <= tmin || t0 >= tmax) return;
+    Chord chord;
+    if (!clip(ray, tmin, tmax, chord)) return;
+    const T t0 = chord.t0, t1 = chord.t1;
     Span<T> span;
     T enterS, leaveS(0);
     bool haveLeave = false;
     if (lookup_ == LatticeLookup::Blend) {
-      if (!blend(local.at(t0), local.at(t1), enterS, span.enter.normal, leaveS, span.leave.normal)) return;
+      if (!blend(chord.local.at(t0), chord.local.at(t1), enterS, span.enter.normal, leaveS, span.leave.normal))
+        return;
       haveLeave = true;
     } else {
-      const LatticePoint in = nearestPoint(local.at(t0));
-      const LatticePoint outPoint = nearestPoint(local.at(t1));
-      if (in == outPoint) return;
-      if (!read(in, outPoint, enterS, span.enter.normal)) return;
-      haveLeave = read(outPoint, in, leaveS, span.leave.normal);
+      if (!roundEnds(chord)) return;
+      if (!read(chord.in, chord.out, enterS, span.enter.normal)) return;
+      haveLeave = read(chord.out, chord.in, leaveS, span.leave.normal);
     }
     span.enter.t = t0 + (t1 - t0) * enterS;
     span.enter.material = material_;
@@ -69,19 +97,80 @@ class LatticeLeaf final : public Primitive<T> {
     if (!haveLeave) span.leave.normal = -span.enter.normal;
     span.leave.material = material_;
     if (span.leave.t < span.enter.t) span.leave.t = span.enter.t;  // a chord thinner than the quantization
-    // One cell along the ray, in t: the reach of the rounding error.
-    const T cellT = T(1) / lattice::length(local.direction);
+    const T cellT = oneCell(chord);
     if (span.leave.t <= tmin + cellT && span.enter.t < tmin + cellT) return;  // the surface the ray starts on
     if (span.leave.t <= tmin || span.enter.t >= tmax) return;
     out.push_back(span);
   }
 
  private:
-  // One table read, counted when statistics are on.
+  // The ray in lattice coordinates, its chord [t0, t1] through the box, and
+  // the grid points nearest the chord's ends.
+  struct Chord {
+    Ray<T> local;
+    T t0, t1;
+    LatticePoint in, out;
+  };
+  // False when the line misses the box or the chord is outside (tmin, tmax).
+  // The whole line, not just (tmin, tmax): the look-up needs the box's entry
+  // and exit even for a ray starting inside it.
+  bool clip(const Ray<T>& ray, T tmin, T tmax, Chord& c) const {
+    c.local = worldToLattice_.apply(ray);
+    if (!clipToCells(c.local, cells_, c.t0, c.t1) || !(c.t1 > c.t0)) return false;
+    return !(c.t1 <= tmin || c.t0 >= tmax);
+  }
+  // p_i and p_o; false when they coincide (no segment to look up).
+  bool roundEnds(Chord& c) const {
+    c.in = nearestPoint(c.local.at(c.t0));
+    c.out = nearestPoint(c.local.at(c.t1));
+    return !(c.in == c.out);
+  }
+  // One cell along the ray, in t: the reach of the rounding error.
+  static T oneCell(const Chord& c) { return T(1) / lattice::length(c.local.direction); }
+
+  // Where the span spans() would give lies against (tmin, tmax): none (no
+  // span, or dropped), its enter inside (tmin, tmax), or it contains tmin.
+  enum class Found { None, EnterAhead, StartsInside };
+  struct Located {
+    const std::uint8_t* enterEntry = nullptr;
+    const std::uint8_t* leaveEntry = nullptr;  // null when unread or absent
+    T enterT, leaveT;                          // leaveT set for StartsInside
+  };
+  // The thesis look-up. spans() drops a span that is the surface the ray
+  // starts on (leave and enter within one cell of tmin), ends by tmin, or
+  // starts at or after tmax; an enter in (tmin, tmax) at least one cell
+  // past tmin survives every rule whatever the exit says, so the exit is
+  // then not read.
+  Found locate(const Ray<T>& ray, T tmin, T tmax, Located& at) const {
+    Chord c;
+    if (!clip(ray, tmin, tmax, c) || !roundEnds(c)) return Found::None;
+    at.enterEntry = find(c.in, c.out);
+    if (!at.enterEntry) return Found::None;
+    at.enterT = c.t0 + (c.t1 - c.t0) * reader_.s(at.enterEntry);
+    if (at.enterT >= tmax) return Found::None;
+    const T past = tmin + oneCell(c);
+    if (at.enterT > tmin && !(at.enterT < past)) return Found::EnterAhead;
+    at.leaveEntry = find(c.out, c.in);
+    at.leaveT = at.leaveEntry ? c.t1 - (c.t1 - c.t0) * reader_.s(at.leaveEntry) : at.enterT;
+    if (at.leaveT < at.enterT) at.leaveT = at.enterT;
+    if (at.leaveT <= past && at.enterT < past) return Found::None;
+    if (at.leaveT <= tmin) return Found::None;
+    return at.enterT > tmin ? Found::EnterAhead : Found::StartsInside;
+  }
+
+  // One table look-up, counted when statistics are on.
+  const std::uint8_t* find(const LatticePoint& from, const LatticePoint& to) const {
+    const std::uint8_t* entry = reader_.find(from, to);
+    if (stats_) stats_->record(from, to, entry != nullptr);
+    return entry;
+  }
+  // One table read with s and the normal (spans() and the blend).
   bool read(const LatticePoint& from, const LatticePoint& to, T& s, Vec3<T>& normal) const {
-    const bool hit = reader_.read(from, to, s, normal);
-    if (stats_) stats_->record(from, to, hit);
-    return hit;
+    const std::uint8_t* entry = find(from, to);
+    if (!entry) return false;
+    s = reader_.s(entry);
+    normal = reader_.normal(entry);
+    return true;
   }
 
   // The lattice points around a chord end on a box face, with bilinear
@@ -181,11 +270,7 @@ class LatticeLeaf final : public Primitive<T> {
 
   LatticePoint nearestPoint(const Vec3<T>& p) const {
     const auto& c = lht_->box.cells();
-    const auto coord = [&](int a) {
-      const T v = roundNearest(p[a]);
-      return static_cast<std::uint8_t>(std::clamp(static_cast<int>(v), 0, c[a]));
-    };
-    return {coord(0), coord(1), coord(2)};
+    return {nearestGridCoordinate(p[0], c[0]), nearestGridCoordinate(p[1], c[1]), nearestGridCoordinate(p[2], c[2])};
   }
   // The transform is held to T's condition limit before the reader sees it.
   static LhtLookup checked(LhtLookup table, const Mat4d& latticeToWorld) {
@@ -200,8 +285,8 @@ class LatticeLeaf final : public Primitive<T> {
   bool castsShadows_;
   LookupStats* stats_;  // null unless --lht-stats
   LatticeLookup lookup_;
-  Mat4<T> worldToLattice_{T(1)};
-  Bounds<T> box_;
+  LatticeAffine<T> worldToLattice_;
+  Vec3<T> cells_;  // the box in lattice coordinates is [0, cells_]
   Bounds<T> bounds_;
 };
 

@@ -105,7 +105,7 @@ TEST_CASE("fixed point: the lattice leaf's per-pixel code has no floating point"
   // The integer helpers the Fixed32 leaf calls per pixel: the table lookup
   // and the entry decoders of every precision (their names do not say Fixed).
   const std::vector<std::string> integerPath = {"lht::LatticeHashTable::findEntry(", "lht::decodePayloadIntegers(",
-                                                "lht::decodeOctahedral(", "lht::LatticeHashTable::bucketOf(",
+                                                "lht::decodePayloadFraction(", "lht::decodeOctahedral(", "lht::LatticeHashTable::bucketOf(",
                                                 "lht::CompressedTable::findPayload("};
   const testing::FixedPointScan scan =
       testing::scanFixedPointCode(std::string(LATTICE_BINARY_DIR) + "/lht/liblattice_lht.a", integerPath);
@@ -114,9 +114,12 @@ TEST_CASE("fixed point: the lattice leaf's per-pixel code has no floating point"
                        [&](const std::string& f) { return f.find(name) != std::string::npos; });
   };
   REQUIRE(seen("LatticeLeaf<lattice::Fixed<32> >::spans"));
+  // The queries that skip the span list (first hit, shadow rays) go through locate().
+  REQUIRE(seen("LatticeLeaf<lattice::Fixed<32> >::locate("));
   // The blended look-up (--lattice-lookup blend) is scanned too: g++ inlines
-  // its corners and blending into spans; its table read stays a function.
-  REQUIRE(seen("LatticeLeaf<lattice::Fixed<32> >::read("));
+  // its corners, blending and table reads into spans.
+  REQUIRE(seen("LatticeLeaf<lattice::Fixed<32> >::firstHit("));
+  REQUIRE(seen("LatticeLeaf<lattice::Fixed<32> >::anyHit("));
   for (const std::string& f : integerPath) {
     INFO("the scan did not see " << f);
     REQUIRE(seen(f));
