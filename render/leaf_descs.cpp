@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "render/csg_shapes.hpp"
+#include "render/plane_leaf.hpp"
 #include "render/scene_baker.hpp"
 
 namespace lattice {
@@ -11,8 +12,12 @@ namespace {
 class QuarticLeafDesc final : public LeafTemplate<QuarticLeafDesc> {
  public:
   QuarticLeafDesc(QuarticShape shape, std::string name) : shape_(std::move(shape)), name_(std::move(name)) {}
+  // A plane (degree 1: half_space) is solved in closed form in float and
+  // double (render/plane_leaf.hpp); fixed point keeps the quartic.
   template <typename T>
   PrimitivePtr<T> buildAs(const Mat4d& toWorld, MaterialId m, const BuildOptions&) const {
+    if constexpr (std::is_floating_point_v<T>)
+      if (shape_.f.degree() == 1) return makePlaneLeaf<T>(shape_.f, shape_.bounds, toWorld, m);
     return makeQuarticLeaf<T>(shape_.f, shape_.bounds, toWorld, m);
   }
   Bounds<double> objectBounds() const override { return shape_.bounds; }
