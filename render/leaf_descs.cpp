@@ -4,6 +4,7 @@
 
 #include "render/csg_shapes.hpp"
 #include "render/plane_leaf.hpp"
+#include "render/quadric_leaf.hpp"
 #include "render/scene_baker.hpp"
 
 namespace lattice {
@@ -11,13 +12,18 @@ namespace {
 
 class QuarticLeafDesc final : public LeafTemplate<QuarticLeafDesc> {
  public:
-  QuarticLeafDesc(QuarticShape shape, std::string name) : shape_(std::move(shape)), name_(std::move(name)) {}
-  // A plane (degree 1: half_space) is solved in closed form in float and
-  // double (render/plane_leaf.hpp); fixed point keeps the quartic.
+  QuarticLeafDesc(QuarticShape shape, std::string name)
+      : shape_(std::move(shape)), name_(std::move(name)), degree_(shape_.f.degree()) {}
+  // A plane (degree 1: half_space) and a quadric (degree 2: cylinder,
+  // ellipsoid, cone, ...) are solved in closed form in float and double
+  // (render/plane_leaf.hpp, render/quadric_leaf.hpp); fixed point, and
+  // degrees 3 and 4, keep the quartic leaf.
   template <typename T>
   PrimitivePtr<T> buildAs(const Mat4d& toWorld, MaterialId m, const BuildOptions&) const {
-    if constexpr (std::is_floating_point_v<T>)
-      if (shape_.f.degree() == 1) return makePlaneLeaf<T>(shape_.f, shape_.bounds, toWorld, m);
+    if constexpr (std::is_floating_point_v<T>) {
+      if (degree_ == 1) return makePlaneLeaf<T>(shape_.f, shape_.bounds, toWorld, m);
+      if (degree_ == 2) return makeQuadricLeaf<T>(shape_.f, shape_.bounds, toWorld, m);
+    }
     return makeQuarticLeaf<T>(shape_.f, shape_.bounds, toWorld, m);
   }
   Bounds<double> objectBounds() const override { return shape_.bounds; }
@@ -35,6 +41,7 @@ class QuarticLeafDesc final : public LeafTemplate<QuarticLeafDesc> {
  private:
   QuarticShape shape_;
   std::string name_;
+  int degree_;
 };
 
 // A capsule (and a sphere: a capsule of length 0), built by
