@@ -4,7 +4,10 @@
 // box, its entry and exit rounded to the nearest grid points p_i and p_o, and
 // the LHT answers: (p_i, p_o) gives where the ray enters the object, (p_o,
 // p_i) where it leaves. So a lattice yields a span like any other solid and
-// takes part in union, intersection and difference.
+// takes part in union, intersection and difference. firstHit, firstEnter
+// and anyHit give what that span would without building it, reading the
+// leaving pair only when the entry does not settle the answer
+// (docs/lattices.md, "The leaf's queries").
 #include <memory>
 
 #include "lht/lattice_lookup.hpp"
