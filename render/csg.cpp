@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "render/bvh.hpp"
+#include "render/wide_bvh.hpp"
 #include "render/span_ops.hpp"
 #include "foundation/error.hpp"
 #include "foundation/arithmetics.hpp"
@@ -82,8 +82,9 @@ class DifferenceNode final : public CsgNode<T> {
   }
 };
 
-// Inside any child. Children with finite boxes live in a BVH, the others
-// (half-spaces, cylinders...) in a flat list that every ray visits.
+// Inside any child. Children with finite boxes live in a BVH (4-wide with
+// float boxes for float and double, binary for fixed point: UnionBvh), the
+// others (half-spaces, cylinders...) in a flat list that every ray visits.
 template <typename T>
 class UnionNode final : public CsgNode<T> {
  public:
@@ -95,26 +96,26 @@ class UnionNode final : public CsgNode<T> {
       this->bounds_.extend(b);
       if (b.isFinite()) {
         boxes.push_back(b);
-        finite_.push_back(n);
+        finite_.push_back(this->children_[n].get());
       } else {
         unbounded_.push_back(n);
       }
     }
-    bvh_ = Bvh<T>(boxes);
+    bvh_ = UnionBvh<T>(boxes);
   }
 
   void spans(const Ray<T>& ray, T tmin, T tmax, SpanList<T>& out) const override {
     T t0, t1;
     if (this->bounds_.empty() || !this->bounds_.clip(ray, tmin, tmax, t0, t1)) return;
     SpanList<T> all;
-    auto add = [&](std::uint32_t child) {
+    auto add = [&](const Primitive<T>& child) {
       SpanList<T> list;
-      this->children_[child]->spans(ray, tmin, tmax, list);
+      child.spans(ray, tmin, tmax, list);
       for (const Span<T>& s : list) all.push_back(s);
     };
-    for (std::uint32_t n : unbounded_) add(n);
+    for (std::uint32_t n : unbounded_) add(*this->children_[n]);
     bvh_.visitAll(ray, tmin, tmax, [&](std::uint32_t item) {
-      add(finite_[item]);
+      add(*finite_[item]);
       return false;
     });
     coalesceSpans(all);
@@ -145,18 +146,18 @@ class UnionNode final : public CsgNode<T> {
     T limit = tmax;
     bool found = false;
     Hit<T> child;
-    auto visit = [&](std::uint32_t n, T& lim) {
+    auto visit = [&](const Primitive<T>& c, T& lim) {
       if (inside) return;
-      if (this->children_[n]->firstEnter(ray, tmin, lim, child, inside)) {
+      if (c.firstEnter(ray, tmin, lim, child, inside)) {
         lim = child.t;
         hit = child;
         found = true;
       }
       if (inside) lim = tmin;  // stops the traversal
     };
-    for (std::uint32_t n : unbounded_) visit(n, limit);
+    for (std::uint32_t n : unbounded_) visit(*this->children_[n], limit);
     if (!inside)
-      bvh_.visitFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) { visit(finite_[item], lim); });
+      bvh_.visitFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) { visit(*finite_[item], lim); });
     return found && !inside;
   }
 
@@ -165,21 +166,14 @@ class UnionNode final : public CsgNode<T> {
     if (this->bounds_.empty() || !this->bounds_.clip(ray, tmin, tmax, t0, t1)) return false;
     for (std::uint32_t n : unbounded_)
       if (this->children_[n]->anyHit(ray, tmin, tmax)) return true;
-    // Nearer subtrees first: a shadow ray is most likely blocked near its start.
-    bool blocked = false;
-    T limit = tmax;
-    bvh_.visitFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) {
-      if (!blocked && this->children_[finite_[item]]->anyHit(ray, tmin, tmax)) {
-        blocked = true;
-        lim = tmin;  // every remaining subtree now starts at or beyond the limit
-      }
-    });
-    return blocked;
+    // In tree order, not nearest first: with a handful of children per shadow
+    // ray, sorting them cost as much as it saved (docs/benchmarks.md, Step 4).
+    return bvh_.visitAll(ray, tmin, tmax, [&](std::uint32_t item) { return finite_[item]->anyHit(ray, tmin, tmax); });
   }
 
  private:
-  Bvh<T> bvh_;
-  std::vector<std::uint32_t> finite_;     // BVH item -> child index
+  UnionBvh<T> bvh_;
+  std::vector<const Primitive<T>*> finite_;  // BVH item -> child
   std::vector<std::uint32_t> unbounded_;  // children with infinite boxes
 };
 
