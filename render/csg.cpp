@@ -23,7 +23,10 @@ class CsgNode : public Primitive<T> {
  public:
   explicit CsgNode(std::vector<PrimitivePtr<T>> children) : children_(std::move(children)) {}
   const Bounds<T>& bounds() const override { return bounds_; }
-  void limitBounds(const Bounds<T>& limit) { bounds_ = intersectBoxes(bounds_, limit); }
+  void limitBounds(const Bounds<T>& limit) {
+    bounds_ = intersectBoxes(bounds_, limit);
+    limited_ = true;
+  }
 
  protected:
   // Intersection and difference fold their children into the first child's
@@ -52,6 +55,7 @@ class CsgNode : public Primitive<T> {
 
   std::vector<PrimitivePtr<T>> children_;
   Bounds<T> bounds_;
+  bool limited_ = false;  // bounds_ cut by a box the caller gave (limitBounds)
 };
 
 // Inside every child. A ray that leaves the running result empty stops; each
@@ -105,8 +109,7 @@ class UnionNode final : public CsgNode<T> {
   }
 
   void spans(const Ray<T>& ray, T tmin, T tmax, SpanList<T>& out) const override {
-    T t0, t1;
-    if (this->bounds_.empty() || !this->bounds_.clip(ray, tmin, tmax, t0, t1)) return;
+    if (outsideBox(ray, tmin, tmax)) return;
     SpanList<T> all;
     auto add = [&](const Primitive<T>& child) {
       SpanList<T> list;
@@ -141,8 +144,7 @@ class UnionNode final : public CsgNode<T> {
   // A child that contains the ray at tmin has a box containing the ray's
   // point at tmin, so the front-to-back walk reaches it whatever the limit.
   bool firstEnter(const Ray<T>& ray, T tmin, T tmax, Hit<T>& hit, bool& inside) const override {
-    T t0, t1;
-    if (this->bounds_.empty() || !this->bounds_.clip(ray, tmin, tmax, t0, t1)) return false;
+    if (outsideBox(ray, tmin, tmax)) return false;
     T limit = tmax;
     bool found = false;
     Hit<T> child;
@@ -162,8 +164,7 @@ class UnionNode final : public CsgNode<T> {
   }
 
   bool anyHit(const Ray<T>& ray, T tmin, T tmax) const override {
-    T t0, t1;
-    if (this->bounds_.empty() || !this->bounds_.clip(ray, tmin, tmax, t0, t1)) return false;
+    if (outsideBox(ray, tmin, tmax)) return false;
     for (std::uint32_t n : unbounded_)
       if (this->children_[n]->anyHit(ray, tmin, tmax)) return true;
     // In tree order, not nearest first: with a handful of children per shadow
@@ -172,6 +173,18 @@ class UnionNode final : public CsgNode<T> {
   }
 
  private:
+  // Where the union's box is just the union of its children's boxes and all
+  // of them are in the tree, the tree's first node tests those same boxes,
+  // so testing the union's box first would only repeat the work (three
+  // divisions a ray). It decides where the box was cut (limitBounds) or an
+  // unbounded child is listed.
+  bool outsideBox(const Ray<T>& ray, T tmin, T tmax) const {
+    if (this->bounds_.empty()) return true;
+    if (!this->limited_ && unbounded_.empty()) return false;
+    T t0, t1;
+    return !this->bounds_.clip(ray, tmin, tmax, t0, t1);
+  }
+
   UnionBvh<T> bvh_;
   std::vector<const Primitive<T>*> finite_;  // BVH item -> child
   std::vector<std::uint32_t> unbounded_;  // children with infinite boxes

@@ -55,8 +55,8 @@
 namespace lattice {
 
 namespace wide_slab_detail {
+// The next float below a finite or +inf f (the callers never pass -inf).
 inline float nextDown(float f) {
-  if (!(f == f) || f == -std::numeric_limits<float>::infinity()) return f;
   if (f == 0.0f) return -std::numeric_limits<float>::denorm_min();
   std::uint32_t bits;
   std::memcpy(&bits, &f, sizeof bits);
@@ -65,21 +65,17 @@ inline float nextDown(float f) {
   return f;
 }
 inline float nextUp(float f) { return -nextDown(-f); }
-// The float nearest v, saturating to +-inf instead of an out-of-range cast.
-inline float toFloat(double v) {
-  if (v > double(FLT_MAX)) return std::numeric_limits<float>::infinity();
-  if (v < -double(FLT_MAX)) return -std::numeric_limits<float>::infinity();
-  return static_cast<float>(v);
-}
 }  // namespace wide_slab_detail
 
 // The largest float <= v, and the smallest float >= v (NaN stays NaN).
+// A double beyond float range converts to +-inf (IEEE 754 overflow), and
+// the step back gives +-FLT_MAX where that is the bound asked for.
 inline float floatBelow(double v) {
-  float f = wide_slab_detail::toFloat(v);
+  const float f = static_cast<float>(v);
   return double(f) > v ? wide_slab_detail::nextDown(f) : f;
 }
 inline float floatAbove(double v) {
-  float f = wide_slab_detail::toFloat(v);
+  const float f = static_cast<float>(v);
   return double(f) < v ? wide_slab_detail::nextUp(f) : f;
 }
 inline float floatBelow(float v) { return v; }
@@ -104,7 +100,7 @@ struct WideRay {
   explicit WideRay(const Ray<T>& ray) {
     for (int a = 0; a < 3; ++a) {
       const double d = double(ray.direction[a]);
-      inverse[a] = wide_slab_detail::toFloat(1.0 / d);
+      inverse[a] = static_cast<float>(1.0 / d);
       nearSide[a] = std::signbit(inverse[a]) ? 1 : 0;
       const float down = floatBelow(ray.origin[a]), up = floatAbove(ray.origin[a]);
       // lo - origin must not grow and hi - origin must not shrink.
