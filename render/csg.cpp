@@ -94,6 +94,7 @@ class UnionNode final : public CsgNode<T> {
  public:
   explicit UnionNode(std::vector<PrimitivePtr<T>> children) : CsgNode<T>(std::move(children)) {
     std::vector<Bounds<T>> boxes;
+    std::vector<std::uint32_t> finiteIndex;
     for (std::uint32_t n = 0; n < this->children_.size(); ++n) {
       const Bounds<T>& b = this->children_[n]->bounds();
       if (b.empty()) continue;  // an empty solid adds nothing
@@ -101,9 +102,18 @@ class UnionNode final : public CsgNode<T> {
       if (b.isFinite()) {
         boxes.push_back(b);
         finite_.push_back(this->children_[n].get());
+        finiteIndex.push_back(n);
       } else {
         unbounded_.push_back(n);
       }
+    }
+    if (finite_.size() == 1) {
+      // One bounded child (a shape over a floor): its own box test is all a
+      // tree would do, so it joins the list, after the unbounded ones as the
+      // tree came after them.
+      unbounded_.push_back(finiteIndex[0]);
+      finite_.clear();
+      boxes.clear();
     }
     bvh_ = UnionBvh<T>(boxes);
   }
@@ -187,7 +197,7 @@ class UnionNode final : public CsgNode<T> {
 
   UnionBvh<T> bvh_;
   std::vector<const Primitive<T>*> finite_;  // BVH item -> child
-  std::vector<std::uint32_t> unbounded_;  // children with infinite boxes
+  std::vector<std::uint32_t> unbounded_;  // children every ray visits: the unbounded ones, or a lone bounded one
 };
 
 template <typename T>
