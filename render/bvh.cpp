@@ -22,11 +22,12 @@ double halfArea(const Bounds<T>& b) {
 }
 
 constexpr int kBins = 12;
+constexpr std::uint32_t kLeafSize = 4;
 
 }  // namespace
 
 template <typename T>
-Bvh<T>::Bvh(const std::vector<Bounds<T>>& boxes, std::uint32_t leafSize) : leafSize_(leafSize) {
+Bvh<T>::Bvh(const std::vector<Bounds<T>>& boxes) {
   if (boxes.empty()) return;
   for (const Bounds<T>& b : boxes)
     if (b.empty() || !b.isFinite())
@@ -106,13 +107,13 @@ std::uint32_t Bvh<T>::build(std::vector<Bounds<T>>& centroids, const std::vector
         bestSplit = b;
       }
     }
-    if (bestSplit < 0 && count <= leafSize_) return makeLeaf();
+    if (bestSplit < 0 && count <= kLeafSize) return makeLeaf();
     if (bestSplit >= 0) {
       auto* split = std::partition(items_.data() + begin, items_.data() + end,
                                    [&](std::uint32_t item) { return binOf(item) <= bestSplit; });
       mid = static_cast<std::uint32_t>(split - items_.data());
     }
-  } else if (count <= leafSize_) {
+  } else if (count <= kLeafSize) {
     return makeLeaf();
   }
   if (mid == begin || mid == end) {

@@ -46,10 +46,7 @@ class Bvh {
 
   Bvh() = default;
   // boxes[n] is the box of item n; every box must be finite and non-empty.
-  // A node of at most leafSize items stays a leaf when the SAH finds no
-  // split worth an extra box test (render/wide_bvh.hpp asks for 1: its box
-  // tests are cheap beside a child's own).
-  explicit Bvh(const std::vector<Bounds<T>>& boxes, std::uint32_t leafSize = 4);
+  explicit Bvh(const std::vector<Bounds<T>>& boxes);
 
   bool empty() const { return nodes_.empty(); }
   const std::vector<Node>& nodes() const { return nodes_; }
@@ -138,7 +135,6 @@ class Bvh {
   std::vector<Node> nodes_;
   std::vector<std::uint32_t> items_;
   int depth_ = 0;
-  std::uint32_t leafSize_ = 4;
 };
 
 #define LATTICE_DECLARE(T) extern template class Bvh<T>;
