@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "render/bvh.hpp"
+#include "render/wide_bvh.hpp"
 #include "render/span_ops.hpp"
 #include "foundation/error.hpp"
 #include "foundation/arithmetics.hpp"
@@ -23,7 +23,10 @@ class CsgNode : public Primitive<T> {
  public:
   explicit CsgNode(std::vector<PrimitivePtr<T>> children) : children_(std::move(children)) {}
   const Bounds<T>& bounds() const override { return bounds_; }
-  void limitBounds(const Bounds<T>& limit) { bounds_ = intersectBoxes(bounds_, limit); }
+  void limitBounds(const Bounds<T>& limit) {
+    bounds_ = intersectBoxes(bounds_, limit);
+    limited_ = true;
+  }
 
  protected:
   // Intersection and difference fold their children into the first child's
@@ -52,6 +55,7 @@ class CsgNode : public Primitive<T> {
 
   std::vector<PrimitivePtr<T>> children_;
   Bounds<T> bounds_;
+  bool limited_ = false;  // bounds_ cut by a box the caller gave (limitBounds)
 };
 
 // Inside every child. A ray that leaves the running result empty stops; each
@@ -82,39 +86,49 @@ class DifferenceNode final : public CsgNode<T> {
   }
 };
 
-// Inside any child. Children with finite boxes live in a BVH, the others
-// (half-spaces, cylinders...) in a flat list that every ray visits.
+// Inside any child. Children with finite boxes live in a BVH (4-wide with
+// float boxes for float and double, binary for fixed point: UnionBvh), the
+// others (half-spaces, cylinders...) in a flat list that every ray visits.
 template <typename T>
 class UnionNode final : public CsgNode<T> {
  public:
   explicit UnionNode(std::vector<PrimitivePtr<T>> children) : CsgNode<T>(std::move(children)) {
     std::vector<Bounds<T>> boxes;
+    std::vector<std::uint32_t> finiteIndex;
     for (std::uint32_t n = 0; n < this->children_.size(); ++n) {
       const Bounds<T>& b = this->children_[n]->bounds();
       if (b.empty()) continue;  // an empty solid adds nothing
       this->bounds_.extend(b);
       if (b.isFinite()) {
         boxes.push_back(b);
-        finite_.push_back(n);
+        finite_.push_back(this->children_[n].get());
+        finiteIndex.push_back(n);
       } else {
         unbounded_.push_back(n);
       }
     }
-    bvh_ = Bvh<T>(boxes);
+    if (finite_.size() == 1) {
+      // One bounded child (a shape over a floor): its own box test is all a
+      // tree would do, so it joins the list, after the unbounded ones as the
+      // tree came after them.
+      unbounded_.push_back(finiteIndex[0]);
+      finite_.clear();
+      boxes.clear();
+    }
+    bvh_ = UnionBvh<T>(boxes);
   }
 
   void spans(const Ray<T>& ray, T tmin, T tmax, SpanList<T>& out) const override {
-    T t0, t1;
-    if (this->bounds_.empty() || !this->bounds_.clip(ray, tmin, tmax, t0, t1)) return;
+    if (outsideBox(ray, tmin, tmax)) return;
     SpanList<T> all;
-    auto add = [&](std::uint32_t child) {
+    auto add = [&](const Primitive<T>& child) {
       SpanList<T> list;
-      this->children_[child]->spans(ray, tmin, tmax, list);
+      child.spans(ray, tmin, tmax, list);
       for (const Span<T>& s : list) all.push_back(s);
     };
-    for (std::uint32_t n : unbounded_) add(n);
+    for (std::uint32_t n : unbounded_) add(*this->children_[n]);
     bvh_.visitAll(ray, tmin, tmax, [&](std::uint32_t item) {
-      add(finite_[item]);
+      add(*finite_[item]);
       return false;
     });
     coalesceSpans(all);
@@ -140,47 +154,50 @@ class UnionNode final : public CsgNode<T> {
   // A child that contains the ray at tmin has a box containing the ray's
   // point at tmin, so the front-to-back walk reaches it whatever the limit.
   bool firstEnter(const Ray<T>& ray, T tmin, T tmax, Hit<T>& hit, bool& inside) const override {
-    T t0, t1;
-    if (this->bounds_.empty() || !this->bounds_.clip(ray, tmin, tmax, t0, t1)) return false;
+    if (outsideBox(ray, tmin, tmax)) return false;
     T limit = tmax;
     bool found = false;
     Hit<T> child;
-    auto visit = [&](std::uint32_t n, T& lim) {
+    auto visit = [&](const Primitive<T>& c, T& lim) {
       if (inside) return;
-      if (this->children_[n]->firstEnter(ray, tmin, lim, child, inside)) {
+      if (c.firstEnter(ray, tmin, lim, child, inside)) {
         lim = child.t;
         hit = child;
         found = true;
       }
       if (inside) lim = tmin;  // stops the traversal
     };
-    for (std::uint32_t n : unbounded_) visit(n, limit);
+    for (std::uint32_t n : unbounded_) visit(*this->children_[n], limit);
     if (!inside)
-      bvh_.visitFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) { visit(finite_[item], lim); });
+      bvh_.visitFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) { visit(*finite_[item], lim); });
     return found && !inside;
   }
 
   bool anyHit(const Ray<T>& ray, T tmin, T tmax) const override {
-    T t0, t1;
-    if (this->bounds_.empty() || !this->bounds_.clip(ray, tmin, tmax, t0, t1)) return false;
+    if (outsideBox(ray, tmin, tmax)) return false;
     for (std::uint32_t n : unbounded_)
       if (this->children_[n]->anyHit(ray, tmin, tmax)) return true;
-    // Nearer subtrees first: a shadow ray is most likely blocked near its start.
-    bool blocked = false;
-    T limit = tmax;
-    bvh_.visitFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) {
-      if (!blocked && this->children_[finite_[item]]->anyHit(ray, tmin, tmax)) {
-        blocked = true;
-        lim = tmin;  // every remaining subtree now starts at or beyond the limit
-      }
-    });
-    return blocked;
+    // In tree order, not nearest first: with a handful of children per shadow
+    // ray, sorting them cost as much as it saved (docs/benchmarks.md, Step 4).
+    return bvh_.visitAll(ray, tmin, tmax, [&](std::uint32_t item) { return finite_[item]->anyHit(ray, tmin, tmax); });
   }
 
  private:
-  Bvh<T> bvh_;
-  std::vector<std::uint32_t> finite_;     // BVH item -> child index
-  std::vector<std::uint32_t> unbounded_;  // children with infinite boxes
+  // Where the union's box is just the union of its children's boxes and all
+  // of them are in the tree, the tree's first node tests those same boxes,
+  // so testing the union's box first would only repeat the work (three
+  // divisions a ray). It decides where the box was cut (limitBounds) or an
+  // unbounded child is listed.
+  bool outsideBox(const Ray<T>& ray, T tmin, T tmax) const {
+    if (this->bounds_.empty()) return true;
+    if (!this->limited_ && unbounded_.empty()) return false;
+    T t0, t1;
+    return !this->bounds_.clip(ray, tmin, tmax, t0, t1);
+  }
+
+  UnionBvh<T> bvh_;
+  std::vector<const Primitive<T>*> finite_;  // BVH item -> child
+  std::vector<std::uint32_t> unbounded_;  // children every ray visits: the unbounded ones, or a lone bounded one
 };
 
 template <typename T>

@@ -9,7 +9,8 @@
 // the surface that produced it.
 //
 // Unions with many children keep them in a bounding volume hierarchy
-// (render/bvh.hpp), so a union of thousands of hairs costs about log N per ray.
+// (render/wide_bvh.hpp for float and double, render/bvh.hpp for fixed point),
+// so a union of thousands of hairs costs about log N per ray.
 //
 // anyHit (shadow rays) of a union stops at the first child crossing found. A
 // child crossing is a crossing of the union except when the union covers the
