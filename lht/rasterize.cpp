@@ -29,7 +29,12 @@ bool traceSegment(const Primitive<double>& object, const Mat4d& latticeToObject,
 }  // namespace
 
 PairTracer::PairTracer(const LatticeBox& box, const Primitive<double>& object, double grazeTolerance)
+    : PairTracer(box, object, nullptr, grazeTolerance) {}
+
+PairTracer::PairTracer(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
+                       double grazeTolerance)
     : box_(box), object_(object), grazeTolerance_(grazeTolerance), latticeToObject_(box.latticeToObject()) {
+  if (cover) cull_ = CoverCull(cover->mapped(box.objectToLattice()));
   // The object's box in lattice coordinates, grown by the graze tolerance:
   // a segment that misses it cannot touch the object.
   const Bounds<double>& b = object.bounds();
@@ -56,6 +61,7 @@ bool PairTracer::trace(const LatticePoint& in, std::uint8_t facesIn, const Latti
   const Vec3d from = in.toVec(), to = out.toVec();
   double t0, t1;
   if (!bounds_.clip(Ray<double>{from, to - from}, 0.0, 1.0, t0, t1)) return false;
+  if (!cull_.mayTouch(from, to)) return false;
   traced = true;
   hit = RasterHit{in, out, 0.0, {}};
   if (!traceClosed(from, to, hit.s, hit.normal)) return false;
@@ -94,8 +100,9 @@ namespace {
 
 class Rasterizer {
  public:
-  Rasterizer(const LatticeBox& box, const Primitive<double>& object, const RasterOptions& options)
-      : options_(options), points_(box.boundaryPoints()), tracer_(box, object, options.grazeTolerance) {
+  Rasterizer(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
+             const RasterOptions& options)
+      : options_(options), points_(box.boundaryPoints()), tracer_(box, object, cover, options.grazeTolerance) {
     faces_.reserve(points_.size());
     for (const LatticePoint& p : points_) faces_.push_back(box.facesOf(p));
     perPoint_.resize(points_.size());
@@ -173,7 +180,12 @@ class Rasterizer {
 }  // namespace
 
 RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const RasterOptions& options) {
-  Rasterizer rasterizer(box, object, options);
+  return rasterize(box, object, nullptr, options);
+}
+
+RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
+                       const RasterOptions& options) {
+  Rasterizer rasterizer(box, object, cover, options);
   return rasterizer.run();
 }
 

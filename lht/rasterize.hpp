@@ -5,7 +5,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "lht/cover_cull.hpp"
 #include "lht/lattice_box.hpp"
+#include "lht/object_cover.hpp"
 #include "render/primitive.hpp"
 
 namespace lattice::lht {
@@ -41,7 +43,12 @@ struct RasterOptions {
 };
 
 // `object` is in object coordinates; box says how they map to lattice ones.
+// `cover` (object coordinates, optional) contains the object: pairs whose
+// segment stays clear of it are misses without a trace (lht/cover_cull.hpp);
+// the result is the same with or without it.
 RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const RasterOptions& options = {});
+RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
+                       const RasterOptions& options = {});
 
 // One pair's answer, exactly as rasterize() gives it: the rasterizer and the
 // on-demand table (lht/on_demand_table.hpp) share it, so an entry built on
@@ -49,6 +56,10 @@ RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, c
 class PairTracer {
  public:
   PairTracer(const LatticeBox& box, const Primitive<double>& object, double grazeTolerance = RasterOptions{}.grazeTolerance);
+  // With a cover of the object (object coordinates; null: none): the same
+  // answers, fewer traces.
+  PairTracer(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
+             double grazeTolerance = RasterOptions{}.grazeTolerance);
   // The hit of the segment from `in` to `out` (points on the box's surface),
   // with its unit normal; false for a miss, including the pairs rasterize()
   // never traces (a shared face, a segment missing the object's box).
@@ -65,6 +76,7 @@ class PairTracer {
   double grazeTolerance_;
   Mat4d latticeToObject_{1.0};
   Bounds<double> bounds_;
+  CoverCull cull_;
 };
 
 }  // namespace lattice::lht
