@@ -65,8 +65,11 @@ class PairTracer {
   // never traces (a shared face, a segment missing the object's box).
   bool trace(const LatticePoint& in, const LatticePoint& out, RasterHit& hit) const;
   // The same for pairs whose faces are known (the rasterizer's inner loop).
+  // `fan`: the cull's fan aimed from `in` (CoverCull::aim), shared by the
+  // pairs leaving one point; null: the cull tests the pair alone.
   bool trace(const LatticePoint& in, std::uint8_t facesIn, const LatticePoint& out, std::uint8_t facesOut,
-             RasterHit& hit, bool& traced) const;
+             RasterHit& hit, bool& traced, const CoverCull::Fan* fan = nullptr) const;
+  const CoverCull& cull() const { return cull_; }
 
  private:
   bool traceClosed(const Vec3d& from, const Vec3d& to, double& s, Vec3d& normal) const;
