@@ -199,4 +199,8 @@ RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, c
   return rasterizer.run();
 }
 
+RasterResult rasterize(const LatticeBox& box, const LatticeObject& object, const RasterOptions& options) {
+  return rasterize(box, *object.primitive, object.cover ? &*object.cover : nullptr, options);
+}
+
 }  // namespace lattice::lht

@@ -7,6 +7,7 @@
 
 #include "lht/cover_cull.hpp"
 #include "lht/lattice_box.hpp"
+#include "lht/lattice_object.hpp"
 #include "lht/object_cover.hpp"
 #include "render/primitive.hpp"
 
@@ -49,6 +50,8 @@ struct RasterOptions {
 RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const RasterOptions& options = {});
 RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
                        const RasterOptions& options = {});
+// A lattice object's primitive, with its cover when it has one.
+RasterResult rasterize(const LatticeBox& box, const LatticeObject& object, const RasterOptions& options = {});
 
 // One pair's answer, exactly as rasterize() gives it: the rasterizer and the
 // on-demand table (lht/on_demand_table.hpp) share it, so an entry built on
