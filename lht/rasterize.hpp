@@ -2,6 +2,9 @@
 // Rasterization (thesis sec. 2.1): for every entry point p_i on the lattice
 // box and every exit point p_o, trace the segment p_i + (p_o - p_i) s,
 // s in [0, 1], against the exact object and keep the hit closest to p_i.
+// Given a cover of the object (lht/object_cover.hpp), a pair whose segment
+// stays clear of it is a miss without a trace (lht/cover_cull.hpp); the
+// pairs that may touch are traced as without it, so the table is the same.
 #include <cstdint>
 #include <vector>
 
