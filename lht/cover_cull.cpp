@@ -34,6 +34,7 @@ CoverCull::CoverCull(const ObjectCover& cover, const std::array<int, 3>& cells, 
     boxes_.push_back({b.center(), (b.hi - b.lo) * 0.5 + Vec3d(margin)});
     grown_.push_back({b.lo - Vec3d(margin), b.hi + Vec3d(margin)});
   }
+  if (pieces() > kMaxCoverPieces) active_ = false;
 }
 
 bool CoverCull::touches(std::size_t piece, const Vec3d& p, const Vec3d& d) const {

@@ -32,7 +32,11 @@
 // cells) and six orders above the tests' rounding; a larger margin only
 // traces a few more near misses (22 of 2.1 million pairs on the scene hair).
 // The rectangles are widened by 1e-6 cells for their own rounding.
+// kMaxCoverPieces: a cover of more pieces culls nothing, since every pair
+// would test every piece's rectangle, where the object's BVH finds a miss
+// in a few box tests; lattice objects are a few to tens of pieces.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -41,6 +45,7 @@
 namespace lattice::lht {
 
 inline constexpr double kCoverMargin = 1e-4;
+inline constexpr std::size_t kMaxCoverPieces = 64;
 
 class CoverCull {
  public:

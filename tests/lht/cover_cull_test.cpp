@@ -49,6 +49,8 @@ std::pair<std::uint64_t, std::uint64_t> requireSameTable(const LatticeObject& ob
   return {plain.stats.traced, culled.stats.traced};
 }
 
+CoverCull cullOf(const ObjectCover& cover) { return CoverCull(cover, {10, 10, 10}); }
+
 NodeDesc leaf(LeafDescPtr desc, const Mat4d& transform = Mat4d(1.0)) {
   NodeDesc node = NodeDesc::makeLeaf(std::move(desc));
   node.transform = transform;
@@ -162,4 +164,12 @@ TEST_CASE("cover cull: lines are culled only beyond the margin") {
     }
   }
   CHECK(touching > 0);
+}
+
+TEST_CASE("cover cull: a cover of too many pieces culls nothing") {
+  ObjectCover cover;
+  for (std::size_t k = 0; k <= kMaxCoverPieces; ++k) cover.capsules.push_back({Vec3d(5, 5, 1), Vec3d(5, 5, 2), 0.5});
+  CHECK(cullOf(cover).mayTouch(Vec3d(0, 0, 9), Vec3d(10, 0, 9)));
+  cover.capsules.pop_back();
+  CHECK_FALSE(cullOf(cover).mayTouch(Vec3d(0, 0, 9), Vec3d(10, 0, 9)));
 }
