@@ -88,7 +88,7 @@ int main(int argc, char** argv) try {
     options.progress = false;
     const LatticeObject object = row.make();
     const LatticeBox box(object.bounds, 1.0, row.oversample);
-    const RasterResult raster = rasterize(box, *object.primitive, options);
+    const RasterResult raster = rasterize(box, object, options);
     const LatticeHashTable table(raster.hits);
     fmt::print("  {:<26} f_lat {:g}: N_lp {:>9} N_iz {:>8} traced {:>9}  {:>8.0f} ms  entries {:>8} bytes {:>9} "
                "({:.2f} B/entry, load {:.2f})\n",

@@ -49,6 +49,7 @@ LatticeObject sphereObject(double radius) {
   object.definition = fmt::format("sphere radius={:.17g}", radius);
   object.bounds = {Vec3d(-radius), Vec3d(radius)};
   object.primitive = makeQuarticLeaf<double>(shape.f, shape.bounds, Mat4d(1.0), 0);
+  object.cover = polylineCover({Vec3d(0.0)}, radius);
   return object;
 }
 
@@ -57,6 +58,7 @@ LatticeObject capsuleObject(double radius, double length) {
   object.primitive = makeCapsule<double>(radius, length, Mat4d(1.0), 0);  // validates
   object.definition = fmt::format("capsule radius={:.17g} length={:.17g}", radius, length);
   object.bounds = {Vec3d(-radius, -radius, -radius), Vec3d(radius, radius, length + radius)};
+  object.cover = polylineCover({Vec3d(0.0), Vec3d(0.0, 0.0, length)}, radius);
   return object;
 }
 
@@ -70,6 +72,7 @@ LatticeObject polylineObject(const std::vector<Vec3d>& points, double radius, co
     throw Error(e.kind(), fmt::format("{}: {}", name, e.what()));
   }
   object.bounds = polylineBounds(points, radius);
+  object.cover = polylineCover(points, radius);
   return object;
 }
 
@@ -83,6 +86,7 @@ LatticeObject sceneObject(const NodeDesc& node, std::string definition) {
   object.bounds = nodeBounds(node, Mat4d(1.0));
   object.bounds.lo = glm::max(object.bounds.lo, built.lo);
   object.bounds.hi = glm::min(object.bounds.hi, built.hi);
+  object.cover = coverOf(node, Mat4d(1.0));
   object.definition = std::move(definition);
   return object;
 }

@@ -3,9 +3,11 @@
 // quartics and CSG, traced in double), its tight bounding box, and a
 // canonical text of its definition whose FNV-1a hash ties a .lht file to it.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "lht/object_cover.hpp"
 #include "render/primitive.hpp"
 #include "render/scene.hpp"
 
@@ -15,6 +17,9 @@ struct LatticeObject {
   std::string definition;  // canonical; equal definitions rasterize identically
   Bounds<double> bounds;   // tight box in object coordinates (sets the lattice size)
   std::shared_ptr<const Primitive<double>> primitive;  // object coordinates
+  // Pieces containing the solid (object coordinates), for the rasterizer's
+  // cull; unset: none known, every pair is traced.
+  std::optional<ObjectCover> cover;
   std::uint64_t hash() const;
 };
 

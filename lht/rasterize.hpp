@@ -2,10 +2,16 @@
 // Rasterization (thesis sec. 2.1): for every entry point p_i on the lattice
 // box and every exit point p_o, trace the segment p_i + (p_o - p_i) s,
 // s in [0, 1], against the exact object and keep the hit closest to p_i.
+// Given a cover of the object (lht/object_cover.hpp), a pair whose segment
+// stays clear of it is a miss without a trace (lht/cover_cull.hpp); the
+// pairs that may touch are traced as without it, so the table is the same.
 #include <cstdint>
 #include <vector>
 
+#include "lht/cover_cull.hpp"
 #include "lht/lattice_box.hpp"
+#include "lht/lattice_object.hpp"
+#include "lht/object_cover.hpp"
 #include "render/primitive.hpp"
 
 namespace lattice::lht {
@@ -41,7 +47,14 @@ struct RasterOptions {
 };
 
 // `object` is in object coordinates; box says how they map to lattice ones.
+// `cover` (object coordinates, optional) contains the object: pairs whose
+// segment stays clear of it are misses without a trace (lht/cover_cull.hpp);
+// the result is the same with or without it.
 RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const RasterOptions& options = {});
+RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
+                       const RasterOptions& options = {});
+// A lattice object's primitive, with its cover when it has one.
+RasterResult rasterize(const LatticeBox& box, const LatticeObject& object, const RasterOptions& options = {});
 
 // One pair's answer, exactly as rasterize() gives it: the rasterizer and the
 // on-demand table (lht/on_demand_table.hpp) share it, so an entry built on
@@ -49,13 +62,20 @@ RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, c
 class PairTracer {
  public:
   PairTracer(const LatticeBox& box, const Primitive<double>& object, double grazeTolerance = RasterOptions{}.grazeTolerance);
+  // With a cover of the object (object coordinates; null: none): the same
+  // answers, fewer traces.
+  PairTracer(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
+             double grazeTolerance = RasterOptions{}.grazeTolerance);
   // The hit of the segment from `in` to `out` (points on the box's surface),
   // with its unit normal; false for a miss, including the pairs rasterize()
   // never traces (a shared face, a segment missing the object's box).
   bool trace(const LatticePoint& in, const LatticePoint& out, RasterHit& hit) const;
   // The same for pairs whose faces are known (the rasterizer's inner loop).
+  // `fan`: the cull's fan aimed from `in` (CoverCull::aim), shared by the
+  // pairs leaving one point; null: the cull tests the pair alone.
   bool trace(const LatticePoint& in, std::uint8_t facesIn, const LatticePoint& out, std::uint8_t facesOut,
-             RasterHit& hit, bool& traced) const;
+             RasterHit& hit, bool& traced, const CoverCull::Fan* fan = nullptr) const;
+  const CoverCull& cull() const { return cull_; }
 
  private:
   bool traceClosed(const Vec3d& from, const Vec3d& to, double& s, Vec3d& normal) const;
@@ -65,6 +85,7 @@ class PairTracer {
   double grazeTolerance_;
   Mat4d latticeToObject_{1.0};
   Bounds<double> bounds_;
+  CoverCull cull_;
 };
 
 }  // namespace lattice::lht

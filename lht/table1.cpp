@@ -69,7 +69,7 @@ Table1Result computeTable1Row(const Table1Row& row, const RasterOptions& options
   const LatticeBox box(object.bounds, 1.0, row.oversample);
   Table1Result result;
   result.cells = box.cells();
-  result.stats = rasterize(box, *object.primitive, options).stats;
+  result.stats = rasterize(box, object, options).stats;
   return result;
 }
 

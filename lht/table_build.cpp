@@ -28,7 +28,7 @@ BuiltTable packTable(const LatticeObject& object, double lambda, double oversamp
   RasterOptions options;
   options.progress = settings.progress;
   options.threads = settings.threads;
-  const RasterResult raster = rasterize(lht.box, *object.primitive, options);
+  const RasterResult raster = rasterize(lht.box, object, options);
   const LhtPrecision form = chooseForm(raster.hits.size(), raster.hits.capacity() * sizeof(RasterHit));
   built.stats = raster.stats;
   lht.objectHash = hashFor(form);

@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# Side-by-side rasterization speed of two `lattice` binaries (before and
+# after a change to lht/rasterize or its cull), for docs/benchmarks.md.
+#
+# Method: for each case, `lattice rasterize ... --stats` with BEFORE and AFTER
+# alternately (so load drifts hit both alike), N times each; reports each
+# one's median build_ms (wall clock of the rasterization alone, as the
+# command prints it) and median CPU seconds of the whole process (user +
+# system, GNU time), the min-max, the ratios after/before, and the load
+# average at the start and the end. The .lht files must be byte-identical:
+# the script compares them and says so.
+#   bench/rasterize-before-after.sh BEFORE AFTER [--runs N] [--threads T]
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+[[ $# -ge 2 ]] || { sed -n '2,13p' "$0"; exit 2; }
+before="$1"; after="$2"; shift 2
+runs=5; threads=1
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --runs) runs="$2"; shift 2 ;;
+    --threads) threads="$2"; shift 2 ;;
+    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
+    *) echo "rasterize-before-after.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
+  esac
+done
+for b in "$before" "$after"; do
+  [[ -x $b ]] || { echo "rasterize-before-after.sh: $b is not an executable" >&2; exit 2; }
+done
+out="$(mktemp -d)"
+trap 'rm -rf "$out"' EXIT
+cases=(
+  "hair f_lat 1:--scene $root/scenes/fuzzy-sphere-1000.toml --name hair --oversample 1"
+  "hair f_lat 2:--scene $root/scenes/fuzzy-sphere-1000.toml --name hair --oversample 2"
+  "hair f_lat 3:--scene $root/scenes/fuzzy-sphere-1000.toml --name hair --oversample 3"
+  "thistle line f_lat 2:--scene $root/scenes/thistle.toml --name line --oversample 2"
+  "capsule 100 f_lat 2:--shape capsule --length 100 --oversample 2"
+)
+med() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
+range() { printf '%s\n' "$@" | sort -g | sed -n '1p;$p' | paste -sd- ; }
+echo "# $(date -u +%F' '%H:%M) UTC, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), load $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "# --threads $threads, $runs alternating runs each; build_ms (rasterization, wall) and CPU s (whole process)"
+printf '%-22s %22s %22s %6s %16s %16s %6s %s\n' case "build_ms before" "after" ratio "CPU s before" after ratio table
+for c in "${cases[@]}"; do
+  name=${c%%:*}; args=${c#*:}
+  declare -a mb=() ma=() cb=() ca=()
+  for ((i = 0; i < runs; i++)); do
+    for side in before after; do
+      bin=$before; [[ $side == after ]] && bin=$after
+      # shellcheck disable=SC2086
+      /usr/bin/time -f '%U %S' -o "$out/time" "$bin" rasterize $args --threads "$threads" --stats \
+        -o "$out/$side.lht" > "$out/stats" 2>/dev/null
+      ms=$(sed -n 's/.*build_ms=\([0-9.]*\).*/\1/p' "$out/stats")
+      cpu=$(awk '{printf "%.2f", $1 + $2}' "$out/time")
+      if [[ $side == before ]]; then mb+=("$ms"); cb+=("$cpu"); else ma+=("$ms"); ca+=("$cpu"); fi
+    done
+  done
+  b=$(med "${mb[@]}"); a=$(med "${ma[@]}"); bc=$(med "${cb[@]}"); ac=$(med "${ca[@]}")
+  same=identical
+  cmp -s "$out/before.lht" "$out/after.lht" || same=DIFFERENT
+  printf '%-22s %8s (%11s) %8s (%11s) %6.2f %5s (%9s) %5s (%9s) %6.2f %s\n' "$name" "$b" "$(range "${mb[@]}")" \
+    "$a" "$(range "${ma[@]}")" "$(awk -v a="$a" -v b="$b" 'BEGIN {print a / b}')" "$bc" "$(range "${cb[@]}")" \
+    "$ac" "$(range "${ca[@]}")" "$(awk -v a="$ac" -v b="$bc" 'BEGIN {print a / b}')" "$same"
+done
+echo "# load at the end $(cut -d' ' -f1-3 /proc/loadavg)"
