@@ -13,8 +13,10 @@
 option(LATTICE_STATIC "Link lattice statically (low-memory 'firmware' build; no libusb)" OFF)
 
 # LATTICE_STATIC_CXX (the ordinary build's default) links only the C++ side
-# into `lattice`: libstdc++ and libgcc statically, fmt and toml++ header-only,
-# while glibc, libpng and libusb stay shared. libstdc++.so alone is 1.7 MiB
+# into `lattice`: libstdc++ statically, fmt and toml++ header-only, while
+# glibc, libgcc_s, libpng and libusb stay shared. (libgcc_s stays shared
+# because glibc's pthread_once unwinds through it: with a static copy of the
+# unwinder beside it, an exception leaving std::call_once aborts.) libstdc++.so alone is 1.7 MiB
 # resident once mapped (fault-around brings in most of its code); the static
 # copy carries only what we call. Measured on the fuzzy sphere's render, the
 # process floor (`lattice --help`) falls from 6.2 to 4.9 MiB (docs/memory.md,
