@@ -107,6 +107,7 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
   if (!f.lhtCache.empty()) job.onDemandCacheBytes = parseByteCount(f.lhtCache, "--lht-cache");
   if (!f.memoryBudget.empty()) job.memoryBudget = parseByteCount(f.memoryBudget, "--memory-budget");
   job.modeChosenByUser = cmd.count("--mode") > 0 || cmd.count("--sample") > 0;
+  job.histogramChosenByUser = cmd.count("--histogram") > 0;
   job.pipeline = toPipelineOptions(f.pipeline, cmd);
   job.quiet = f.pipeline.quiet;
   if (cmd.count("--port") > 0) {

@@ -35,13 +35,22 @@ std::string listItems(const std::vector<MemoryItem>& items) {
   return out;
 }
 
-MemoryPlan costOf(const MemoryPlanRequest& request, quantize::PipelineMode mode) {
+// One arrangement of the output side: a pipeline mode and a histogram form.
+struct Arrangement {
+  quantize::PipelineMode mode;
+  quantize::HistogramForm histogram;
+};
+
+MemoryPlan costOf(const MemoryPlanRequest& request, Arrangement arrangement) {
   MemoryPlan plan;
-  plan.mode = mode;
+  plan.mode = arrangement.mode;
+  plan.histogram = arrangement.histogram;
+  plan.quantized = request.quantized;
   plan.items.push_back({"resident after building the scene", request.resident});
   if (request.quantized) {
     quantize::PipelineOptions options = request.pipeline;
-    options.mode = mode;
+    options.mode = arrangement.mode;
+    options.quantize.histogram = arrangement.histogram;
     const quantize::PipelineReport buffers = quantize::pipelineBuffers(request.width, request.height, options);
     plan.items.push_back({"histogram", buffers.histogramBytes});
     plan.items.push_back({"rows", buffers.rowBytes + buffers.errorRowBytes});
@@ -55,15 +64,27 @@ MemoryPlan costOf(const MemoryPlanRequest& request, quantize::PipelineMode mode)
   return plan;
 }
 
-std::vector<quantize::PipelineMode> candidateModes(const MemoryPlanRequest& request) {
-  if (!request.quantized || request.modeChosenByUser) return {request.pipeline.mode};
-  return {quantize::PipelineMode::Frame, quantize::PipelineMode::TwoPass};  // fastest first
+// Fastest first: a mode's full histogram before its small one, and the frame
+// mode before the two-pass mode; what the user chose stays as chosen.
+std::vector<Arrangement> candidateArrangements(const MemoryPlanRequest& request) {
+  const quantize::HistogramForm asked = request.pipeline.quantize.histogram;
+  if (!request.quantized) return {{request.pipeline.mode, asked}};
+  std::vector<quantize::PipelineMode> modes{quantize::PipelineMode::Frame, quantize::PipelineMode::TwoPass};
+  if (request.modeChosenByUser) modes = {request.pipeline.mode};
+  std::vector<quantize::HistogramForm> forms{quantize::HistogramForm::Full, quantize::HistogramForm::Small};
+  if (request.histogramChosenByUser) forms = {asked};
+  std::vector<Arrangement> out;
+  for (quantize::PipelineMode mode : modes)
+    for (quantize::HistogramForm form : forms) out.push_back({mode, form});
+  return out;
 }
 
 }  // namespace
 
 std::string MemoryPlan::summary() const {
-  return fmt::format("{} mode, predicted peak {} ({})", pipelineModeName(mode), formatBytes(predictedPeak),
+  if (!quantized) return fmt::format("predicted peak {} ({})", formatBytes(predictedPeak), listItems(items));
+  return fmt::format("{} mode, {} histogram, predicted peak {} ({})", pipelineModeName(mode),
+                     histogram == quantize::HistogramForm::Small ? "small" : "full", formatBytes(predictedPeak),
                      listItems(items));
 }
 
@@ -72,7 +93,7 @@ std::uint64_t leastOutputBytes(const MemoryPlanRequest& request) {
   outputOnly.resident = 0;
   outputOnly.peakSoFar = 0;
   std::uint64_t least = UINT64_MAX;
-  for (quantize::PipelineMode mode : candidateModes(request)) least = std::min(least, costOf(outputOnly, mode).predictedPeak);
+  for (const Arrangement& a : candidateArrangements(request)) least = std::min(least, costOf(outputOnly, a).predictedPeak);
   return least;
 }
 
@@ -85,8 +106,8 @@ MemoryPlan planMemory(const MemoryPlanRequest& request) {
                             "the .lht in the scene's `cache =` key{} (docs/memory.md)",
                             budget, formatBytes(request.peakSoFar), formatBytes(request.resident), kBuildAdvice));
   std::vector<MemoryPlan> tried;
-  for (quantize::PipelineMode mode : candidateModes(request)) {
-    MemoryPlan plan = costOf(request, mode);
+  for (const Arrangement& a : candidateArrangements(request)) {
+    MemoryPlan plan = costOf(request, a);
     if (plan.predictedPeak <= request.budget) return plan;
     tried.push_back(std::move(plan));
   }
@@ -96,7 +117,9 @@ MemoryPlan planMemory(const MemoryPlanRequest& request) {
   if (request.modeChosenByUser && request.pipeline.mode != quantize::PipelineMode::TwoPass) {
     MemoryPlanRequest twoPass = request;
     twoPass.pipeline.mode = quantize::PipelineMode::TwoPass;
-    const MemoryPlan other = costOf(twoPass, quantize::PipelineMode::TwoPass);
+    const MemoryPlan other = costOf(twoPass, {quantize::PipelineMode::TwoPass, request.histogramChosenByUser
+                                                                                  ? request.pipeline.quantize.histogram
+                                                                                  : quantize::HistogramForm::Small});
     if (other.predictedPeak <= request.budget) advice = " --mode passes would fit; drop --mode or choose it.";
   }
   if (advice.empty())

@@ -36,19 +36,24 @@ struct MemoryPlanRequest {
   bool quantized = true;               // false: --device png, no pipeline
   quantize::PipelineOptions pipeline;            // dither, the user's mode
   bool modeChosenByUser = false;       // --mode given: check it, do not change it
+  bool histogramChosenByUser = false;  // --histogram given: likewise
   std::vector<MemoryItem> deviceItems; // images the output device will hold
 };
 
 struct MemoryPlan {
   quantize::PipelineMode mode = quantize::PipelineMode::TwoPass;
+  quantize::HistogramForm histogram = quantize::HistogramForm::Full;
+  bool quantized = true;  // false: no pipeline, mode and histogram mean nothing
   std::uint64_t predictedPeak = 0;
   std::vector<MemoryItem> items;  // what predictedPeak adds up
   std::string summary() const;    // one line for the log
 };
 
 // The fastest arrangement that fits: the frame mode (one render) before the
-// two-pass mode (two renders, no frame buffer); the sample mode only when the
-// user asked for it (it changes the palette). lattice::Error(Budget) when
+// two-pass mode (two renders, no frame buffer), each with the full histogram
+// before the small one (1 MiB against 64 KiB; the same palette, but at most
+// 6144 colours: a picture with more then fails naming the way out); the
+// sample mode only when the user asked for it (it changes the palette). lattice::Error(Budget) when
 // nothing fits, naming what takes the memory and what to change.
 MemoryPlan planMemory(const MemoryPlanRequest& request);
 

@@ -151,12 +151,17 @@ RenderResult renderWith(const lht::SceneWithLattices& loaded, const RenderJob& j
   if (job.memoryBudget) {
     budget = renderBudgetRequest(*job.memoryBudget, settings.width, settings.height, pipeline, job.modeChosenByUser,
                                  device ? &*device : nullptr, !job.picture.empty());
+    budget->histogramChosenByUser = job.histogramChosenByUser;
     lht::TableSettings tables = loaded.tables;
     tables.packing = tablePackingWithin(*budget);
     bound = lht::withTableSettings(loaded, tables);
   }
   Renderer<T> renderer(bound ? bound->scene : loaded.scene, settings);
-  if (budget) pipeline.mode = planBuiltRender(*budget).mode;
+  if (budget) {
+    const MemoryPlan plan = planBuiltRender(*budget);
+    pipeline.mode = plan.mode;
+    pipeline.quantize.histogram = plan.histogram;
+  }
 
   RenderResult result;
   if (device)

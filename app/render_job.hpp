@@ -46,6 +46,7 @@ struct RenderJob {
   std::optional<std::uint64_t> onDemandCacheBytes;  // the on-demand form's bound
   std::optional<std::uint64_t> memoryBudget;   // bytes of peak resident memory
   bool modeChosenByUser = false;               // the quantizer mode is the user's (not the budget's)
+  bool histogramChosenByUser = false;          // and the histogram form (--histogram)
   quantize::PipelineOptions pipeline;
   bool quiet = false;  // no progress bars
 };

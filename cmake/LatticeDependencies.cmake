@@ -12,6 +12,33 @@
 # (its libudev has no static library), so `send --wait` is unavailable there.
 option(LATTICE_STATIC "Link lattice statically (low-memory 'firmware' build; no libusb)" OFF)
 
+# LATTICE_STATIC_CXX (the ordinary build's default) links only the C++ side
+# into `lattice`: libstdc++ statically, fmt and toml++ header-only, while
+# glibc, libgcc_s, libpng and libusb stay shared. (libgcc_s stays shared
+# because glibc's pthread_once unwinds through it: with a static copy of the
+# unwinder beside it, an exception leaving std::call_once aborts.) libstdc++.so alone is 1.7 MiB
+# resident once mapped (fault-around brings in most of its code); the static
+# copy carries only what we call. Measured on the fuzzy sphere's render, the
+# process floor (`lattice --help`) falls from 6.2 to 4.9 MiB (docs/memory.md,
+# "The ordinary build in 8 MiB"), which is what lets `--memory-budget 8MiB`
+# fit. Off under the sanitizers (their runtimes expect the shared library).
+# Only the `lattice` executable links this way: tests and benchmarks keep the
+# shared libstdc++ (the Embree peer loads it anyway through libembree3).
+if(LATTICE_SANITIZE OR LATTICE_FUZZ)
+  set(_static_cxx_default OFF)
+else()
+  set(_static_cxx_default ON)
+endif()
+option(LATTICE_STATIC_CXX "Link lattice's C++ runtime, fmt and toml++ statically (glibc, libpng, libusb shared)"
+  ${_static_cxx_default})
+if(LATTICE_SANITIZE OR LATTICE_FUZZ)
+  set(LATTICE_STATIC_CXX OFF CACHE BOOL "" FORCE)
+endif()
+set(LATTICE_HEADER_ONLY_LIBS OFF)
+if(LATTICE_STATIC OR LATTICE_STATIC_CXX)
+  set(LATTICE_HEADER_ONLY_LIBS ON)
+endif()
+
 find_package(fmt REQUIRED)
 find_package(tomlplusplus REQUIRED)
 
@@ -29,14 +56,18 @@ if(LATTICE_STATIC)
   target_link_libraries(lattice_png INTERFACE ${LATTICE_PNG_STATIC} ${LATTICE_Z_STATIC} m)
 else()
   find_package(PNG REQUIRED)
-  target_link_libraries(lattice_fmt INTERFACE fmt::fmt)
+  if(LATTICE_HEADER_ONLY_LIBS)
+    target_link_libraries(lattice_fmt INTERFACE fmt::fmt-header-only)
+  else()
+    target_link_libraries(lattice_fmt INTERFACE fmt::fmt)
+  endif()
   target_link_libraries(lattice_png INTERFACE PNG::PNG)
 endif()
 
-# toml++ header-only in the static build, and in the fuzzing build so the TOML
+# toml++ header-only in the static builds (LATTICE_STATIC, LATTICE_STATIC_CXX), and in the fuzzing build so the TOML
 # parser itself is instrumented (coverage feedback and sanitizer checks reach
 # inside it, where the shared library would be a black box).
-if(LATTICE_STATIC OR LATTICE_FUZZ)
+if(LATTICE_HEADER_ONLY_LIBS OR LATTICE_FUZZ)
   # The package's own target forces the shared library (TOML_HEADER_ONLY=0);
   # the headers alone, with the implementation inlined, need only the path.
   get_target_property(_toml_includes tomlplusplus::tomlplusplus INTERFACE_INCLUDE_DIRECTORIES)

@@ -41,4 +41,16 @@ class MemorySink final : public ByteSink {
   std::vector<std::uint8_t> data_;
 };
 
+// Keeps nothing and counts: what a stream would weigh, without holding it
+// (the 4125 driver sizes its candidate streams this way).
+class CountingSink final : public ByteSink {
+ public:
+  using ByteSink::write;
+  void write(std::span<const std::uint8_t> bytes) override { count_ += bytes.size(); }
+  std::uint64_t bytesWritten() const override { return count_; }
+
+ private:
+  std::uint64_t count_ = 0;
+};
+
 }  // namespace lattice

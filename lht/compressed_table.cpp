@@ -26,18 +26,19 @@ std::uint64_t CompressedTable::bitmapBits(const std::array<int, 3>& cells, PairL
   return bits;
 }
 
-CompressedTable::CompressedTable(const std::vector<RasterHit>& hits, const std::array<int, 3>& cells,
+CompressedTable::CompressedTable(const RasterHits& hits, const std::array<int, 3>& cells,
                                  LhtPrecision precision)
     : index_(cells), precision_(precision), layout_(PairLayout::Symmetric), stride_(payloadBytes(precision)) {
   const std::uint64_t p = index_.count();
   // Each hit's ordered pair number, then whether every pair's reverse is there too.
   std::vector<std::pair<std::uint64_t, std::uint32_t>> ordered;  // (i P + o, hit)
   ordered.reserve(hits.size());
-  for (std::size_t h = 0; h < hits.size(); ++h) {
-    const std::uint32_t i = index_.indexOf(hits[h].in), o = index_.indexOf(hits[h].out);
+  std::uint32_t h = 0;
+  for (const RasterHit& hit : hits) {
+    const std::uint32_t i = index_.indexOf(hit.in), o = index_.indexOf(hit.out);
     if (i == BoundaryIndex::kNotOnBoundary || o == BoundaryIndex::kNotOnBoundary || i == o)
       throw Error(ErrorKind::Internal, "a rasterized hit lies off the lattice box's surface");
-    ordered.emplace_back(std::uint64_t(i) * p + o, static_cast<std::uint32_t>(h));
+    ordered.emplace_back(std::uint64_t(i) * p + o, h++);
   }
   std::sort(ordered.begin(), ordered.end());
   const bool symmetric = std::all_of(ordered.begin(), ordered.end(), [&](const auto& pair) {
@@ -48,13 +49,16 @@ CompressedTable::CompressedTable(const std::vector<RasterHit>& hits, const std::
   layout_ = symmetric ? PairLayout::Symmetric : PairLayout::Ordered;
   bits_ = bitmapBits(cells, layout_);
   // The payload order: bit order, and within a symmetric bit lo -> hi first.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> order;  // (payload position key, hit)
-  order.reserve(ordered.size());
-  for (const auto& [code, h] : ordered) {
-    const std::uint64_t i = code / p, o = code % p;
-    order.emplace_back(symmetric ? 2 * triangle(std::min(i, o), std::max(i, o)) + (i > o ? 1 : 0) : code, h);
+  // Rewritten in place (payload position key, hit): a second array of 16
+  // bytes a hit was this build's peak (docs/memory.md).
+  std::vector<std::pair<std::uint64_t, std::uint32_t>>& order = ordered;
+  if (symmetric) {
+    for (auto& entry : order) {
+      const std::uint64_t i = entry.first / p, o = entry.first % p;
+      entry.first = 2 * triangle(std::min(i, o), std::max(i, o)) + (i > o ? 1 : 0);
+    }
+    std::sort(order.begin(), order.end());
   }
-  std::sort(order.begin(), order.end());
   words_.assign((bits_ + 63) / 64, 0);
   payloads_.resize(order.size() * stride_);
   for (std::size_t k = 0; k < order.size(); ++k) {

@@ -45,7 +45,7 @@ class CompressedTable {
   // An empty table of a one-cell box (28 pair bits, one word).
   CompressedTable() : CompressedTable({1, 1, 1}, LhtPrecision::Thesis, PairLayout::Symmetric, {0}, {}, 0) {}
   // From rasterized hits (distinct keys, all on the box's surface) of a box of `cells`.
-  CompressedTable(const std::vector<RasterHit>& hits, const std::array<int, 3>& cells, LhtPrecision precision);
+  CompressedTable(const RasterHits& hits, const std::array<int, 3>& cells, LhtPrecision precision);
   // Adopts a file's bitmap words and payload bytes; throws lattice::Error(Input)
   // when their sizes or the number of set bits disagree with `entries`.
   CompressedTable(const std::array<int, 3>& cells, LhtPrecision precision, PairLayout layout,

@@ -142,15 +142,9 @@ class Rasterizer {
       result.stats.distinctPairs += s.distinctPairs;
       result.stats.traced += s.traced;
     }
-    std::size_t total = 0;
-    for (const auto& list : perPoint_) total += list.size();
-    result.hits.reserve(total);
-    // Each point's list is released once copied, so the hits are not held
-    // twice at the end (the peak a memory budget sees).
-    for (auto& list : perPoint_) {
-      result.hits.insert(result.hits.end(), list.begin(), list.end());
-      std::vector<RasterHit>().swap(list);
-    }
+    // The lists stay as made (each sized exactly): joining them would hold
+    // every hit twice (lht/raster_hits.hpp).
+    result.hits = RasterHits(std::move(perPoint_));
     result.stats.buildMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return result;
@@ -176,6 +170,7 @@ class Rasterizer {
         out.push_back(hit);
       }
     }
+    out.shrink_to_fit();  // growth by doubling left up to half of it unused
   }
 
   RasterOptions options_;

@@ -12,16 +12,10 @@
 #include "lht/lattice_box.hpp"
 #include "lht/lattice_object.hpp"
 #include "lht/object_cover.hpp"
+#include "lht/raster_hits.hpp"
 #include "render/primitive.hpp"
 
 namespace lattice::lht {
-
-// One (p_i, p_o) pair that hits the object.
-struct RasterHit {
-  LatticePoint in, out;
-  double s = 0.0;    // hit = in + (out - in) s
-  Vec3d normal{};    // unit, lattice coordinates (= object directions: the map is a uniform scale)
-};
 
 struct RasterStats {
   std::uint64_t pairs = 0;  // N_lp: ordered face pairs, as eq. 1.3 counts them (with duplicates)
@@ -32,7 +26,7 @@ struct RasterStats {
 };
 
 struct RasterResult {
-  std::vector<RasterHit> hits;  // one per distinct hitting (p_i, p_o), in a deterministic order
+  RasterHits hits;  // one per distinct hitting (p_i, p_o), in a deterministic order
   RasterStats stats;
 };
 

@@ -33,7 +33,7 @@ bool LatticeHashTable::isEmpty(std::uint64_t index) const {
   return std::all_of(key, key + kEntryKeyBytes, [](std::uint8_t b) { return b == 0; });
 }
 
-std::uint64_t LatticeHashTable::slotsFor(const std::vector<RasterHit>& hits, std::uint64_t bucketCount) {
+std::uint64_t LatticeHashTable::slotsFor(const RasterHits& hits, std::uint64_t bucketCount) {
   // Every bucket holds its first key in its primary slot; every other key of
   // the bucket takes one overflow slot.
   std::vector<bool> used(static_cast<std::size_t>(bucketCount), false);
@@ -66,7 +66,7 @@ std::uint64_t LatticeHashTable::bucketOf(const std::uint8_t key[6], std::uint64_
   return h % bucketCount;
 }
 
-LatticeHashTable::LatticeHashTable(const std::vector<RasterHit>& hits, LhtPrecision precision, double loadFactor)
+LatticeHashTable::LatticeHashTable(const RasterHits& hits, LhtPrecision precision, double loadFactor)
     : precision_(precision), stride_(entryBytes(precision)) {
   if (!(loadFactor > 0.0)) throw Error(ErrorKind::Usage, "the LHT load factor must be positive");
   entries_ = hits.size();

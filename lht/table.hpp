@@ -30,7 +30,7 @@ class LatticeHashTable {
 
   LatticeHashTable() = default;
   // Builds from rasterized hits (distinct keys), each stored at `precision`.
-  explicit LatticeHashTable(const std::vector<RasterHit>& hits, LhtPrecision precision = LhtPrecision::Thesis,
+  explicit LatticeHashTable(const RasterHits& hits, LhtPrecision precision = LhtPrecision::Thesis,
                             double loadFactor = kDefaultLoadFactor);
   // Adopts slots read from a file (slotBytes.size() a multiple of
   // entryBytes(precision)); throws lattice::Error(Input) if the chains are
@@ -73,7 +73,7 @@ class LatticeHashTable {
 
   static std::uint64_t bucketOf(const std::uint8_t key[6], std::uint64_t bucketCount);
   // The slots a table of these hits over bucketCount buckets will have.
-  static std::uint64_t slotsFor(const std::vector<RasterHit>& hits, std::uint64_t bucketCount);
+  static std::uint64_t slotsFor(const RasterHits& hits, std::uint64_t bucketCount);
   // The bytes a table of `entries` hits is expected to take, before it is
   // built (a memory budget chooses the precision with it); within about 1 %
   // for tables of thousands of entries.

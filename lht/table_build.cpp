@@ -29,7 +29,7 @@ BuiltTable packTable(const LatticeObject& object, double lambda, double oversamp
   options.progress = settings.progress;
   options.threads = settings.threads;
   const RasterResult raster = rasterize(lht.box, object, options);
-  const LhtPrecision form = chooseForm(raster.hits.size(), raster.hits.capacity() * sizeof(RasterHit));
+  const LhtPrecision form = chooseForm(raster.hits.size(), raster.hits.bytes());
   built.stats = raster.stats;
   lht.objectHash = hashFor(form);
   lht.pairs = raster.stats.pairs;

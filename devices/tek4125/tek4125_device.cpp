@@ -4,6 +4,7 @@
 
 #include "devices/tek4125/tek4125_decoder.hpp"
 #include "devices/tek4125/tek4125_driver.hpp"
+#include "devices/tek4125/tek4125_writer.hpp"
 
 namespace lattice::tek4125 {
 namespace {
@@ -38,11 +39,15 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   d.height = profile.height;
   d.makeDriver = [profile](ByteSink& out) { return std::make_unique<StreamDriver>(out, profile); };
   d.makeEmulator = [profile] { return std::unique_ptr<StreamDecoder>(makeTek4125Decoder(profile)); };
-  // The driver keeps the frame (a byte a pixel) and encodes up to three
-  // candidate streams, holding the shortest beside the one being written
-  // (growing by doubling, then copied once to escape DEL): 8 B a pixel
-  // covers the example scenes (docs/memory.md, "Calibration").
-  d.driverMemory = [](int w, int h) { return 8 * static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h); };
+  // The driver keeps the frame (a byte a pixel); its candidate streams are
+  // counted, not held, and the writer hands bytes on every 16 KiB
+  // (tek4125_writer.hpp): two spill buffers, escaped and not. Per column the
+  // row planner's runs, ways, open rectangles and the row itself, under
+  // 128 bytes. Measured against this bound in docs/memory.md ("Calibration").
+  d.driverMemory = [](int w, int h) {
+    const auto width = static_cast<std::uint64_t>(w);
+    return width * static_cast<std::uint64_t>(h) + 128 * width + 4 * Tek4125Writer::kSpillBytes;
+  };
   // The screen a byte a pixel, and its RGB copy for the PNG.
   d.emulatorMemory = 3 * static_cast<std::uint64_t>(profile.width) * static_cast<std::uint64_t>(profile.height);
   d.line = profile.line();

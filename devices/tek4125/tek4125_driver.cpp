@@ -74,7 +74,7 @@ int Tek4125Driver::mostFrequentIndex() const {
   return static_cast<int>(std::max_element(count.begin(), count.end()) - count.begin());
 }
 
-tek4125::Bytes Tek4125Driver::encode(const Tek4125DriverOptions& options, Tek4125StreamStats& stats) const {
+void Tek4125Driver::encode(const Tek4125DriverOptions& options, ByteSink& sink, Tek4125StreamStats& stats) const {
   const Tek4125Forms& forms = profile_.formSet();
   const int reserved = profile_.reserved;
   const int paletteSize = static_cast<int>(frame_.palette.size());
@@ -101,7 +101,7 @@ tek4125::Bytes Tek4125Driver::encode(const Tek4125DriverOptions& options, Tek412
   }
   const int right = place.left + width - 1, top = place.bottom + height - 1;
 
-  Tek4125Writer out(forms);
+  Tek4125Writer out(forms, sink);
   out.bytes({tek4125::kEsc, '%', '!', '0'});  // enter Tek mode
   out.command("LV");                      // dialog area invisible, so text cannot cover the picture
   out.integer(0);
@@ -176,10 +176,9 @@ tek4125::Bytes Tek4125Driver::encode(const Tek4125DriverOptions& options, Tek412
   stats.rasterBits = layout.bits;
   stats.candidate = describeOptions(Tek4125DriverOptions{options.skipBackground, options.rectangles,
                                                          options.mergeRows, layout.runLength, false});
-  tek4125::Bytes bytes = out.take();
-  stats.bytes = bytes.size();
+  out.finish();
+  stats.bytes = out.size();
   stats.seconds = transmitSeconds(stats.bytes, profile_.line());
-  return bytes;
 }
 
 void Tek4125Driver::end() {
@@ -196,16 +195,20 @@ void Tek4125Driver::end() {
     candidates.push_back(noRuns);
     candidates.push_back(unmerged);
   }
-  tek4125::Bytes best;
-  for (const Tek4125DriverOptions& c : candidates) {
-    Tek4125StreamStats s;
-    tek4125::Bytes bytes = encode(c, s);
-    if (best.empty() || bytes.size() < best.size()) {
-      best.swap(bytes);
-      stats_ = s;
+  // Each candidate is encoded into a counter, and only the smallest (the
+  // first of equals) again into the sink: one more encoding (milliseconds)
+  // instead of holding whole streams (hundreds of KiB, docs/memory.md).
+  std::size_t best = 0;
+  if (candidates.size() > 1) {
+    std::uint64_t bestBytes = UINT64_MAX;
+    for (std::size_t n = 0; n < candidates.size(); ++n) {
+      CountingSink counter;
+      Tek4125StreamStats s;
+      encode(candidates[n], counter, s);
+      if (s.bytes < bestBytes) bestBytes = s.bytes, best = n;
     }
   }
-  sink_.write(std::span<const std::uint8_t>(best));
+  encode(candidates[best], sink_, stats_);
   sink_.flush();
 }
 

@@ -5,7 +5,8 @@
 // The frame is kept (a byte a pixel) because the stream's set-up depends on
 // the whole picture (its most frequent colour is painted once and its runs
 // skipped) and because the "shortest" strategy encodes the picture once per
-// candidate and sends the smallest stream. What the stream may contain is
+// candidate, counting its bytes, and sends the smallest (encoded once more,
+// into the sink: no candidate stream is ever held whole). What the stream may contain is
 // the profile's form set (tek4125_forms.hpp, strict by default):
 //
 //   ESC %!0, LV0; strict: KI1, RD 1 <planes>; TM111; strict: TB <colour 0>;
@@ -74,7 +75,8 @@ class Tek4125Driver final : public IndexedSink {
   const Tek4125StreamStats& stats() const { return stats_; }
 
  private:
-  tek4125::Bytes encode(const Tek4125DriverOptions& options, Tek4125StreamStats& stats) const;
+  // Writes the stream these options give to `sink`.
+  void encode(const Tek4125DriverOptions& options, ByteSink& sink, Tek4125StreamStats& stats) const;
   int mostFrequentIndex() const;
 
   ByteSink& sink_;

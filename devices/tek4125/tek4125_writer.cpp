@@ -17,6 +17,7 @@ void Tek4125Writer::integer(int value) {
   const std::size_t before = out_.size();
   tek4125::appendInt(out_, value);
   countDels(before);
+  spillIfFull();
 }
 
 void Tek4125Writer::xy(int x, int y) {
@@ -24,24 +25,26 @@ void Tek4125Writer::xy(int x, int y) {
   const std::size_t before = out_.size();
   xy_.append(out_, x, y);
   countDels(before);
+  spillIfFull();
 }
 
-tek4125::Bytes Tek4125Writer::take() {
-  tek4125::Bytes result;
-  if (!forms_.escapeDel) {
-    result.swap(out_);
-  } else {
+void Tek4125Writer::spill() {
+  if (out_.empty()) return;
+  const tek4125::Bytes* ready = &out_;
+  if (forms_.escapeDel && dels_ > 0) {
     // Command names are capitals and raster characters stay below 0x60, so
     // every DEL here is inside an integer or a coordinate.
-    result.reserve(out_.size() + out_.size() / 64);
+    escaped_.clear();
     for (std::uint8_t c : out_) {
-      if (c == kDel) result.insert(result.end(), {tek4125::kEsc, '?'});
-      else result.push_back(c);
+      if (c == kDel) escaped_.insert(escaped_.end(), {tek4125::kEsc, '?'});
+      else escaped_.push_back(c);
     }
-    out_.clear();
+    ready = &escaped_;
   }
+  sink_.write(std::span<const std::uint8_t>(*ready));
+  spilled_ += ready->size();
+  out_.clear();
   dels_ = 0;
-  return result;
 }
 
 }  // namespace lattice::tek4125

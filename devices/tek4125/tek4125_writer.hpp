@@ -4,40 +4,64 @@
 // the set says so (RAL-CGM cgmtek.h does this after KI1, so a line that
 // pads or strips DEL cannot corrupt a coordinate). Lengths are exposed so a
 // planner can cost a choice without writing it.
+//
+// The writer holds at most about kSpillBytes: beyond that it escapes and
+// hands what it has to its ByteSink, so a stream of any length costs the
+// driver a fixed few KiB (the driver's memory bound, tek4125_device.cpp,
+// counts on it).
 #include <cstdint>
 #include <initializer_list>
 #include <string_view>
 
 #include "devices/tek4125/tek4125_forms.hpp"
 #include "devices/tek4125/tek4125_encoding.hpp"
+#include "foundation/byte_sink.hpp"
 
 namespace lattice::tek4125 {
 
 class Tek4125Writer {
  public:
-  explicit Tek4125Writer(const Tek4125Forms& forms) : forms_(forms) {}
+  static constexpr std::size_t kSpillBytes = 16 * 1024;
 
-  void command(std::string_view name) { tek4125::appendCommand(out_, name); }
+  Tek4125Writer(const Tek4125Forms& forms, ByteSink& sink) : forms_(forms), sink_(sink) {}
+
+  void command(std::string_view name) {
+    tek4125::appendCommand(out_, name);
+    spillIfFull();
+  }
   void integer(int value);
   void xy(int x, int y);
-  void byte(std::uint8_t c) { out_.push_back(c); }
+  void byte(std::uint8_t c) {
+    out_.push_back(c);
+    spillIfFull();
+  }
   void bytes(std::initializer_list<std::uint8_t> cs) {
     for (std::uint8_t c : cs) out_.push_back(c);  // (GCC 12 warns falsely on insert into an empty vector)
+    spillIfFull();
   }
 
   // Bytes xy() would write now.
   int xyLength(int x, int y) const { return forms_.fullXy ? 5 : xy_.length(x, y); }
-  std::size_t size() const { return out_.size() + dels_; }
+  // Bytes of the stream so far, DELs escaped: handed on plus still held.
+  std::uint64_t size() const { return spilled_ + out_.size() + dels_; }
   const Tek4125Forms& forms() const { return forms_; }
-  // The stream so far, DELs escaped as the form set asks; the writer is left empty.
-  tek4125::Bytes take();
+  // Hands every byte still held to the sink (the stream is complete).
+  void finish() { spill(); }
 
  private:
-  const Tek4125Forms& forms_;
-  tek4125::XyEncoder xy_;
-  tek4125::Bytes out_;
+  void spillIfFull() {
+    if (out_.size() >= kSpillBytes) spill();
+  }
+  void spill();
   void countDels(std::size_t from);
-  std::size_t dels_ = 0;  // extra bytes take() will add, so size() is exact
+
+  const Tek4125Forms& forms_;
+  ByteSink& sink_;
+  tek4125::XyEncoder xy_;
+  tek4125::Bytes out_;      // not yet handed on, DELs not yet escaped
+  tek4125::Bytes escaped_;  // spill()'s scratch, kept for its capacity
+  std::size_t dels_ = 0;    // DELs in out_: the bytes escaping will add, so size() is exact
+  std::uint64_t spilled_ = 0;
 };
 
 }  // namespace lattice::tek4125

@@ -46,17 +46,26 @@ TEST_CASE("app:memory_budget_picks_a_mode_and_the_peak_fits") {
   const auto roomy = runLattice(fmt::format("{} --stream '{}' --memory-budget 1G", kRender, dir / "a.tek"));
   INFO(roomy.stderrText);
   REQUIRE(roomy.exitCode == 0);
-  CHECK_THAT(roomy.stderrText, Catch::Contains("memory plan: frame mode"));
-  // Half the 1 MiB frame buffer less than the frame plan: only the two
-  // passes fit (with 512 KiB either side for run-to-run variation), and the
-  // binary's own check of its measured peak must pass.
-  const auto budget = static_cast<long long>(predictedPeak(roomy.stderrText)) - 512 * 1024;
-  const auto tight = runLattice(fmt::format("{} --stream '{}' --memory-budget {}", kRender,
-                                            dir / "b.tek", budget));
+  CHECK_THAT(roomy.stderrText, Catch::Contains("memory plan: frame mode, full histogram"));
+  // 512 KiB less than that plan: the small histogram (960 KiB less) keeps the
+  // one render; 1.5 MiB less: only the two passes with the small histogram
+  // fit (the full one is 1 MiB, the frame buffer 1 MiB). About 480 KiB either
+  // side for run-to-run variation, and the binary's own check of its measured
+  // peak must pass each time.
+  const auto roomyPeak = static_cast<long long>(predictedPeak(roomy.stderrText));
+  const auto tight = runLattice(fmt::format("{} --stream '{}' --memory-budget {}", kRender, dir / "b.tek",
+                                            roomyPeak - 512 * 1024));
   INFO(tight.stderrText);
   REQUIRE(tight.exitCode == 0);
-  CHECK_THAT(tight.stderrText, Catch::Contains("memory plan: passes mode"));
-  CHECK(readAll(dir / "a.tek") == readAll(dir / "b.tek"));  // the modes draw the same picture
+  CHECK_THAT(tight.stderrText, Catch::Contains("memory plan: frame mode, small histogram"));
+  const auto tighter = runLattice(fmt::format("{} --stream '{}' --memory-budget {}", kRender, dir / "c.tek",
+                                              roomyPeak - 1536 * 1024));
+  INFO(tighter.stderrText);
+  REQUIRE(tighter.exitCode == 0);
+  CHECK_THAT(tighter.stderrText, Catch::Contains("memory plan: passes mode, small histogram"));
+  // The modes and histogram forms draw the same picture.
+  CHECK(readAll(dir / "a.tek") == readAll(dir / "b.tek"));
+  CHECK(readAll(dir / "a.tek") == readAll(dir / "c.tek"));
 }
 
 TEST_CASE("app:memory_budget_too_small_exits_8_and_writes_nothing") {

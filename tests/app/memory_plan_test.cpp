@@ -22,6 +22,7 @@ MemoryPlanRequest request512(std::uint64_t budget) {
   r.peakSoFar = 5 * MiB;
   r.width = 512;
   r.height = 512;
+  r.histogramChosenByUser = true;  // the full form, as the mode tests below assume
   return r;
 }
 
@@ -29,6 +30,8 @@ MemoryPlanRequest request512(std::uint64_t budget) {
 // Color18 row and an index row (5 B a pixel), and a 4 B/pixel frame.
 constexpr std::uint64_t kPasses = 5 * MiB + MiB + 512 * 5 + kUntouchedAllowance;
 constexpr std::uint64_t kFrame = kPasses + 512 * 512 * 4;
+// The small histogram instead of the full one (quantize/histogram.hpp: 64 KiB at most).
+constexpr std::uint64_t kSmallSaves = MiB - 64 * 1024;
 
 std::string budgetError(const MemoryPlanRequest& r) {
   try {
@@ -55,6 +58,24 @@ TEST_CASE("app:memory_plan_falls_back_to_two_passes") {
   CHECK(plan.mode == PipelineMode::TwoPass);
   CHECK(plan.predictedPeak == kPasses);
   CHECK(planMemory(request512(kPasses)).mode == PipelineMode::TwoPass);
+}
+
+TEST_CASE("app:memory_plan_takes_the_small_histogram_when_the_full_one_does_not_fit") {
+  auto r = request512(kFrame - 1);
+  r.histogramChosenByUser = false;
+  auto plan = planMemory(r);  // one render with the small histogram beats two with the full one
+  CHECK(plan.mode == PipelineMode::Frame);
+  CHECK(plan.histogram == lattice::quantize::HistogramForm::Small);
+  CHECK(plan.predictedPeak == kFrame - kSmallSaves);
+  CHECK_THAT(plan.summary(), Catch::Contains("small histogram") && Catch::Contains("64.0 KiB histogram"));
+  r.budget = kFrame;
+  CHECK(planMemory(r).histogram == lattice::quantize::HistogramForm::Full);  // the full one while it fits
+  r.budget = kPasses - kSmallSaves;
+  plan = planMemory(r);
+  CHECK(plan.mode == PipelineMode::TwoPass);
+  CHECK(plan.histogram == lattice::quantize::HistogramForm::Small);
+  r.budget = kPasses - kSmallSaves - 1;
+  CHECK_THAT(budgetError(r), Catch::Contains("passes mode, small histogram"));
 }
 
 TEST_CASE("app:memory_plan_refuses_when_nothing_fits") {

@@ -97,7 +97,9 @@ TEST_CASE("compressed LHT: a hit list that is not symmetric gets the ordered lay
   Raster lopsided = r;
   // Drop every hit whose entry point comes after its exit point in the numbering.
   const BoundaryIndex index(r.box.cells());
-  std::erase_if(lopsided.result.hits, [&](const RasterHit& h) { return index.indexOf(h.in) > index.indexOf(h.out); });
+  std::vector<RasterHit> kept = r.result.hits.flat();
+  std::erase_if(kept, [&](const RasterHit& h) { return index.indexOf(h.in) > index.indexOf(h.out); });
+  lopsided.result.hits = RasterHits(std::move(kept));
   REQUIRE(lopsided.result.hits.size() < r.result.hits.size());
   const LhtFile hashed = fileOf(lopsided, LhtForm::Hashed, LhtPrecision::Thesis);
   const LhtFile compressed = fileOf(lopsided, LhtForm::Compressed, LhtPrecision::Thesis);

@@ -119,3 +119,27 @@ TEST_CASE("rasterize: the result does not depend on the number of threads") {
   // Most pairs are provable misses that are never traced.
   CHECK(one.stats.traced < one.stats.distinctPairs);
 }
+
+TEST_CASE("rasterize: the hits read as one sequence, in order and by number, like the lists they were made in") {
+  std::vector<std::vector<RasterHit>> lists(4);
+  for (int n = 0; n < 7; ++n) {
+    RasterHit h;
+    h.in = {static_cast<std::uint8_t>(n), 0, 0};
+    h.s = 0.1 * n;
+    lists[n < 3 ? 0 : 2].push_back(h);  // lists 1 and 3 stay empty
+  }
+  const RasterHits hits(std::move(lists));
+  REQUIRE(hits.size() == 7);
+  int k = 0;
+  for (const RasterHit& h : hits) {
+    CHECK(h.in.x == k);
+    CHECK(hits[static_cast<std::size_t>(k)].in.x == k);
+    ++k;
+  }
+  CHECK(k == 7);
+  CHECK(hits.flat().size() == 7);
+  CHECK(hits.bytes() >= 7 * sizeof(RasterHit));
+  const RasterHits none;
+  CHECK(none.begin() == none.end());
+  CHECK(none.empty());
+}

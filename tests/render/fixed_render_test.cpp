@@ -323,7 +323,7 @@ TEST_CASE("fixed point: no floating-point instruction on the Fixed32 per-pixel p
   REQUIRE_FALSE(withFloatingPoint.empty());
   for (const std::string& f : withFloatingPoint) {
     INFO("floating point in " << f);
-    CHECK(testing::isSetUpFunction(f));
+    CHECK(testing::isSetUpCode(scan, f));
   }
 #endif
 }

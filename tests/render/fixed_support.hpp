@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -43,7 +44,21 @@ inline FixedVsDouble compareRenders(const RgbImage& fixedImage, const RgbImage& 
 struct FixedPointScan {
   std::set<std::string> fixedFunctions;
   std::set<std::string> withFloatingPoint;
+  // Callee -> the functions whose code calls or jumps to it (relocations of
+  // the library's objects), names without objdump's "<" and ">:".
+  std::map<std::string, std::set<std::string>> callers;
 };
+
+// "<name>:\n" or "name-0x4" as objdump prints them -> name.
+inline std::string plainFunctionName(std::string name) {
+  if (name.size() >= 3 && name.compare(name.size() - 3, 3, ">:\n") == 0) name.resize(name.size() - 3);
+  if (const auto at = name.rfind("-0x"); at != std::string::npos && name.find(')', at) == std::string::npos)
+    name.resize(at);
+  if (const auto at = name.rfind("+0x"); at != std::string::npos && name.find(')', at) == std::string::npos)
+    name.resize(at);
+  while (!name.empty() && (name.back() == '\n' || name.back() == ' ')) name.pop_back();
+  return name;
+}
 
 inline bool isFloatingPointInstruction(const std::string& line) {
   static const char* heads[] = {"\tcvt", "\tadd", "\tsub", "\tmul", "\tdiv", "\tsqrt", "\tmin",
@@ -71,7 +86,7 @@ inline bool isFloatingPointInstruction(const std::string& line) {
 inline FixedPointScan scanFixedPointCode(const std::string& library,
                                          const std::vector<std::string>& extraFunctions = {}) {
   FixedPointScan scan;
-  const std::string command = "objdump -d -C --no-show-raw-insn '" + library + "' 2>/dev/null";
+  const std::string command = "objdump -dr -C --no-show-raw-insn '" + library + "' 2>/dev/null";
   FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) return scan;
   std::string current;
@@ -86,6 +101,8 @@ inline FixedPointScan scanFixedPointCode(const std::string& library,
       if (inFixed) scan.fixedFunctions.insert(current);
       continue;
     }
+    if (const auto reloc = line.find("R_X86_64_PLT32\t"); reloc != std::string::npos)
+      scan.callers[plainFunctionName(line.substr(reloc + 15))].insert(plainFunctionName(current));
     if (inFixed && isFloatingPointInstruction(line)) scan.withFloatingPoint.insert(current);
   }
   ::pclose(pipe);
@@ -104,6 +121,17 @@ inline bool isSetUpFunction(const std::string& name) {
   for (const std::string& s : setUp)
     if (name.find(s) != std::string::npos) return true;
   return false;
+}
+
+// Set-up by name, or a helper the compiler kept out of line (e.g. glm's
+// double -> Fixed32 vector conversion) that only set-up functions call.
+inline bool isSetUpCode(const FixedPointScan& scan, const std::string& name) {
+  if (isSetUpFunction(name)) return true;
+  const auto found = scan.callers.find(plainFunctionName(name));
+  if (found == scan.callers.end() || found->second.empty()) return false;
+  for (const std::string& caller : found->second)
+    if (!isSetUpFunction(caller)) return false;
+  return true;
 }
 
 }  // namespace lattice::testing
