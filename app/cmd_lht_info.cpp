@@ -10,14 +10,16 @@ namespace {
 
 void printHashed(const lattice::lht::LatticeHashTable& t) {
   using namespace lattice::lht;
-  fmt::print("buckets:       {} primary + {} overflow slots\n", t.bucketCount(), t.overflowCount());
-  fmt::print("load factor:   {:.3f} entries per bucket\n", t.loadFactor());
+  fmt::print("layout:        open addressing, linear probing, {} slots\n", t.capacity());
+  fmt::print("load factor:   {:.3f} of the slots used\n", t.loadFactor());
   fmt::print("table bytes:   {} ({:.2f} bytes/entry, {} bytes per slot)\n", t.bytes(), t.bytesPerEntry(),
              t.entryStride());
-  const ChainStats chains = t.chainStats();
-  fmt::print("chains:        {} buckets used, longest {}\n", chains.usedBuckets, chains.longestChain);
-  for (std::size_t k = 0; k < chains.chainLengthHistogram.size(); ++k)
-    fmt::print("  length {:>3}: {} buckets\n", k, chains.chainLengthHistogram[k]);
+  const ProbeStats probes = t.probeStats();
+  fmt::print("probes:        a hit reads {:.2f} slots on average, a miss {:.2f}; longest displacement {}\n",
+             probes.meanHitSlots, probes.meanMissSlots, probes.longestProbe);
+  for (std::size_t k = 0; k < probes.displacementHistogram.size(); ++k)
+    if (probes.displacementHistogram[k])
+      fmt::print("  {:>3} past home: {} entries\n", k, probes.displacementHistogram[k]);
 }
 
 void printCompressed(const lattice::lht::CompressedTable& t, std::uint64_t nIz) {
@@ -41,7 +43,9 @@ void runLhtInfo(const std::string& path) {
   fmt::print("format:        version {}\n", lht.version);
   fmt::print("form:          {}\n", lht.form == LhtForm::Compressed
                                         ? "compressed (no key, no chain: a rank bitmap over the pair space)"
-                                        : "hashed (thesis sec. 2.3: key, payload, overflow index)");
+                                        : lht.version < kLhtVersion
+                                              ? "hashed (read from the chained layout, thesis sec. 2.3; held open-addressed)"
+                                              : "hashed (open-addressed: key, payload)");
   fmt::print("precision:     {} ({}-byte entries: {})\n", precision.name, precision.entryBytes, precision.summary);
   fmt::print("lattice:       {} x {} x {} cells, lambda {:g}, f_lat {:g} (cell {:g})\n", c[0], c[1], c[2],
              lht.box.lambda(), lht.box.oversample(), lht.box.cellSize());
@@ -70,7 +74,7 @@ void addLhtInfo(CLI::App& root) {
   auto* cmd = root.add_subcommand("lht-info",
                                   "Print the header and statistics of a .lht lattice hash table file: lattice size,\n"
                                   "spacing, object hash, N_lp / N_iz, form and entry precision, entries, the pair\n"
-                                  "space they fill, bytes per entry, and (hashed) load factor and overflow chain\n"
+                                  "space they fill, bytes per entry, and (hashed) load factor and probe\n"
                                   "lengths or (compressed) bitmap and payload bytes. The checksum is verified.");
   auto path = std::make_shared<std::string>();
   cmd->add_option("file", *path, "The .lht file")->required();

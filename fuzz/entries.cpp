@@ -12,7 +12,7 @@
 // * The .lht entry parses the bytes as they are and again with the trailing
 //   FNV-1a checksum recomputed, so mutations also reach the checks behind it
 //   (a random flip almost never survives a 64-bit checksum). A table that
-//   parses is walked (chainStats, hashed form) and probed through LhtLookup,
+//   parses is walked (probeStats, hashed form) and probed through LhtLookup,
 //   the leaves' look-up, in either form (version 3 is the compressed one).
 // * The fixed .lht bytes also go through readLhtFile, the streamed reader the
 //   CLI uses, by way of a scratch file in $TMPDIR named by the process id
@@ -47,7 +47,7 @@ void decode(StreamDecoder& decoder, std::span<const std::uint8_t> bytes) {
 }
 
 void probeLht(const lht::LhtFile& file) {
-  if (file.form == lht::LhtForm::Hashed) (void)file.table.chainStats();
+  if (file.form == lht::LhtForm::Hashed) (void)file.table.probeStats();
   const lht::LhtLookup lookup(file);
   const auto& cells = file.box.cells();
   for (int i = 0; i < 64; ++i) {

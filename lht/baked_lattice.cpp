@@ -69,9 +69,9 @@ std::string bakeLatticeLeaf(SceneBaker& baker, const LhtFile& lht, bool castsSha
     return fmt::format(
         "lattice::lht::makeBakedLhtFile({}u, lattice::lht::LatticeBox({{{}, {}, {}}}, {}, {}, {}), {}ull, {}ull, {}ull, "
         "lattice::lht::LatticeHashTable::inPlace(static_cast<lattice::lht::LhtPrecision>({}), {}, {}ull, {}ull))",
-        lht.version, box.cells()[0], box.cells()[1], box.cells()[2], baker.number(box.lambda()),
+        kLhtVersion, box.cells()[0], box.cells()[1], box.cells()[2], baker.number(box.lambda()),
         baker.number(box.oversample()), baker.vec3(box.origin()), lht.objectHash, lht.pairs, lht.hits,
-        static_cast<int>(table.precision()), slots, table.bucketCount(), table.entryCount());
+        static_cast<int>(table.precision()), slots, table.capacity(), table.entryCount());
   });
   return fmt::format("lattice::lht::makeBakedLatticeLeafDesc({}, {}, \"{}\", lattice::Bounds<double>{{{}, {}}})",
                      file, castsShadows ? "true" : "false", name, baker.vec3(objectBounds.lo),

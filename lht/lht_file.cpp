@@ -10,6 +10,7 @@
 
 #include "foundation/atomic_file.hpp"
 #include "foundation/error.hpp"
+#include "lht/chained_table.hpp"
 
 namespace lattice::lht {
 
@@ -108,8 +109,8 @@ std::vector<std::uint8_t> serializeLht(const LhtFile& lht) {
     w.bytes(c.payloads().data(), c.payloads().size());
   } else {
     w.u64(lht.table.entryCount());
-    w.u64(lht.table.bucketCount());
-    w.u64(lht.table.slotCount());
+    w.u64(lht.table.capacity());
+    w.u64(lht.table.capacity());
     w.bytes(lht.table.slotView().data(), lht.table.slotView().size());
   }
   w.u64(fnv1a64(w.out));
@@ -174,9 +175,9 @@ LhtHeader parseHeader(std::span<const std::uint8_t> prefix, std::uint64_t size, 
   r.at = sizeof kMagic;
   LhtHeader h;
   h.version = static_cast<std::uint32_t>(r.uint(4));
-  if (h.version < 1 || h.version > kLhtCompressedVersion)
+  if (h.version < 1 || h.version > kLhtVersion)
     throw bad(name, fmt::format("format version {} but this program reads versions 1 to {}", h.version,
-                                kLhtCompressedVersion));
+                                kLhtVersion));
   if (h.version == kLhtCompressedVersion) {
     h.headerBytes = kLhtHeaderBytesV3;
     if (size < kLhtHeaderBytesV3 + 8 || prefix.size() < kLhtHeaderBytesV3)
@@ -192,7 +193,8 @@ LhtHeader parseHeader(std::span<const std::uint8_t> prefix, std::uint64_t size, 
     throw bad(name, fmt::format("unknown entry precision code {} at byte 18 (this program knows {})", precisionCode,
                                 precisionCodes()));
   h.precision = *precision;
-  h.stride = entryBytes(h.precision);
+  // Versions 1-3 chained their slots (an overflow index in each); 4 probes open.
+  h.stride = h.version == kLhtVersion ? LatticeHashTable::slotStride(h.precision) : entryBytes(h.precision);
   h.lambda = r.f64();
   h.oversample = r.f64();
   for (int a = 0; a < 3; ++a) h.origin[a] = r.f64();
@@ -242,7 +244,7 @@ LhtFile assemble(const LhtHeader& h, std::vector<std::uint8_t> body, const std::
   if (expectedPrecision && *expectedPrecision != h.precision)
     throw bad(name, fmt::format("holds '{}' entries ({} bytes each) but '{}' entries were asked for (the scene's "
                                 "`precision` or --lht-precision)",
-                                lhtPrecisionName(h.precision), h.stride, lhtPrecisionName(*expectedPrecision)));
+                                lhtPrecisionName(h.precision), entryBytes(h.precision), lhtPrecisionName(*expectedPrecision)));
   if (expectedForm && *expectedForm != h.form)
     throw bad(name, fmt::format("holds a {} table but a {} one was asked for (the scene's `form` or --lht-form)",
                                 lhtFormName(h.form), lhtFormName(*expectedForm)));
@@ -266,7 +268,8 @@ LhtFile assemble(const LhtHeader& h, std::vector<std::uint8_t> body, const std::
       std::vector<std::uint8_t>().swap(body);
       lht.compressed = CompressedTable(h.cells, h.precision, h.layout, std::move(words), std::move(payloads), h.entries);
     } else {
-      lht.table = LatticeHashTable(h.precision, std::move(body), h.buckets, h.entries);
+      lht.table = h.version == kLhtVersion ? LatticeHashTable(h.precision, std::move(body), h.buckets, h.entries)
+                                           : readChainedTable(h.precision, body, h.buckets, h.entries);
     }
     return lht;
   } catch (const Error& e) {

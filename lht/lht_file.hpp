@@ -4,8 +4,9 @@
 //
 //   offset size
 //        0    8  magic "LATLHT\r\n" (the CR LF catches text-mode mangling)
-//        8    4  version: 2 for the hashed form, 3 for the compressed one
-//                (kLhtCompressedVersion); version 1 is still read
+//        8    4  version: 4 for the hashed form (kLhtVersion), 3 for the
+//                compressed one (kLhtCompressedVersion); 1 and 2, and 3's
+//                hashed form, are still read (see below)
 //       12    6  cells along x, y, z (u16 each, 1..255)
 //       18    2  entry precision code (LhtPrecision: 0 thesis, 1 wide, 2 compact;
 //                reserved and 0 in version 1, whose entries are all the thesis's)
@@ -21,11 +22,22 @@
 //      108  e*n  the n slots, e = entryBytes(precision) bytes each, as in memory
 //      end    8  FNV-1a 64 of every byte before it
 //
+// That is version 2 (and 1): the thesis's chained table, read into the
+// open-addressed layout (lht/chained_table.hpp). Version 4 has version 2's
+// header with the open-addressed table of lht/table.hpp as the body:
+//       92    8  capacity (slots, a power of two)
+//      100    8  slots (the same number)
+//      108  e*n  the n slots, e = LatticeHashTable::slotStride(precision)
+//                = entryBytes(precision) - 4 bytes each (no overflow
+//                index), an empty slot all zero, as in memory and in the
+//                firmware's flash
+//
 // Version 3 adds 8 header bytes and, for the compressed form, its own body:
 //      108    2  form code (LhtForm: 0 hashed, 1 compressed)
 //      110    2  pair layout (PairLayout: 0 symmetric, 1 ordered; 0 when hashed)
 //      112    4  reserved, 0
-//   hashed: fields 92 and 100 and the slots as in version 2, from byte 116.
+//   hashed: fields 92 and 100 and the slots as in version 2, from byte 116
+//   (read, never written: hashed tables are written as version 4).
 //   compressed: field 92 holds the bitmap's bits (which the cells and the
 //   layout decide; a mismatch is refused) and field 100 its 64-bit words;
 //   from byte 116 the words (8 bytes each), then `entries` payloads of
@@ -45,7 +57,7 @@
 
 namespace lattice::lht {
 
-inline constexpr std::uint32_t kLhtVersion = 2;            // hashed tables are written so
+inline constexpr std::uint32_t kLhtVersion = 4;            // hashed tables are written so (open-addressed)
 inline constexpr std::uint32_t kLhtCompressedVersion = 3;  // compressed tables are written so
 inline constexpr std::size_t kLhtHeaderBytes = 108;
 inline constexpr std::size_t kLhtHeaderBytesV3 = 116;

@@ -137,7 +137,7 @@ TEST_CASE("compressed LHT: version-3 files round-trip; version 2 and the old fil
       CHECK(std::string(e.what()).find("holds a compressed table but a hashed one") != std::string::npos);
     }
   }
-  // The hashed form is still written as version 2.
+  // The hashed form is written as version 4 (open addressing).
   CHECK(serializeLht(fileOf(r, LhtForm::Hashed, LhtPrecision::Thesis))[8] == kLhtVersion);
   // A version-2 file written by the program before the compressed form
   // existed (main at 3f4c28b: `lattice rasterize --shape sphere --precision compact`).

@@ -2,11 +2,13 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <string>
 
 #include "foundation/atomic_file.hpp"
+#include "lht/chained_table.hpp"
 #include "lht/lattice_object.hpp"
 #include "lht/lht_file.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -38,6 +40,54 @@ std::vector<std::uint8_t> resealed(std::vector<std::uint8_t> bytes) {
   const std::uint64_t sum = fnv1a64(bytes);
   for (int b = 0; b < 8; ++b) bytes.push_back(static_cast<std::uint8_t>(sum >> (8 * b)));
   return bytes;
+}
+
+// The table as a chained file of `version` (1 or 2) would hold it: one
+// bucket per entry, each key first in its bucket's primary slot, the rest
+// in the overflow area linked from it (the thesis's layout, sec. 2.3).
+std::vector<std::uint8_t> chainedFile(const LhtFile& lht, std::uint32_t version) {
+  const LatticeHashTable& t = lht.table;
+  const std::size_t entry = entryBytes(t.precision());
+  const std::uint64_t buckets = t.entryCount();
+  std::vector<std::uint8_t> body(buckets * entry, 0);
+  for (std::uint64_t b = 0; b < buckets; ++b) storeLittleEndian32(&body[(b + 1) * entry - kEntryNextBytes], kNoNext);
+  const auto slots = t.slotView();
+  for (std::size_t i = 0; i < slots.size(); i += t.entryStride()) {
+    if (LatticeHashTable::loadKey(&slots[i]) == 0) continue;
+    const std::size_t head = chainedBucketOf(&slots[i], buckets) * entry;
+    if (LatticeHashTable::loadKey(&body[head]) == 0) {
+      std::copy_n(&slots[i], t.entryStride(), &body[head]);
+      continue;
+    }
+    const std::size_t added = body.size();
+    body.resize(added + entry);
+    std::copy_n(&slots[i], t.entryStride(), &body[added]);
+    std::copy_n(&body[head + entry - kEntryNextBytes], kEntryNextBytes, &body[added + entry - kEntryNextBytes]);
+    storeLittleEndian32(&body[head + entry - kEntryNextBytes], static_cast<std::uint32_t>(added / entry));
+  }
+  std::vector<std::uint8_t> bytes = serializeLht(lht);
+  bytes.resize(kLhtHeaderBytes);
+  bytes[8] = static_cast<std::uint8_t>(version);
+  if (version == 1) bytes[18] = 0;
+  for (int b = 0; b < 8; ++b) bytes[92 + b] = static_cast<std::uint8_t>(buckets >> (8 * b));
+  const std::uint64_t slotCount = body.size() / entry;
+  for (int b = 0; b < 8; ++b) bytes[100 + b] = static_cast<std::uint8_t>(slotCount >> (8 * b));
+  bytes.insert(bytes.end(), body.begin(), body.end());
+  bytes.resize(bytes.size() + 8);
+  return resealed(bytes);
+}
+
+// Both tables hold the same keys with the same payloads.
+void checkSameEntries(const LatticeHashTable& got, const LatticeHashTable& want) {
+  CHECK(got.entryCount() == want.entryCount());
+  const auto slots = want.slotView();
+  for (std::size_t i = 0; i < slots.size(); i += want.entryStride()) {
+    const std::uint64_t key = LatticeHashTable::loadKey(&slots[i]);
+    if (key == 0) continue;
+    const std::uint8_t* e = got.findKey(key);
+    REQUIRE(e != nullptr);
+    CHECK(std::equal(e, e + want.entryStride(), &slots[i]));
+  }
 }
 
 // The message of the Error thrown by parsing `bytes`, which must be Input.
@@ -80,28 +130,44 @@ TEST_CASE("lht file: every precision writes and reads back the identical table a
     CHECK(back.pairs == 18750);
     CHECK(back.hits == 3486);
     CHECK(back.table.entryCount() == lht.table.entryCount());
-    CHECK(back.table.bucketCount() == lht.table.bucketCount());
+    CHECK(back.table.capacity() == lht.table.capacity());
     CHECK(back.table.slotBytes() == lht.table.slotBytes());
     CHECK(serializeLht(back) == serializeLht(lht));
     const std::vector<std::uint8_t> bytes = serializeLht(lht);
-    CHECK(bytes.size() == kLhtHeaderBytes + lht.table.slotCount() * form.entryBytes + 8);
-    CHECK(bytes[8] == 2);                                           // version 2
+    CHECK(bytes.size() == kLhtHeaderBytes + lht.table.capacity() * (form.entryBytes - 4) + 8);
+    CHECK(bytes[8] == 4);                                           // version 4: open addressing
     CHECK(bytes[18] == static_cast<std::uint8_t>(form.precision));  // the precision code, u16 LE
     CHECK(bytes[19] == 0);
   }
 }
 
-TEST_CASE("lht file: version-1 files are still read as thesis entries") {
-  const LhtFile lht = makeSphereLht();
+TEST_CASE("lht file: chained files of versions 1 and 2 are still read, and checked") {
+  for (const LhtPrecisionInfo& form : kLhtPrecisions) {
+    INFO(form.name);
+    const LhtFile lht = makeSphereLht(form.precision);
+    const std::vector<std::uint8_t> v2 = chainedFile(lht, 2);
+    const LhtFile back = parseLht(v2, "old.lht", lht.objectHash, form.precision);
+    CHECK(back.version == 2);
+    checkSameEntries(back.table, lht.table);
+    // Written again, it is a version-4 file of the same table.
+    CHECK(serializeLht(back)[8] == kLhtVersion);
+    checkSameEntries(parseLht(serializeLht(back), "new.lht").table, lht.table);
+    // A chain that loops back on itself is refused, not followed forever:
+    // the last overflow slot links to the first.
+    std::vector<std::uint8_t> looped = v2;
+    const std::size_t last = v2.size() - 8 - kEntryNextBytes;
+    const std::uint64_t buckets = lht.table.entryCount();
+    for (int b = 0; b < 4; ++b) looped[last + b] = static_cast<std::uint8_t>(buckets >> (8 * b));
+    CHECK(refusal(resealed(looped)).find("inconsistent") != std::string::npos);
+  }
   // A version-1 file is the version-2 thesis file with 1 in the version and 0 at byte 18.
-  std::vector<std::uint8_t> v1 = serializeLht(lht);
+  const LhtFile lht = makeSphereLht();
+  std::vector<std::uint8_t> v1 = chainedFile(lht, 1);
   REQUIRE(v1[18] == 0);
-  v1[8] = 1;
-  v1 = resealed(v1);
   const LhtFile back = parseLht(v1, "old.lht", lht.objectHash, LhtPrecision::Thesis);
   CHECK(back.version == 1);
   CHECK(back.table.precision() == LhtPrecision::Thesis);
-  CHECK(back.table.slotBytes() == lht.table.slotBytes());
+  checkSameEntries(back.table, lht.table);
   const std::string message = refusal(v1, std::nullopt, LhtPrecision::Wide);
   CHECK(message.find("'thesis' entries") != std::string::npos);
 }
@@ -144,8 +210,8 @@ TEST_CASE("lht file: every kind of bad file is refused with a message naming it 
   }
   SECTION("wrong version") {
     std::vector<std::uint8_t> bad = good;
-    bad[8] = 4;
-    CHECK(refusal(bad).find("version 4") != std::string::npos);
+    bad[8] = 5;
+    CHECK(refusal(bad).find("version 5") != std::string::npos);
   }
   SECTION("an unknown precision code, even with a valid checksum") {
     std::vector<std::uint8_t> bad = good;
