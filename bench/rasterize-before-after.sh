@@ -8,7 +8,10 @@
 # command prints it) and median CPU seconds of the whole process (user +
 # system, GNU time), the min-max, the ratios after/before, and the load
 # average at the start and the end. The .lht files must be byte-identical:
-# the script compares them and says so.
+# the script compares them and says so. Across a change of the file format
+# (byte 8, the version) bytes cannot match; it then compares what
+# `lattice lht-info` reports of the contents (N_lp, N_iz, entries, object
+# hash) and says "vB -> vA" with the verdict.
 #   bench/rasterize-before-after.sh BEFORE AFTER [--runs N] [--threads T]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -57,6 +60,15 @@ for c in "${cases[@]}"; do
   b=$(med "${mb[@]}"); a=$(med "${ma[@]}"); bc=$(med "${cb[@]}"); ac=$(med "${ca[@]}")
   same=identical
   cmp -s "$out/before.lht" "$out/after.lht" || same=DIFFERENT
+  vb=$(od -An -tu1 -j8 -N1 "$out/before.lht" | tr -d ' '); va=$(od -An -tu1 -j8 -N1 "$out/after.lht" | tr -d ' ')
+  if [[ $vb != "$va" ]]; then
+    contents() { "$1" lht-info "$2" | grep -E '^(object hash|pairs|hits|entries):'; }
+    if [[ "$(contents "$before" "$out/before.lht")" == "$(contents "$after" "$out/after.lht")" ]]; then
+      same="v$vb -> v$va, same contents"
+    else
+      same="v$vb -> v$va, contents DIFFERENT"
+    fi
+  fi
   printf '%-22s %8s (%11s) %8s (%11s) %6.2f %5s (%9s) %5s (%9s) %6.2f %s\n' "$name" "$b" "$(range "${mb[@]}")" \
     "$a" "$(range "${ma[@]}")" "$(awk -v a="$a" -v b="$b" 'BEGIN {print a / b}')" "$bc" "$(range "${cb[@]}")" \
     "$ac" "$(range "${ca[@]}")" "$(awk -v a="$ac" -v b="$bc" 'BEGIN {print a / b}')" "$same"

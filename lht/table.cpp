@@ -38,15 +38,27 @@ LatticeHashTable::LatticeHashTable(const RasterHits& hits, LhtPrecision precisio
 }
 
 void LatticeHashTable::insert(const std::uint8_t* entry) {
-  const std::uint64_t key = loadKey(entry);
+  std::uint64_t key = loadKey(entry);
   if (key == 0) throw Error(ErrorKind::Input, "an LHT entry with the empty key (0,0,0)->(0,0,0)");
   if (entries_ + 1 >= capacity_) throw Error(ErrorKind::Input, "more LHT entries than the table was sized for");
-  std::uint64_t i = homeOf(key, capacity_);
-  // The slot's key is read in the cache line the entry is written to anyway.
-  for (std::uint64_t held; (held = loadKey(slot(i))) != 0; i = i + 1 == capacity_ ? 0 : i + 1)
+  std::uint8_t carried[32];  // the entry being placed: the new one, then each smaller one it displaces
+  static_assert(sizeof carried >= 16);
+  std::memcpy(carried, entry, stride_);
+  for (std::uint64_t i = homeOf(key, capacity_);; i = i + 1 == capacity_ ? 0 : i + 1) {
+    std::uint8_t* at = slot(i);
+    const std::uint64_t held = loadKey(at);
+    if (held > key) continue;
     if (held == key) throw Error(ErrorKind::Input, fmt::format("LHT key {:012x} stored twice", key));
-  std::memcpy(slot(i), entry, stride_);
-  ++entries_;
+    if (held == 0) {
+      std::memcpy(at, carried, stride_);
+      ++entries_;
+      return;
+    }
+    // A smaller key: ours takes its place and it moves on (its run so far
+    // holds only larger keys, ours now among them).
+    std::swap_ranges(carried, carried + stride_, at);
+    key = held;
+  }
 }
 
 LatticeHashTable::LatticeHashTable(LhtPrecision precision, std::vector<std::uint8_t> slotBytes, std::uint64_t capacity,
@@ -117,18 +129,25 @@ ProbeStats LatticeHashTable::probeStats() const {
     if (stats.displacementHistogram.size() <= d) stats.displacementHistogram.resize(static_cast<std::size_t>(d) + 1, 0);
     ++stats.displacementHistogram[static_cast<std::size_t>(d)];
   }
-  // A miss from home h reads the run of full slots from h and the empty one
-  // after it: walk backwards from an empty slot, counting the run.
-  std::uint64_t start = 0;
-  while (keyAt(start) != 0) ++start;  // an empty slot exists (checked)
-  std::uint64_t missSlots = 0, run = 0;
-  for (std::uint64_t n = 0; n < capacity_; ++n) {
-    const std::uint64_t i = (start + capacity_ - n % capacity_) % capacity_;
-    run = keyAt(i) == 0 ? 1 : run + 1;
-    missSlots += run;
-  }
   stats.meanHitSlots = entries_ ? double(hitSlots) / double(entries_) : 0.0;
-  stats.meanMissSlots = double(missSlots) / double(capacity_);
+  // Misses: absent keys whose coordinates lie in the held keys' ranges (as
+  // a render's do), from a fixed-seed xorshift; the slots each look-up reads.
+  std::uint64_t top[6] = {};  // per key byte, the largest value held
+  for (std::uint64_t i = 0; i < capacity_; ++i)
+    for (int b = 0; b < 6; ++b) top[b] = std::max(top[b], keyAt(i) >> 8 * b & 0xff);
+  std::uint64_t state = 0x2545F4914F6CDD1Dull, missSlots = 0, misses = 0;
+  for (int n = 0; n < kMissSamples * 4 && misses < kMissSamples; ++n) {
+    std::uint64_t key = 0;
+    for (int b = 0; b < 6; ++b) {
+      state ^= state << 13, state ^= state >> 7, state ^= state << 17;
+      key |= (state % (top[b] + 1)) << 8 * b;
+    }
+    if ((key & 0xffffff) == key >> 24 || findKey(key)) continue;
+    std::uint64_t i = homeOf(key, capacity_), slots = 1;
+    for (; keyAt(i) > key; i = i + 1 == capacity_ ? 0 : i + 1) ++slots;
+    missSlots += slots, ++misses;
+  }
+  stats.meanMissSlots = misses ? double(missSlots) / double(misses) : 0.0;
   return stats;
 }
 
