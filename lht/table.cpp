@@ -10,6 +10,10 @@
 
 namespace lattice::lht {
 
+namespace {
+constexpr int kPrefetchAhead = 16;  // hits; measured on the hair at f_lat 3 (docs/benchmarks.md, step 7)
+}  // namespace
+
 std::uint64_t LatticeHashTable::capacityFor(std::uint64_t entries, double maxLoad) {
   if (!(maxLoad > 0.0 && maxLoad < 1.0))
     throw Error(ErrorKind::Usage, fmt::format("the LHT load limit must lie strictly between 0 and 1, not {}", maxLoad));
@@ -31,7 +35,18 @@ LatticeHashTable::LatticeHashTable(LhtPrecision precision, std::uint64_t entries
 LatticeHashTable::LatticeHashTable(const RasterHits& hits, LhtPrecision precision, double maxLoad)
     : LatticeHashTable(precision, hits.size(), maxLoad) {
   std::vector<std::uint8_t> entry(entryBytes(precision));
+  // Homes are random: while one hit is placed, the home slot of the hit
+  // kPrefetchAhead places on is already being fetched (a no-op where the
+  // target has no prefetch, as the Cortex-M3).
+  auto ahead = hits.begin();
+  const auto fetch = [&] {
+    if (ahead == hits.end()) return;
+    __builtin_prefetch(slot(homeOf(keyOf(ahead->in, ahead->out), capacity_)), 1);
+    ++ahead;
+  };
+  for (int n = 0; n < kPrefetchAhead; ++n) fetch();
   for (const RasterHit& hit : hits) {
+    fetch();
     encodeEntry(hit, precision_, entry.data());
     insert(entry.data());
   }
