@@ -94,8 +94,10 @@ class LatticeHashTable {
   const std::uint8_t* findEntry(const LatticePoint& in, const LatticePoint& out) const {
     return in == out ? nullptr : findKey(keyOf(in, out));
   }
-  // The same for a key as one integer (keyOf); never the empty key 0.
-  const std::uint8_t* findKey(std::uint64_t key) const {
+  // The same for a key as one integer (keyOf); never the empty key 0. Out
+  // of line: inlined into the lattice leaf it measured no faster (Plate 7,
+  // 5 runs: 0.34 s against 0.33 s), and on its own it shows in a profile.
+  [[gnu::noinline]] const std::uint8_t* findKey(std::uint64_t key) const {
     if (capacity_ == 0) return nullptr;
     const std::uint8_t* base = slotView().data();
     for (std::uint64_t i = homeOf(key, capacity_);;) {

@@ -102,11 +102,11 @@ TEST_CASE("fixed point: the lattice leaf's per-pixel code has no floating point"
   WARN("skipped under the sanitizers: UBSan's float-cast and ASan's checks add code of their own to every function, "
        "so the scan would read instrumentation, not our arithmetic (the g++ build runs it)");
 #else
-  // The integer helpers the Fixed32 leaf calls per pixel: the entry
-  // decoders of every precision and the compressed form's look-up (their
-  // names do not say Fixed). The hashed form's look-up is inline
-  // (lht/table.hpp), so it is scanned inside the leaf's own functions.
-  const std::vector<std::string> integerPath = {"lht::decodePayloadIntegers(", "lht::decodePayloadFraction(",
+  // The integer helpers the Fixed32 leaf calls per pixel: the hashed and
+  // compressed forms' look-ups and the entry decoders of every precision
+  // (their names do not say Fixed).
+  const std::vector<std::string> integerPath = {"lht::LatticeHashTable::findKey(", "lht::decodePayloadIntegers(",
+                                                "lht::decodePayloadFraction(",
                                                 "lht::decodeOctahedral(", "lht::CompressedTable::findPayload("};
   const testing::FixedPointScan scan =
       testing::scanFixedPointCode(std::string(LATTICE_BINARY_DIR) + "/lht/liblattice_lht.a", integerPath);
