@@ -3,7 +3,10 @@
 //
 //   [0, 6)                 key: p_i (x, y, z), p_o (x, y, z), one byte each
 //   [6, entryBytes - 4)    payload: s and the normal, laid out per precision
-//   [entryBytes - 4, end)  index of the next entry of the chain (u32, little-endian)
+//   [entryBytes - 4, end)  index of the next entry of the chain (u32, little-endian):
+//                          the chained table of .lht versions 1-3 only; the
+//                          open-addressed table (lht/table.hpp) stores the
+//                          first entryBytes - 4 bytes
 //
 // Entries are packed byte arrays (no padding, multi-byte fields
 // little-endian), so a table's bytes in memory are its bytes in a .lht file.

@@ -9,7 +9,7 @@
 //   (the thesis chained into an overflow area; files of versions 1-3 hold
 //   that layout and are converted on reading, lht/chained_table.hpp). A
 //   look-up reads consecutive slots from the key's home until it meets the
-//   key or an empty slot, so a miss (three in four look-ups on the hair
+//   key, a smaller one or an empty slot (below), so a miss (three in four look-ups on the hair
 //   plates) costs one or two cache lines and no pointer chasing, and a slot
 //   needs no overflow index (4 bytes saved per slot).
 // * The key's six bytes are compared as one integer; an empty slot has the
