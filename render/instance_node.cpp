@@ -97,12 +97,7 @@ class InstanceNode final : public Primitive<T> {
 
 template <typename T>
 PrimitivePtr<T> makeInstance(SharedPrimitive<T> object, const Mat4d& objectToWorld, const Bounds<double>& worldBox) {
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      if (!std::isfinite(objectToWorld[c][r]))
-        throw Error(ErrorKind::Input, "instance transform has a non-finite entry: check the scene's transforms");
-  const std::string problem = conditionProblemFor<T>(objectToWorld);
-  if (!problem.empty()) throw Error(ErrorKind::Input, "instance: " + problem);
+  checkLeafTransform<T>(objectToWorld, "instance");
   return std::make_unique<InstanceNode<T>>(std::move(object), objectToWorld, worldBox);
 }
 
