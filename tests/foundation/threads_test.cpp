@@ -42,7 +42,7 @@ TEST_CASE("threads: a worker pool runs job after job on the same threads") {
   }
 }
 
-TEST_CASE("threads: the caller works while a pool job runs; errors reach wait() and stop the rest") {
+TEST_CASE("threads: the caller works while a pool job runs, and errors reach wait() and stop the rest") {
   WorkerPool pool(2);
   std::atomic<bool> release{false};
   std::atomic<int> released{0};
