@@ -10,9 +10,11 @@
 // misses hits 1..6 % inside the solid from kappa 1e5, double from 1e8, Q31.32
 // from 1e7..1e8. So scene files may use kappa <= 1e6 (double then keeps 10
 // digits), and --arith float refuses more than 1e4 when the scene is built.
+#include <cmath>
 #include <string>
 #include <type_traits>
 
+#include "foundation/error.hpp"
 #include "foundation/vec.hpp"
 
 namespace lattice {
@@ -48,6 +50,20 @@ std::string conditionProblem(const Mat4d& m, double limit, const std::string& ar
 template <typename T>
 std::string conditionProblemFor(const Mat4d& m) {
   return conditionProblem(m, maxTransformCondition<T>(), std::is_same_v<T, float> ? "float" : "");
+}
+
+// Refuses, as lattice::Error (Input) naming `what` ("quartic", "capsule",
+// "instance"), a transform a leaf cannot follow in T: a non-finite entry or a
+// condition number beyond T's limit. Every leaf refuses alike, so a scene
+// fails the same way in every arithmetic.
+template <typename T>
+void checkLeafTransform(const Mat4d& m, const std::string& what) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r]))
+        throw Error(ErrorKind::Input, what + " transform has a non-finite entry: check the scene's transforms");
+  const std::string problem = conditionProblemFor<T>(m);
+  if (!problem.empty()) throw Error(ErrorKind::Input, what + ": " + problem);
 }
 
 }  // namespace lattice

@@ -6,6 +6,9 @@
 #include <map>
 #include <numbers>
 #include <random>
+#include <tuple>
+#include <type_traits>
+#include <typeindex>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -14,8 +17,10 @@
 #include "lht/lattice_leaf.hpp"
 #include "lht/lattice_object.hpp"
 #include "lht/lattice_tables.hpp"
+#include "render/instance_node.hpp"
 #include "render/scene_loader.hpp"
 #include "foundation/error.hpp"
+#include "foundation/threads.hpp"
 
 namespace lattice::lht {
 
@@ -28,15 +33,24 @@ struct LatticeLoad {
   std::shared_ptr<const LatticeTables> tables;
 };
 
+// `instanced`: the leaf stands for many placements of one object (a scatter),
+// so the full ray trace builds that object once in object space and places it
+// by instance nodes (render/instance_node.hpp) instead of one world-space copy
+// per placement.
 class LatticeLeafDesc final : public LeafTemplate<LatticeLeafDesc> {
  public:
-  LatticeLeafDesc(LatticeDefinitionPtr definition, std::shared_ptr<const LatticeTables> tables)
-      : definition_(std::move(definition)), tables_(std::move(tables)) {}
+  LatticeLeafDesc(LatticeDefinitionPtr definition, std::shared_ptr<const LatticeTables> tables, bool instanced = false)
+      : definition_(std::move(definition)), tables_(std::move(tables)), instanced_(instanced) {}
 
   template <typename T>
   PrimitivePtr<T> buildAs(const Mat4d& toWorld, MaterialId material, const BuildOptions& options) const {
     // The full ray trace swaps the lattice for the object it was rasterized from.
-    if (options.fullRayTrace) return buildPrimitive<T>(definition_->object, toWorld, options, material);
+    if (options.fullRayTrace) {
+      if constexpr (std::is_floating_point_v<T>)
+        if (instanced_)
+          return makeInstance<T>(sharedObject<T>(material, options), toWorld, placedBounds(definition_->object, toWorld));
+      return buildPrimitive<T>(definition_->object, toWorld, options, material);
+    }
     return makeLatticeLeaf<T>(tables_->table(definition_), toWorld, material,
                               options.latticeShadows && definition_->shadows, tables_->lookupStats(definition_),
                               definition_->lookupUnder(tables_->settings()));
@@ -59,10 +73,25 @@ class LatticeLeafDesc final : public LeafTemplate<LatticeLeafDesc> {
   }
 
   const LatticeDefinitionPtr& definition() const { return definition_; }
+  bool instanced() const { return instanced_; }
 
  private:
+  // The object in its own space, built on first use for each arithmetic,
+  // material and build option and shared by every instance from then on.
+  template <typename T>
+  SharedPrimitive<T> sharedObject(MaterialId material, const BuildOptions& options) const {
+    const auto key = std::make_tuple(std::type_index(typeid(T)), material, options.latticeShadows);
+    std::lock_guard lock(objectsMutex_);
+    std::shared_ptr<const void>& slot = objects_[key];
+    if (!slot) slot = SharedPrimitive<T>(buildPrimitive<T>(definition_->object, Mat4d(1.0), options, material));
+    return std::static_pointer_cast<const Primitive<T>>(slot);
+  }
+
   LatticeDefinitionPtr definition_;
   std::shared_ptr<const LatticeTables> tables_;
+  bool instanced_;
+  mutable Mutex objectsMutex_;
+  mutable std::map<std::tuple<std::type_index, MaterialId, bool>, std::shared_ptr<const void>> objects_;
 };
 
 LatticeDefinitionPtr findDefinition(const toml::table& table, ParseContext& context, const LatticeLoad& load) {
@@ -165,7 +194,7 @@ NodeDesc parseScatterNode(const toml::table& table, ParseContext& context, const
   const auto seed = static_cast<std::uint64_t>(context.integer(table, "seed").value_or(1));
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> twist(0.0, 2.0 * std::numbers::pi);
-  const LeafDescPtr leaf = std::make_shared<LatticeLeafDesc>(def, load.tables);
+  const LeafDescPtr leaf = std::make_shared<LatticeLeafDesc>(def, load.tables, /*instanced=*/true);
   std::vector<NodeDesc> instances;
   instances.reserve(static_cast<std::size_t>(count));
   const std::string where = context.where(table);
@@ -232,7 +261,7 @@ NodeDesc rebind(const NodeDesc& node, const std::shared_ptr<const LatticeTables>
   copy.leaf = node.leaf;
   if (const auto* lattice = dynamic_cast<const LatticeLeafDesc*>(node.leaf.get())) {
     LeafDescPtr& leaf = rebound[node.leaf.get()];
-    if (!leaf) leaf = std::make_shared<LatticeLeafDesc>(lattice->definition(), tables);
+    if (!leaf) leaf = std::make_shared<LatticeLeafDesc>(lattice->definition(), tables, lattice->instanced());
     copy.leaf = leaf;
   }
   copy.children.reserve(node.children.size());

@@ -132,13 +132,7 @@ class CapsuleLeaf final : public Primitive<T> {
 template <typename T>
 PrimitivePtr<T> makeCapsuleLeaf(double radius, double length, const Mat4d& objectToWorld, const Bounds<T>& worldBox,
                                 MaterialId material) {
-  // The same refusals as a quartic leaf's, so a scene fails alike in every arithmetic.
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      if (!std::isfinite(objectToWorld[c][r]))
-        throw Error(ErrorKind::Input, "capsule transform has a non-finite entry: check the scene's transforms");
-  const std::string problem = conditionProblemFor<T>(objectToWorld);
-  if (!problem.empty()) throw Error(ErrorKind::Input, "capsule: " + problem);
+  checkLeafTransform<T>(objectToWorld, "capsule");  // as a quartic leaf refuses
   return std::make_unique<CapsuleLeaf<T>>(radius, length, objectToWorld, worldBox, material);
 }
 

@@ -192,13 +192,8 @@ class QuarticLeaf final : public Primitive<T> {
   QuarticLeaf(const QuarticPolynomial& f, const Bounds<double>& objectBounds, const Mat4d& objectToWorld,
               MaterialId material)
       : terms_(nonZeroTerms<T>(f)), material_(material) {
-    for (int c = 0; c < 4; ++c)
-      for (int r = 0; r < 4; ++r)
-        if (!std::isfinite(objectToWorld[c][r]))
-          throw Error(ErrorKind::Input, "quartic transform has a non-finite entry: check the scene's transforms");
+    checkLeafTransform<T>(objectToWorld, "quartic");
     glm::dmat3 linear(objectToWorld);
-    const std::string problem = conditionProblemFor<T>(objectToWorld);
-    if (!problem.empty()) throw Error(ErrorKind::Input, "quartic: " + problem);
     const Mat4d worldToObject = glm::inverse(objectToWorld);
     arithmetic_ = QuarticArithmetic<T>(worldToObject);
     normalMatrix_ = Mat3<T>(glm::inverseTranspose(linear));

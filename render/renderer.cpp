@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <utility>
 
 #include "foundation/error.hpp"
 #include "foundation/progress.hpp"
@@ -15,9 +16,10 @@ namespace {
 
 constexpr int kMaxImageSide = 16384;
 constexpr int kMaxThreads = 256;
-// Rows per thread in one band of row(): enough to amortise starting threads,
-// few enough that a streaming consumer sees rows early.
-constexpr int kBandRowsPerThread = 2;
+// Rows per thread in one band of row(): enough that the rows' uneven costs
+// even out before the band's last row (a thread idles until then), few
+// enough that a streaming consumer sees rows early.
+constexpr int kBandRowsPerThread = 8;
 
 int resolveThreads(int requested) {
   if (requested < 0 || requested > kMaxThreads)
@@ -113,20 +115,57 @@ void Renderer<T>::rowLinear(int y, std::span<Vec3<T>> out) const {
 }
 
 template <typename T>
-void Renderer<T>::renderBand(int y0) {
-  const int rows = std::min(height_ - y0, std::max(1, threads_ * kBandRowsPerThread));
+int Renderer<T>::bandRowsAt(int y0) const {
+  return std::min(height_ - y0, std::max(1, threads_ * kBandRowsPerThread));
+}
+
+template <typename T>
+void Renderer<T>::shadeRow(int y, Color18* out) const {
+  std::vector<Vec3<T>> linear(static_cast<std::size_t>(width_));
+  rowLinear(y, linear);
+  for (int x = 0; x < width_; ++x) {
+    const Vec3<T>& c = linear[static_cast<std::size_t>(x)];
+    out[x] = packColor18(quantizeLevel(c.r, 63), quantizeLevel(c.g, 63), quantizeLevel(c.b, 63));
+  }
+}
+
+// One thread (and the firmware): the band in the caller, row after row.
+template <typename T>
+void Renderer<T>::renderBandHere(int y0) {
+  const int rows = bandRowsAt(y0);
   band_.assign(static_cast<std::size_t>(rows) * static_cast<std::size_t>(width_), 0);
-  parallelRows(y0, y0 + rows, threads_, [&](int y) {
-    std::vector<Vec3<T>> linear(static_cast<std::size_t>(width_));
-    rowLinear(y, linear);
-    Color18* dst = band_.data() + static_cast<std::size_t>(y - y0) * static_cast<std::size_t>(width_);
-    for (int x = 0; x < width_; ++x) {
-      const Vec3<T>& c = linear[static_cast<std::size_t>(x)];
-      dst[x] = packColor18(quantizeLevel(c.r, 63), quantizeLevel(c.g, 63), quantizeLevel(c.b, 63));
-    }
-  });
+  for (int y = y0; y < y0 + rows; ++y) shadeRow(y, band_.data() + static_cast<std::size_t>(y - y0) * width_);
   bandStart_ = y0;
   bandRows_ = rows;
+}
+
+// Hands the band at y0 to the pool, rows one at a time from a shared counter
+// (which thread renders a row never changes its pixels), and returns.
+template <typename T>
+void Renderer<T>::startBandAhead(int y0) {
+  const int rows = bandRowsAt(y0);
+  ahead_.assign(static_cast<std::size_t>(rows) * static_cast<std::size_t>(width_), 0);
+  aheadStart_ = y0;
+  aheadRows_ = rows;
+  aheadNext_.store(y0);
+  Color18* out = ahead_.data();
+  const int y1 = y0 + rows;
+  pool_->start(
+      [this, out, y0, y1](unsigned) {
+        for (int y = aheadNext_.fetch_add(1); y < y1; y = aheadNext_.fetch_add(1))
+          shadeRow(y, out + static_cast<std::size_t>(y - y0) * width_);
+      },
+      [this, y1] { aheadNext_.store(y1); });
+}
+
+// Waits for the band under way and makes it the current one.
+template <typename T>
+void Renderer<T>::takeBandAhead() {
+  const int start = std::exchange(aheadStart_, -1);
+  pool_->wait();  // rethrows a worker's error
+  band_.swap(ahead_);
+  bandStart_ = start;
+  bandRows_ = aheadRows_;
 }
 
 template <typename T>
@@ -135,7 +174,24 @@ void Renderer<T>::row(int y, std::span<Color18> out) {
     throw Error(ErrorKind::Internal, fmt::format("row {} of {} asked with a buffer of {} for width {}", y, height_,
                                                  out.size(), width_));
   std::lock_guard lock(bandMutex_);
-  if (y < bandStart_ || y >= bandStart_ + bandRows_) renderBand(y);
+  if (y < bandStart_ || y >= bandStart_ + bandRows_) {
+    if (threads_ <= 1 || !kHasThreads) {
+      renderBandHere(y);
+    } else {
+      if (!pool_) pool_ = std::make_unique<WorkerPool>(static_cast<unsigned>(threads_));
+      // A band ahead that does not hold y (rows asked out of order, a second
+      // pass from the top) is finished and dropped.
+      if (aheadStart_ >= 0 && (y < aheadStart_ || y >= aheadStart_ + aheadRows_)) takeBandAhead();
+      if (y < bandStart_ || y >= bandStart_ + bandRows_) {
+        if (aheadStart_ < 0) startBandAhead(y);
+        takeBandAhead();
+      }
+      // The next band is rendered while the consumer reads this one; none
+      // past the last row.
+      const int next = bandStart_ + bandRows_;
+      if (next < height_) startBandAhead(next);
+    }
+  }
   const Color18* src = band_.data() + static_cast<std::size_t>(y - bandStart_) * static_cast<std::size_t>(width_);
   std::copy(src, src + width_, out.begin());
 }

@@ -70,8 +70,10 @@ class Renderer final : public RowSource18 {
   int height() const override { return height_; }
   int threads() const { return threads_; }
 
-  // Row y as 18-bit colour. Renders a band of rows on all threads at once and
-  // keeps it, so a consumer asking row by row still uses every core.
+  // Row y as 18-bit colour. Renders a band of rows at once and keeps it; with
+  // several threads a pool started once renders the following band while
+  // the consumer reads this one, so a consumer asking row by row keeps every
+  // core busy without starting threads per band.
   void row(int y, std::span<Color18> out) override;
 
   // Row y in full precision (linear, clamped to [0, 1]); single-threaded and
@@ -89,7 +91,11 @@ class Renderer final : public RowSource18 {
 
  private:
   Vec3<T> trace(const Ray<T>& ray, std::uint64_t& rays) const;
-  void renderBand(int y0);
+  int bandRowsAt(int y0) const;
+  void shadeRow(int y, Color18* out) const;
+  void renderBandHere(int y0);
+  void startBandAhead(int y0);
+  void takeBandAhead();
 
   int width_ = 0, height_ = 0, threads_ = 1;
   Camera<T> camera_;
@@ -102,11 +108,19 @@ class Renderer final : public RowSource18 {
   T offsetScale_{1};
   mutable std::atomic<std::uint64_t> rays_{0};
 
-  // The band cache of row().
+  // The band cache of row(): rows [bandStart_, bandStart_ + bandRows_). With
+  // more than one thread the pool renders the next band into ahead_ while the
+  // consumer reads this one (aheadStart_ >= 0 while it is under way).
   Mutex bandMutex_;
   int bandStart_ = -1;
   int bandRows_ = 0;
   std::vector<Color18> band_;
+  int aheadStart_ = -1;
+  int aheadRows_ = 0;
+  std::vector<Color18> ahead_;
+  std::atomic<int> aheadNext_{0};
+  // Last, so it is stopped (waiting for its band) before what it writes goes.
+  std::unique_ptr<WorkerPool> pool_;
 };
 
 #define LATTICE_DECLARE(T) extern template class Renderer<T>;

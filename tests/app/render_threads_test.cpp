@@ -1,0 +1,75 @@
+// The device path gives the same stream for any thread count: renderScene
+// (app/render_job.hpp) to the Tek 4125 with 1 to 4 threads, where the
+// renderer's pool renders the next band of rows while the quantizer reads
+// this one (render/renderer.cpp). Every quantizer mode reads the rows in
+// its own order (passes: twice from the top; sample: every Nth row first),
+// on a plain scene, a lattice scene and a scatter traced in full (instance
+// nodes), in double and float. The PNG of the emulated screen is compared
+// too.
+#include <catch2/catch.hpp>
+#include <fmt/format.h>
+
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "app/render_job.hpp"
+#include "tests/support/golden.hpp"
+#include "tests/support/temp_dir.hpp"
+
+using namespace lattice;
+
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+struct Output {
+  std::string stream, picture;
+};
+
+Output renderWith(const app::RenderJob& base, int threads, const testing::TempDir& dir) {
+  app::RenderJob job = base;
+  job.threads = threads;
+  job.stream = dir / fmt::format("t{}.tek", threads);
+  job.picture = dir / fmt::format("t{}.png", threads);
+  job.quiet = true;
+  app::renderScene(job);
+  return {slurp(job.stream), slurp(job.picture)};
+}
+
+}  // namespace
+
+TEST_CASE("render threads: the device stream is the same for 1 to 4 threads in every quantizer mode") {
+  testing::TempDir dir("render-threads");
+  struct Case {
+    const char* scene;
+    bool full;
+    const char* arithmetic;
+  };
+  for (const Case& c : {Case{"sphere-hole.toml", false, "double"}, Case{"hook.toml", false, "float"},
+                        Case{"fuzzy-sphere-1000.toml", true, "double"}, Case{"fuzzy-sphere-1000.toml", true, "float"}}) {
+    for (const auto mode : {quantize::PipelineMode::TwoPass, quantize::PipelineMode::Frame,
+                            quantize::PipelineMode::Sample}) {
+      INFO(c.scene << (c.full ? " --full " : " ") << c.arithmetic << ", mode " << quantize::pipelineModeName(mode));
+      app::RenderJob job;
+      job.scene = testing::sourcePath(fmt::format("scenes/{}", c.scene)).string();
+      job.device = "tek4125";
+      job.width = 72;
+      job.height = 61;  // not a multiple of any band
+      job.arithmetic = c.arithmetic;
+      job.fullRayTrace = c.full;
+      job.pipeline.mode = mode;
+      const Output one = renderWith(job, 1, dir);
+      REQUIRE(one.stream.size() > 1000);
+      for (int threads : {2, 3, 4}) {
+        INFO(threads << " threads");
+        const Output many = renderWith(job, threads, dir);
+        CHECK(many.stream == one.stream);
+        CHECK(many.picture == one.picture);
+      }
+    }
+  }
+}
