@@ -21,6 +21,12 @@ std::uint64_t pixels(int w, int h) { return static_cast<std::uint64_t>(w) * stat
 
 }  // namespace
 
+void shareOneAllocatorArena() {
+#ifdef M_ARENA_MAX
+  ::mallopt(M_ARENA_MAX, 1);
+#endif
+}
+
 MemoryPlanRequest renderBudgetRequest(std::uint64_t budget, int width, int height, const quantize::PipelineOptions& pipeline,
                                       bool modeChosenByUser, const devices::Device* device, bool writesPng) {
   MemoryPlanRequest request;

@@ -14,6 +14,13 @@
 
 namespace lattice::app {
 
+// Before any thread starts, under a budget: every thread allocates from the
+// one main allocator arena. A worker thread's own arena (glibc makes one per
+// thread) keeps what it freed resident; on Plate 6 the rasterizer's second
+// thread left 0.15-0.3 MiB there (docs/memory.md). Contention on the one
+// arena costs little: the render loops do not allocate.
+void shareOneAllocatorArena();
+
 // The request for a width x height picture, before anything is measured.
 // `device` is the device table's entry (its driver's and emulator's memory),
 // or nullptr for a truecolour picture; `writesPng`: a picture is saved (-o).

@@ -139,7 +139,7 @@ devices::DriverStats renderToDevice(Renderer<T>& renderer, const RenderJob& job,
 }
 
 template <typename T>
-RenderResult renderWith(const lht::SceneWithLattices& loaded, const RenderJob& job) {
+RenderResult renderWith(lht::SceneWithLattices& loaded, const RenderJob& job) {
   const auto start = std::chrono::steady_clock::now();
   quantize::PipelineOptions pipeline = job.pipeline;
   std::optional<devices::Device> device;
@@ -157,6 +157,11 @@ RenderResult renderWith(const lht::SceneWithLattices& loaded, const RenderJob& j
     bound = lht::withTableSettings(loaded, tables);
   }
   Renderer<T> renderer(bound ? bound->scene : loaded.scene, settings);
+  // The renderer holds its own tree now; the scene's node descriptions (a
+  // scatter's are 262 B an instance, and a budget's copy doubles them) go
+  // before the output's buffers come (docs/memory.md).
+  loaded.scene.root = NodeDesc{};
+  if (bound) bound->scene.root = NodeDesc{};
   if (budget) {
     const MemoryPlan plan = planBuiltRender(*budget);
     pipeline.mode = plan.mode;
@@ -206,6 +211,7 @@ void checkRenderJob(const RenderJob& job) {
 
 RenderResult renderScene(const RenderJob& job) {
   checkRenderJob(job);
+  if (job.memoryBudget) shareOneAllocatorArena();  // before the rasterizer's threads
   // Scenes may hold [[lattices]]; their tables are built when the renderer
   // is, under these settings.
   lht::TableSettings tables;
@@ -215,7 +221,7 @@ RenderResult renderScene(const RenderJob& job) {
   if (job.onDemandCacheBytes) tables.onDemandCacheBytes = *job.onDemandCacheBytes;
   if (job.lhtStats) tables.stats = std::make_shared<lht::LookupStatsBook>();
   tables.threads = static_cast<unsigned>(job.threads);  // one thread means one thread throughout
-  const lht::SceneWithLattices loaded = lht::loadSceneWithLattices(job.scene, tables);
+  lht::SceneWithLattices loaded = lht::loadSceneWithLattices(job.scene, tables);
   RenderResult result =
       withArithmetic(job.arithmetic, [&](auto type) { return renderWith<typename decltype(type)::type>(loaded, job); });
   if (tables.stats) {
