@@ -3,5 +3,7 @@
 # Extra arguments go to `cmake --build` (e.g. --target lattice).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DLATTICE_WERROR=ON >/dev/null
+source scripts/cmake-args.sh
+lattice_cmake_args build
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DLATTICE_WERROR=ON "${cmake_args[@]}" >/dev/null
 cmake --build build -j "$(nproc)" "$@"

@@ -11,10 +11,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 command -v clang++-14 >/dev/null ||
   { echo "check-sanitizers.sh: clang++-14 missing; run scripts/setup.sh --fuzz" >&2; exit 2; }
-launcher=()
-if [[ -n ${CCACHE_DIR:-} ]] && command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+source scripts/cmake-args.sh
+lattice_cmake_args build-asan
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++-14 -DLATTICE_SANITIZE=ON \
-  -DLATTICE_WERROR=OFF -DLATTICE_BUILD_BENCH=OFF "${launcher[@]}" >/dev/null
+  -DLATTICE_WERROR=OFF -DLATTICE_BUILD_BENCH=OFF "${cmake_args[@]}" >/dev/null
 cmake --build build-asan -j "$(nproc)"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:strict_string_checks=1:check_initialization_order=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}

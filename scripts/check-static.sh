@@ -9,7 +9,9 @@ cd "$(dirname "$0")/.."
 root=$(pwd)
 dynamic=build/app/lattice
 [[ -x $dynamic ]] || { echo "check-static.sh: $dynamic is missing; run scripts/build.sh first" >&2; exit 2; }
-cmake -S . -B build-static -DCMAKE_BUILD_TYPE=Release -DLATTICE_WERROR=ON -DLATTICE_STATIC=ON \
+source scripts/cmake-args.sh
+lattice_cmake_args build-static
+cmake -S . -B build-static "${cmake_args[@]}" -DCMAKE_BUILD_TYPE=Release -DLATTICE_WERROR=ON -DLATTICE_STATIC=ON \
   -DLATTICE_BUILD_TESTS=OFF -DLATTICE_BUILD_BENCH=OFF >/dev/null
 cmake --build build-static -j "$(nproc)" --target lattice
 static=build-static/app/lattice

@@ -36,11 +36,11 @@ fi
 if [[ -n $only ]]; then targets=("$only"); else targets=("${all[@]}"); fi
 
 command -v clang++-14 >/dev/null || { echo "fuzz.sh: clang++-14 missing; run scripts/setup.sh --fuzz" >&2; exit 2; }
-launcher=()
-command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+source scripts/cmake-args.sh
+lattice_cmake_args build-fuzz
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
   -DLATTICE_FUZZ=ON -DLATTICE_BUILD_TESTS=OFF -DLATTICE_BUILD_BENCH=OFF -DLATTICE_WITH_LIBUSB=OFF \
-  "${launcher[@]}" >/dev/null
+  "${cmake_args[@]}" >/dev/null
 cmake --build build-fuzz -j "$(nproc)" --target lattice $(printf 'fuzz_%s ' "${targets[@]}")
 bash scripts/fuzz-seeds.sh build-fuzz/seeds build-fuzz/app/lattice
 

@@ -11,7 +11,7 @@
 # firmware tests (scripts/test.sh asks for them too; docs/firmware.md).
 set -euo pipefail
 
-packages=(cmake g++ make pkg-config git catch2 libglm-dev libpng-dev libusb-1.0-0-dev
+packages=(cmake ninja-build g++ make pkg-config git catch2 libglm-dev libpng-dev libusb-1.0-0-dev
           libtomlplusplus-dev libcli11-dev libfmt-dev gnuplot-nox)
 for option in "$@"; do
   case $option in
