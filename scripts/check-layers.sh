@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 # Bottom to top. tests/, bench/ and fuzz/ sit above all of them. firmware/
 # (docs/firmware.md) is a top layer beside app/: it may use the layers up to
 # devices/ and nothing else (no io/, no app/), and nothing includes it.
-layers=(foundation render lht exporter quantize devices io app firmware)
+layers=(foundation render lht loader exporter quantize devices io app firmware)
 declare -A ceiling=([firmware]=devices)
 
 rank() {
