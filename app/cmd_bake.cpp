@@ -14,7 +14,7 @@
 #include "app/pipeline_args.hpp"
 #include "app/scene_bake.hpp"
 #include "devices/device_table.hpp"
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "foundation/error.hpp"
 
 namespace lattice::app {

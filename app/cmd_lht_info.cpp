@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 #include "app/commands.hpp"
-#include "lht/boundary_index.hpp"
-#include "lht/lht_file.hpp"
+#include "lht/grid/boundary_index.hpp"
+#include "lht/file/lht_file.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 
 #include "app/commands.hpp"
 #include "foundation/error.hpp"
-#include "lht/table_build.hpp"
+#include "loader/table_build.hpp"
 
 namespace {
 

@@ -16,9 +16,9 @@
 #include "devices/apollo_sim/apollo_profile.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/arithmetics.hpp"
-#include "foundation/resident_memory.hpp"
-#include "lht/lattice_lookup.hpp"
-#include "lht/lht_form.hpp"
+#include "foundation/system/resident_memory.hpp"
+#include "lht/leaf/lookup_mode.hpp"
+#include "lht/table/lht_form.hpp"
 
 namespace lattice::app {
 namespace {

@@ -12,7 +12,7 @@
 #include "app/serial_args.hpp"
 #include "devices/device_table.hpp"
 #include "devices/work_budget.hpp"
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "io/serial_sink.hpp"
 #include "io/stream_sender.hpp"
 #include "foundation/error.hpp"

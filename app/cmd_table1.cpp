@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "app/commands.hpp"
-#include "lht/table1.hpp"
+#include "lht/raster/thesis_table1.hpp"
 
 namespace {
 

@@ -4,9 +4,9 @@
 
 #include <algorithm>
 
-#include "lht/table.hpp"
+#include "lht/table/hash_table.hpp"
 #include "foundation/error.hpp"
-#include "foundation/resident_memory.hpp"
+#include "foundation/system/resident_memory.hpp"
 
 namespace lattice::app {
 

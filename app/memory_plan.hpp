@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "lht/lht_precision.hpp"
+#include "lht/table/lht_precision.hpp"
 #include "quantize/run_pipeline.hpp"
 
 namespace lattice::app {

@@ -9,8 +9,8 @@
 
 #include "app/memory_plan.hpp"
 #include "devices/device.hpp"
-#include "lht/lattice_definition.hpp"
-#include "foundation/resident_memory.hpp"
+#include "loader/lattice_definition.hpp"
+#include "foundation/system/resident_memory.hpp"
 
 namespace lattice::app {
 

@@ -11,15 +11,15 @@
 #include "app/render_budget.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/arithmetics.hpp"
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "foundation/error.hpp"
 #include "foundation/progress.hpp"
 #include "io/png.hpp"
 #include "io/serial_sink.hpp"
 #include "io/stdout_sink.hpp"
 #include "io/tee_sink.hpp"
-#include "lht/lattice_scene.hpp"
-#include "lht/lookup_stats.hpp"
+#include "loader/lattice_scene_loader.hpp"
+#include "lht/leaf/lookup_stats.hpp"
 #include "render/renderer.hpp"
 
 namespace lattice::app {

@@ -18,9 +18,9 @@
 
 #include "devices/device.hpp"
 #include "io/serial_options.hpp"
-#include "lht/lattice_lookup.hpp"
-#include "lht/lht_form.hpp"
-#include "lht/lht_precision.hpp"
+#include "lht/leaf/lookup_mode.hpp"
+#include "lht/table/lht_form.hpp"
+#include "lht/table/lht_precision.hpp"
 #include "quantize/run_pipeline.hpp"
 
 namespace lattice::app {

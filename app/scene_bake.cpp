@@ -7,7 +7,7 @@
 #include <map>
 #include <set>
 
-#include "render/scene_baker.hpp"
+#include "render/scene/scene_baker.hpp"
 
 namespace lattice::app {
 namespace {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "lht/lattice_scene.hpp"
+#include "loader/lattice_scene_loader.hpp"
 #include "quantize/run_pipeline.hpp"
 
 namespace lattice::app {

@@ -10,23 +10,14 @@
 # be identical: the script compares them and says so.
 #   bench/before-after.sh BEFORE AFTER [--runs N] [--threads T] [--size WxH]
 set -euo pipefail
-root="$(cd "$(dirname "$0")/.." && pwd)"
-[[ $# -ge 2 ]] || { sed -n '2,12p' "$0"; exit 2; }
+source "$(dirname "$0")/lib.sh"
+[[ $# -ge 2 ]] || { bench_help; exit 2; }
 before="$1"; after="$2"; shift 2
 runs=5; threads=1; size=256x256
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --runs) runs="$2"; shift 2 ;;
-    --threads) threads="$2"; shift 2 ;;
-    --size) size="$2"; shift 2 ;;
-    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
-    *) echo "before-after.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
-  esac
-done
-for b in "$before" "$after"; do [[ -x $b ]] || { echo "before-after.sh: $b is not an executable" >&2; exit 2; }; done
+bench_parse --runs=runs --threads=threads --size=size -- "$@"
+for b in "$before" "$after"; do [[ -x $b ]] || bench_die "$b is not an executable"; done
 w=${size%x*}; h=${size#*x}
-out="$(mktemp -d)"
-trap 'rm -rf "$out"' EXIT
+bench_workdir out
 cases=(
   "fuzzy-sphere-1000 double:$root/scenes/fuzzy-sphere-1000.toml --arith double"
   "fuzzy-sphere-1000 --full:$root/scenes/fuzzy-sphere-1000.toml --full"
@@ -35,7 +26,7 @@ cases=(
   "thistle float:$root/scenes/thistle.toml --arith float"
   "sphere-hole tek4125:$root/scenes/sphere-hole.toml --device tek4125 --stream $out/STREAM"
 )
-echo "# $(date -u +%F' '%H:%M) UTC, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), load $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "# $(date -u +%F' '%H:%M) UTC, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), load $(bench_loadavg)"
 echo "# ${size}, --threads $threads, $runs alternating runs each; CPU seconds (user + system) of the whole process"
 printf '%-28s %18s %18s %8s %s\n' case before after ratio output
 for c in "${cases[@]}"; do
@@ -51,13 +42,11 @@ for c in "${cases[@]}"; do
       if [[ $side == before ]]; then tb+=("$t"); else ta+=("$t"); fi
     done
   done
-  med() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
-  range() { printf '%s\n' "$@" | sort -g | sed -n '1p;$p' | paste -sd- ; }
-  mb=$(med "${tb[@]}"); ma=$(med "${ta[@]}")
+  mb=$(bench_median "${tb[@]}"); ma=$(bench_median "${ta[@]}")
   same=identical
   cmp -s "$out/before.png" "$out/after.png" || same=DIFFERENT
   if [[ -f $out/before.stream ]]; then cmp -s "$out/before.stream" "$out/after.stream" || same="stream DIFFERENT"; rm -f "$out"/*.stream; fi
-  printf '%-28s %8s (%s) %8s (%s) %8.3f %s\n' "$name" "$mb" "$(range "${tb[@]}")" "$ma" "$(range "${ta[@]}")" \
+  printf '%-28s %8s (%s) %8s (%s) %8.3f %s\n' "$name" "$mb" "$(bench_range "${tb[@]}")" "$ma" "$(bench_range "${ta[@]}")" \
     "$(awk -v a="$ma" -v b="$mb" 'BEGIN {print a / b}')" "$same"
 done
-echo "# load at the end $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "# load at the end $(bench_loadavg)"

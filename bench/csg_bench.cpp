@@ -13,8 +13,8 @@
 #include <time.h>
 #include <vector>
 
-#include "render/csg.hpp"
-#include "render/shapes.hpp"
+#include "render/shapes/csg.hpp"
+#include "render/shapes/quartic_presets.hpp"
 
 using namespace lattice;
 

@@ -20,9 +20,9 @@
 #include <ctime>
 #include <vector>
 
-#include "render/csg.hpp"
-#include "render/quartic.hpp"
-#include "render/shapes.hpp"
+#include "render/shapes/csg.hpp"
+#include "render/shapes/quartic.hpp"
+#include "render/shapes/quartic_presets.hpp"
 
 using namespace lattice;
 

@@ -20,21 +20,14 @@
 #   4027-random    10^6 random bytes (seeded)
 set -euo pipefail
 
-root=$(cd "$(dirname "$0")/.." && pwd)
+source "$(dirname "$0")/lib.sh"
 build="$root/build"
 bytes=1000000
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --build) build=$2; shift 2 ;;
-    --bytes) bytes=$2; shift 2 ;;
-    *) echo "usage: $0 [--build DIR] [--bytes N]" >&2; exit 2 ;;
-  esac
-done
+bench_parse --build=build --bytes=bytes -- "$@"
 lattice="$build/app/lattice"
-[[ -x $lattice ]] || { echo "no $lattice: build the lattice target first" >&2; exit 2; }
-[[ -x /usr/bin/time ]] || { echo "needs GNU time: bash scripts/setup.sh --bench" >&2; exit 2; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+bench_need_built "$build" lattice
+bench_need_time
+bench_workdir work
 
 python3 - "$work" "$bytes" <<'PY'
 import random, sys
@@ -84,4 +77,4 @@ for f in rr-fill page-clear gs-vectors lg-vectors panel-fill panel-points raster
   read -r seconds peak < <(tail -n 1 "$work/time")
   printf '%-14s %10s %9s %11s %5s\n' "$f" "$(stat -c %s "$work/$f")" "$seconds" "$peak" "$code"
 done
-echo "load average: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "load average: $(bench_loadavg)"

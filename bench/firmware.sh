@@ -19,16 +19,10 @@
 # host's `lattice render --arith fixed --threads 1 --histogram small`.
 # Tunables: FIRMWARE_CPI, FIRMWARE_TIMEOUT (QEMU seconds, default 7200).
 set -euo pipefail
-cd "$(dirname "$0")/.."
+source "$(dirname "$0")/lib.sh"
+cd "$root"
 size=512x512 scene=scenes/fuzzy-sphere-1000.toml
-while (($#)); do
-  case $1 in
-    --size) size=$2; shift 2 ;;
-    --scene) scene=$2; shift 2 ;;
-    -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    *) echo "bench/firmware.sh: unknown option $1" >&2; exit 2 ;;
-  esac
-done
+bench_parse --size=size --scene=scene -- "$@"
 cpi=${FIRMWARE_CPI:-1.5}
 out=out/bench-firmware
 name="$(basename "$scene" .toml)-$size"

@@ -8,12 +8,12 @@
 # mounts a 16 KiB tmpfs and runs only as root; it is skipped otherwise.
 set -euo pipefail
 
-root=$(cd "$(dirname "$0")/.." && pwd)
+source "$(dirname "$0")/lib.sh"
 build="$root/build"
-if [[ "${1:-}" == "--build" ]]; then build=$2; shift 2; fi
+bench_parse --build=build -- "$@"
 L="$build/app/lattice"
-[[ -x $L ]] || { echo "no $L: build the lattice target first" >&2; exit 2; }
-[[ -x /usr/bin/time ]] || { echo "needs GNU time: bash scripts/setup.sh --bench" >&2; exit 2; }
+bench_need_built "$build" lattice
+bench_need_time
 w=$(mktemp -d)
 cleanup() { mountpoint -q "$w/full" 2>/dev/null && umount "$w/full"; rm -rf "$w"; }
 trap cleanup EXIT
@@ -115,4 +115,4 @@ for i in range(40):
 print(f"| 40 SIGTERMs during emulate ({killed} landed) | | | | temporaries left: {left} |")
 PY
 echo
-echo "load average: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "load average: $(bench_loadavg)"

@@ -9,37 +9,24 @@
 # (bench/trade_bench). The table is cached per f_lat (the first, untimed,
 # render rasterizes it); the load average is printed at the start and end.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
+source "$(dirname "$0")/lib.sh"
 build="$root/build"
 runs=5
 size="512x512"
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --build) build=$2; shift 2 ;;
-    --runs) runs=$2; shift 2 ;;
-    --size) size=$2; shift 2 ;;
-    -h|--help) sed -n 2,10p "$0"; exit 0 ;;
-    *) echo "lattice-lookup.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
-  esac
-done
+bench_parse --build=build --runs=runs --size=size -- "$@"
 lattice="$build/app/lattice"
 metric="$build/bench/trade_bench"
-for exe in "$lattice" "$metric"; do
-  [[ -x $exe ]] || { echo "lattice-lookup.sh: $exe is missing; build it: cmake --build $build --target lattice trade_bench" >&2; exit 2; }
-done
-[[ -x /usr/bin/time ]] || { echo "lattice-lookup.sh: /usr/bin/time is missing (Debian package 'time')" >&2; exit 2; }
-[[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "lattice-lookup.sh: --runs takes a positive integer" >&2; exit 2; }
-[[ $size =~ ^([1-9][0-9]*)x([1-9][0-9]*)$ ]] || { echo "lattice-lookup.sh: --size takes WxH, e.g. 256x256" >&2; exit 2; }
-sizeArgs=(--width "${BASH_REMATCH[1]}" --height "${BASH_REMATCH[2]}")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+bench_need_built "$build" lattice trade_bench
+bench_need_time
+bench_positive --runs "$runs"
+bench_size "$size"
+bench_workdir work
 render() {  # scene-file png args... -> cpu seconds
   /usr/bin/time -f "%U %S" -o "$work/time" "$lattice" render "$1" -o "$2" "${@:3}" --threads 1 --quiet \
-    "${sizeArgs[@]}" >"$work/log" 2>&1 || { echo "lattice-lookup.sh: render $* failed:" >&2; cat "$work/log" >&2; exit 4; }
+    "${bench_size_args[@]}" >"$work/log" 2>&1 || { echo "lattice-lookup.sh: render $* failed:" >&2; cat "$work/log" >&2; exit 4; }
   awk '{ printf "%.3f\n", $1 + $2 }' "$work/time"
 }
-median() { sort -g | awk '{ a[NR] = $1 } END { printf "%.3f", (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
-echo "load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "load average at start: $(bench_loadavg)"
 echo
 echo "| plate | f_lat | look-up | CPU s (median of $runs) | x thesis f_lat 1 | PSNR dB | SSIM |"
 echo "|---|---|---|---|---|---|---|"
@@ -59,7 +46,8 @@ for plate in "6 fuzzy-sphere-1000" "7 fuzzy-sphere-5000"; do
       for lookup in thesis blend; do times[$lookup]+="$(render "$scene" "$work/$lookup.png" --lattice-lookup "$lookup") "; done
     done
     for lookup in thesis blend; do
-      t=$(tr ' ' '\n' <<<"${times[$lookup]}" | grep . | median)
+      read -r -a runTimes <<<"${times[$lookup]}"
+      t=$(bench_median -f %.3f "${runTimes[@]}")
       [[ -z $base ]] && base=$t
       read -r psnr _ ssim < <("$metric" "$ref" "$work/$lookup.png")
       echo "| $1 | $f | $lookup | $t | $(awk -v a="$t" -v b="$base" 'BEGIN { printf "%.2f", a / b }') | $psnr | $ssim |"
@@ -67,4 +55,4 @@ for plate in "6 fuzzy-sphere-1000" "7 fuzzy-sphere-5000"; do
   done
 done
 echo
-echo "load average at end: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "load average at end: $(bench_loadavg)"

@@ -10,9 +10,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "lht/lattice_scene.hpp"
-#include "lht/table_build.hpp"
-#include "lht/table1.hpp"
+#include "loader/lattice_scene_loader.hpp"
+#include "loader/table_build.hpp"
+#include "lht/raster/thesis_table1.hpp"
 #include "render/renderer.hpp"
 #include "foundation/error.hpp"
 

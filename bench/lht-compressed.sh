@@ -16,30 +16,18 @@
 # shared; alternating keeps every variant under the same load.
 set -euo pipefail
 
-root=$(cd "$(dirname "$0")/.." && pwd)
+source "$(dirname "$0")/lib.sh"
 build="$root/build"
 runs=7
 table1=""
 before=""
 out=""
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --build) build=$2; shift 2 ;;
-    --runs) runs=$2; shift 2 ;;
-    --table1) table1="--table1"; shift ;;
-    --before) before=$2; shift 2 ;;
-    --out) out=$2; shift 2 ;;
-    -h|--help) sed -n 2,17p "$0"; exit 0 ;;
-    *) echo "lht-compressed.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
-  esac
-done
+bench_parse --build=build --runs=runs --table1:table1=--table1 --before=before --out=out -- "$@"
 lattice="$build/app/lattice"
 bench="$build/bench/lht_form_bench"
-for exe in "$lattice" "$bench"; do
-  [[ -x $exe ]] || { echo "lht-compressed.sh: $exe is missing; build it: cmake --build $build --target lattice lht_form_bench" >&2; exit 2; }
-done
-[[ -x /usr/bin/time ]] || { echo "lht-compressed.sh: /usr/bin/time is missing (Debian package 'time')" >&2; exit 2; }
-[[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "lht-compressed.sh: --runs takes a positive integer" >&2; exit 2; }
+bench_need_built "$build" lattice lht_form_bench
+bench_need_time
+bench_positive --runs "$runs"
 out=${out:-$build/lht-compressed}
 mkdir -p "$out"
 
@@ -47,7 +35,7 @@ echo "## Bytes per entry and look-up speed (lht_form_bench)"
 (cd "$root" && "$bench" --runs "$runs" $table1)
 
 echo
-echo "## Whole renders, --threads 1, $runs runs alternating (load average before: $(cut -d' ' -f1-3 /proc/loadavg))"
+echo "## Whole renders, --threads 1, $runs runs alternating (load average before: $(bench_loadavg))"
 echo
 echo "| scene | f_lat | variant | median CPU s | peak RSS KiB |"
 echo "|---|---:|---|---:|---:|"
@@ -88,4 +76,4 @@ PY
   done
 done
 echo
-echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "load average after: $(bench_loadavg)"

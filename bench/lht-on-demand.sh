@@ -15,30 +15,20 @@
 # the two forms are compared byte for byte.
 set -euo pipefail
 
-root=$(cd "$(dirname "$0")/.." && pwd)
+source "$(dirname "$0")/lib.sh"
 build="$root/build"
 runs=3
 flats="1 2 3 4"
 threads=2
 out=""
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --build) build=$2; shift 2 ;;
-    --runs) runs=$2; shift 2 ;;
-    --flat) flats=$2; shift 2 ;;
-    --threads) threads=$2; shift 2 ;;
-    --out) out=$2; shift 2 ;;
-    -h|--help) sed -n 2,15p "$0"; exit 0 ;;
-    *) echo "lht-on-demand.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
-  esac
-done
+bench_parse --build=build --runs=runs --flat=flats --threads=threads --out=out -- "$@"
 lattice="$build/app/lattice"
-[[ -x $lattice ]] || { echo "lht-on-demand.sh: $lattice is missing; build it: cmake --build $build --target lattice" >&2; exit 2; }
-[[ -x /usr/bin/time ]] || { echo "lht-on-demand.sh: /usr/bin/time is missing (Debian package 'time')" >&2; exit 2; }
+bench_need_built "$build" lattice
+bench_need_time
 out=${out:-$build/lht-on-demand}
 mkdir -p "$out"
 
-echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg); $runs runs alternating, --threads $threads"
+echo "load average before: $(bench_loadavg); $runs runs alternating, --threads $threads"
 echo
 echo "| plate | f_lat | form | first pixel wall s | total wall s | total CPU s | peak RSS KiB | entries |"
 echo "|---|---:|---|---:|---:|---:|---:|---|"
@@ -84,4 +74,4 @@ PY
   done
 done
 echo
-echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "load average after: $(bench_loadavg)"

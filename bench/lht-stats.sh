@@ -12,21 +12,13 @@
 # (tests/lht/lookup_stats_test.cpp), so the renders use every core.
 set -euo pipefail
 
-root=$(cd "$(dirname "$0")/.." && pwd)
+source "$(dirname "$0")/lib.sh"
 build="$root/build"
 flats="1 2 3 4"
 out=""
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --build) build=$2; shift 2 ;;
-    --flat) flats=$2; shift 2 ;;
-    --out) out=$2; shift 2 ;;
-    -h|--help) sed -n 2,12p "$0"; exit 0 ;;
-    *) echo "lht-stats.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
-  esac
-done
+bench_parse --build=build --flat=flats --out=out -- "$@"
 lattice="$build/app/lattice"
-[[ -x $lattice ]] || { echo "lht-stats.sh: $lattice is missing; build it: cmake --build $build --target lattice" >&2; exit 2; }
+bench_need_built "$build" lattice
 out=${out:-$build/lht-stats}
 mkdir -p "$out"
 

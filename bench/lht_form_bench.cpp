@@ -12,7 +12,7 @@
 // * Look-ups: M pairs as a render asks them: random lines through the
 //   lattice box (a random point inside, a random direction), clipped to the
 //   box, both ends rounded to the nearest grid point, asked both ways, as
-//   the lattice leaf does (lht/lattice_leaf.cpp). Fixed seed.
+//   the lattice leaf does (lht/leaf/lattice_leaf.cpp). Fixed seed.
 // * Timing: the same look-ups through LhtLookup (what the leaf calls), the two
 //   forms alternating, N runs each; the median ns per look-up of each, and
 //   their ratio. The load average is printed before and after: the machine
@@ -27,10 +27,10 @@
 #include <string>
 
 #include "foundation/error.hpp"
-#include "lht/lattice_scene.hpp"
-#include "lht/lht_lookup.hpp"
-#include "lht/table1.hpp"
-#include "lht/table_build.hpp"
+#include "loader/lattice_scene_loader.hpp"
+#include "lht/leaf/table_lookup.hpp"
+#include "lht/raster/thesis_table1.hpp"
+#include "loader/table_build.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;

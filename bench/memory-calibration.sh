@@ -6,23 +6,16 @@
 # slack would mean a budget between the two could be broken.
 #   bench/memory-calibration.sh [--build DIR]...   (default: build and build-static)
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
+source "$(dirname "$0")/lib.sh"
 builds=()
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --build) builds+=("$2"); shift 2 ;;
-    -h|--help) sed -n 2,7p "$0"; exit 0 ;;
-    *) echo "memory-calibration.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
-  esac
-done
+bench_parse --build+=builds -- "$@"
 ((${#builds[@]})) || builds=("$root/build" "$root/build-static")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+bench_workdir work
 outputs=("--device tek4125 --stream $work/x.tek" "--device tek4125 --mode passes --stream $work/x.tek"
   "--device tek4125 --stream $work/x.tek -o $work/x.png" "--device tek4027 --stream $work/y.tek"
   "-o $work/t.png" "--device apollo -o $work/a.png")
 for build in "${builds[@]}"; do
-  [[ -x $build/app/lattice ]] || { echo "memory-calibration.sh: $build/app/lattice is missing" >&2; exit 2; }
+  bench_need_built "$build" lattice
   for scene in "$root"/scenes/*.toml; do
     for output in "${outputs[@]}"; do
       # shellcheck disable=SC2086 # the output flags are words on purpose

@@ -21,33 +21,23 @@
 #                the plan the renderer chooses, or its refusal (exit 8)
 set -euo pipefail
 
-root=$(cd "$(dirname "$0")/.." && pwd)
+source "$(dirname "$0")/lib.sh"
 build="$root/build"
 staticBuild="$root/build-static"
 runs=3
 scene="$root/scenes/fuzzy-sphere-1000.toml"
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --build) build=$2; shift 2 ;;
-    --static-build) staticBuild=$2; shift 2 ;;
-    --runs) runs=$2; shift 2 ;;
-    --scene) scene=$2; shift 2 ;;
-    -h|--help) sed -n 2,23p "$0"; exit 0 ;;
-    *) echo "memory.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
-  esac
-done
-[[ -x $build/app/lattice ]] || { echo "memory.sh: $build/app/lattice is missing; build it: cmake --build $build --target lattice" >&2; exit 2; }
+bench_parse --build=build --static-build=staticBuild --runs=runs --scene=scene -- "$@"
+bench_need_built "$build" lattice
 if [[ ! -x $staticBuild/app/lattice ]]; then
   echo "memory.sh: building the static lattice in $staticBuild (a few minutes)" >&2
   cmake -S "$root" -B "$staticBuild" -DCMAKE_BUILD_TYPE=Release -DLATTICE_STATIC=ON -DLATTICE_BUILD_TESTS=OFF \
     -DLATTICE_BUILD_BENCH=OFF >/dev/null
   cmake --build "$staticBuild" -j "$(nproc)" --target lattice >/dev/null
 fi
-[[ -x /usr/bin/time ]] || { echo "memory.sh: /usr/bin/time is missing (Debian package 'time')" >&2; exit 2; }
-[[ -f $scene ]] || { echo "memory.sh: $scene does not exist" >&2; exit 2; }
-[[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "memory.sh: --runs takes a positive integer" >&2; exit 2; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+bench_need_time
+[[ -f $scene ]] || bench_die "$scene does not exist"
+bench_positive --runs "$runs"
+bench_workdir work
 
 # The same scene with its lattice table cached in $work.
 sed -E 's/^oversample *= *([0-9.]+)/oversample = \1\ncache = "hair.lht"/' "$scene" >"$work/cached.toml"

@@ -23,8 +23,8 @@
 # Peers: povray, libembree-dev (scripts/setup.sh --bench); python3 for the table.
 set -euo pipefail
 
-here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-root="$(dirname "$here")"
+source "$(dirname "$0")/lib.sh"
+here="$root/bench"
 build=""
 runs=5
 threads_list="1 2"
@@ -32,21 +32,9 @@ scenes="fuzzy-sphere-1000 fuzzy-sphere-5000 thistle torus-floor sphere-hole thes
 sweep=0
 out=""
 images=""
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --build-dir) build="$2"; shift 2 ;;
-    --runs) runs="$2"; shift 2 ;;
-    --threads) threads_list="$2"; shift 2 ;;
-    --scenes) scenes="$2"; shift 2 ;;
-    --sphere-sweep) sweep=1; shift ;;
-    --out) out="$2"; shift 2 ;;
-    --images) images="$2"; shift 2 ;;
-    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
-    *) echo "peers.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
-  esac
-done
-[[ -n "$build" ]] || { echo "peers.sh: give --build-dir DIR (a Release build with the lattice target)" >&2; exit 2; }
-[[ "$runs" =~ ^[1-9][0-9]*$ ]] || { echo "peers.sh: --runs must be a positive integer" >&2; exit 2; }
+bench_parse --build-dir=build --runs=runs --threads=threads_list --scenes=scenes --sphere-sweep:sweep=1 --out=out --images=images -- "$@"
+[[ -n "$build" ]] || bench_die "give --build-dir DIR (a Release build with the lattice target)"
+bench_positive --runs "$runs"
 lattice="$build/app/lattice"
 embree="$build/bench/peers/embree_peer"
 [[ -x "$lattice" ]] || { echo "peers.sh: $lattice is not built (cmake --build $build --target lattice)" >&2; exit 1; }
@@ -56,8 +44,7 @@ command -v povray >/dev/null || { have_povray=0; echo "peers.sh: povray not foun
 have_embree=1
 [[ -x "$embree" ]] || { have_embree=0; echo "peers.sh: $embree not built (configure with -DLATTICE_EMBREE_PEER=ON); no Embree rows" >&2; }
 if [[ -z "$images" ]]; then
-  images="$(mktemp -d)"
-  trap 'rm -rf "$images"' EXIT
+  bench_workdir images
 fi
 mkdir -p "$images"
 gnutime=""
@@ -129,7 +116,7 @@ run_one() {
     >>"$raw"
 }
 
-load_before=$(cut -d' ' -f1-3 /proc/loadavg)
+load_before=$(bench_loadavg)
 started=$(date -u '+%Y-%m-%d %H:%M UTC')
 for ((r = 1; r <= runs; r++)); do
   for scene in $scenes; do
@@ -137,9 +124,9 @@ for ((r = 1; r <= runs; r++)); do
       for program in $(programs); do run_one "$scene" "$threads" "$program" "$r"; done
     done
   done
-  echo "peers.sh: run $r of $runs done (load $(cut -d' ' -f1-3 /proc/loadavg))" >&2
+  echo "peers.sh: run $r of $runs done (load $(bench_loadavg))" >&2
 done
-load_after=$(cut -d' ' -f1-3 /proc/loadavg)
+load_after=$(bench_loadavg)
 
 # PSNR of each picture (last run, each thread count gives the same picture) against ours --full.
 psnr="$images/psnr.tsv"
@@ -163,10 +150,4 @@ report() {
   python3 "$here/peers_table.py" "$raw" "$psnr" "$notes"
 }
 
-if [[ -n "$out" ]]; then
-  mkdir -p "$(dirname "$out")"
-  report | tee "$out.tmp-$$"
-  mv "$out.tmp-$$" "$out"
-else
-  report
-fi
+bench_write "$out" report

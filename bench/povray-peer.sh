@@ -19,23 +19,14 @@
 # the `lattice` and `render_bench` targets built (bench/run-all.sh does that).
 set -euo pipefail
 
-here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-root="$(dirname "$here")"
+source "$(dirname "$0")/lib.sh"
+here="$root/bench"
 build="$root/build"
 runs=5
 out=""
 images=""
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --build-dir) build="$2"; shift 2 ;;
-    --runs) runs="$2"; shift 2 ;;
-    --out) out="$2"; shift 2 ;;
-    --images) images="$2"; shift 2 ;;
-    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
-    *) echo "povray-peer.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
-  esac
-done
-[[ "$runs" =~ ^[1-9][0-9]*$ ]] || { echo "povray-peer.sh: --runs must be a positive integer" >&2; exit 2; }
+bench_parse --build-dir=build --runs=runs --out=out --images=images -- "$@"
+bench_positive --runs "$runs"
 command -v povray >/dev/null || { echo "povray-peer.sh: povray not found; run scripts/setup.sh --bench" >&2; exit 1; }
 lattice="$build/app/lattice"
 render_bench="$build/bench/render_bench"
@@ -44,8 +35,7 @@ for program in "$lattice" "$render_bench"; do
 done
 command -v python3 >/dev/null || { echo "povray-peer.sh: python3 is needed for the PSNR" >&2; exit 1; }
 if [[ -z "$images" ]]; then
-  images="$(mktemp -d)"
-  trap 'rm -rf "$images"' EXIT
+  bench_workdir images
 fi
 mkdir -p "$images"
 gnutime=""
@@ -68,7 +58,6 @@ timed() {
   echo "$(python3 -c "print(f'{$t1 - $t0:.4f}')") $rss"
 }
 
-median() { printf '%s\n' "$@" | sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 
 # "wall cpu": seconds of POV-Ray's "Trace Time" statistic in the log of its
 # last run and the CPU-seconds its next line reports.
@@ -80,7 +69,7 @@ pov_trace_seconds() {
 
 report() {
   echo "# POV-Ray peer: $(povray --version 2>&1 | grep -m1 'POV-Ray' || echo povray) against Lattice"
-  echo "# median of $runs runs, the two programs alternating; $(nproc) cores; load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "# median of $runs runs, the two programs alternating; $(nproc) cores; load before: $(bench_loadavg)"
   echo "# povray -D -A +Q4 +FN8 File_Gamma=1.0 +WT<n> (no AA, shadows, no reflections); Lattice: double, --threads <n>"
   echo "# ms: render wall time (POV-Ray's Trace Time vs render_bench's render); cpu: the same renders' CPU time,"
   echo "# all threads (steadier on a loaded machine); wall: whole process (povray vs lattice render -o)"
@@ -107,9 +96,9 @@ report() {
         [[ -n "$ms" ]] || { echo "povray-peer.sh: render_bench gave no time for $scene" >&2; exit 1; }
         latr+=("${ms% *}"); latc+=("${ms#* }")
       done
-      awk -v s="$scene" -v sz="${w}x${h}" -v t="$threads" -v pr="$(median "${povr[@]}")" \
-        -v lr="$(median "${latr[@]}")" -v pc="$(median "${povc[@]}")" -v lc="$(median "${latc[@]}")" \
-        -v pw="$(median "${povw[@]}")" -v lw="$(median "${latw[@]}")" -v pm="$povrss" -v lm="$latrss" \
+      awk -v s="$scene" -v sz="${w}x${h}" -v t="$threads" -v pr="$(bench_median "${povr[@]}")" \
+        -v lr="$(bench_median "${latr[@]}")" -v pc="$(bench_median "${povc[@]}")" -v lc="$(bench_median "${latc[@]}")" \
+        -v pw="$(bench_median "${povw[@]}")" -v lw="$(bench_median "${latw[@]}")" -v pm="$povrss" -v lm="$latrss" \
         'function mib(k) { return k == "-" ? "-" : sprintf("%.1f", k / 1024) }
          function ratio(a, b) { return b > 0 ? sprintf("%.2f", a / b) : "-" }
          BEGIN { printf "%-14s %8s %3d %8.1f %8.1f %6s | %8.1f %8.1f %6s | %8.1f %8.1f %6s | %7s %7s\n",
@@ -125,13 +114,7 @@ report() {
     read -r psnr maxd differ mean < <(python3 "$here/povray/psnr.py" "$images/$scene-lattice.png" "$images/$scene-povray.png")
     printf '%-14s %8s %8s %9s %9s\n' "$scene" "$psnr" "$maxd" "$differ" "$mean"
   done
-  echo "# load after: $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "# load after: $(bench_loadavg)"
 }
 
-if [[ -n "$out" ]]; then
-  mkdir -p "$(dirname "$out")"
-  report | tee "$out.tmp-$$"
-  mv "$out.tmp-$$" "$out"
-else
-  report
-fi
+bench_write "$out" report

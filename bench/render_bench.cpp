@@ -31,7 +31,7 @@
 #include <vector>
 
 #include "io/png.hpp"
-#include "lht/lattice_scene.hpp"
+#include "loader/lattice_scene_loader.hpp"
 #include "render/renderer.hpp"
 #include "foundation/error.hpp"
 

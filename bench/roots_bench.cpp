@@ -1,4 +1,4 @@
-// Median time per solve of the polynomial root solvers (render/roots.hpp),
+// Median time per solve of the polynomial root solvers (render/solve/roots.hpp),
 // float and double, on fixed random sets (seeded, so runs are comparable):
 //   quadratic / cubic / quartic: roots log-uniform in +-10^[-2, 2], half of
 //     the cubics and quartics with a complex pair instead of two real roots;
@@ -21,10 +21,10 @@
 
 #include <fmt/format.h>
 
-#include "render/roots.hpp"
+#include "render/solve/roots.hpp"
 
 namespace lattice::roots_detail {
-std::uint64_t fallbackCount() noexcept;  // defined in render/roots.cpp (diagnostic)
+std::uint64_t fallbackCount() noexcept;  // defined in render/solve/roots.cpp (diagnostic)
 }
 
 namespace {

@@ -16,22 +16,15 @@
 # Peers come from Debian packages: scripts/setup.sh --bench.
 set -euo pipefail
 
-here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-root="$(dirname "$here")"
+source "$(dirname "$0")/lib.sh"
+here="$root/bench"
 build="$root/build-bench"
 runs=5
 jobs=2
 quick=0
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --build-dir) build="$2"; shift 2 ;;
-    --runs) runs="$2"; shift 2 ;;
-    --jobs) jobs="$2"; shift 2 ;;
-    --quick) quick=1; runs=3; shift ;;
-    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
-    *) echo "run-all.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
-  esac
-done
+bench_parse --build-dir=build --runs=runs --jobs=jobs --quick:quick=1 -- "$@"
+# --quick is 3 runs, whatever --runs says.
+((quick)) && runs=3
 results="$here/results"
 mkdir -p "$results"
 
@@ -48,7 +41,7 @@ cmake --build "$build" --target "${targets[@]}" -j"$jobs"
 
 machine() {
   echo "# $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"
-  echo "# load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "# load average before: $(bench_loadavg)"
 }
 
 # Writes stdin to bench/results/$1.txt atomically, echoing it as it comes.
@@ -68,14 +61,14 @@ done
 {
   machine
   "$build/bench/render_bench" --runs "$runs" "${fuzzy[@]}" "${scenes[@]}"
-  echo "# load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "# load average after: $(bench_loadavg)"
 } | keep render
 
 if [[ " ${targets[*]} " == *" embree_peer_bench "* ]]; then
   {
     machine
     "$build/bench/embree_peer_bench" --runs "$runs"
-    echo "# load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
+    echo "# load average after: $(bench_loadavg)"
   } | keep embree-peer
 fi
 

@@ -8,16 +8,15 @@
 #   bench/scatter-scaling.sh [--build DIR] [COUNT...]   (default: 5000 10000 20000 100000)
 set -euo pipefail
 
-root=$(cd "$(dirname "$0")/.." && pwd)
+source "$(dirname "$0")/lib.sh"
 build="$root/build"
-if [[ "${1:-}" == "--build" ]]; then build=$2; shift 2; fi
-counts=("$@")
+bench_parse --build=build @ -- "$@"
+counts=("${bench_args[@]}")
 ((${#counts[@]} > 0)) || counts=(5000 10000 20000 100000)
 lattice="$build/app/lattice"
-[[ -x $lattice ]] || { echo "no $lattice: build the lattice target first" >&2; exit 2; }
-[[ -x /usr/bin/time ]] || { echo "needs GNU time: bash scripts/setup.sh --bench" >&2; exit 2; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+bench_need_built "$build" lattice
+bench_need_time
+bench_workdir work
 
 printf '%8s %12s %12s %12s %12s\n' count 1x1_s 1x1_peak_MiB 64x64_s 64x64_peak_MiB
 for n in "${counts[@]}"; do
@@ -32,4 +31,4 @@ for n in "${counts[@]}"; do
   done
   printf '%8s %12s %12s %12s %12s\n' "$n" "${row[@]}"
 done
-echo "load average: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "load average: $(bench_loadavg)"

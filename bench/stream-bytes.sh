@@ -10,27 +10,20 @@
 # Targets (issue 14): strict <= 2.0x, compact <= 1.5x that PNG.
 #   bench/stream-bytes.sh [--build DIR] [--scenes "a.toml b.toml"] [--out FILE]
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
+source "$(dirname "$0")/lib.sh"
 build="$root/build"
 scenes=("$root"/scenes/*.toml)
 out=""
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --build) build="$2"; shift 2 ;;
-    --scenes) read -r -a scenes <<<"$2"; shift 2 ;;
-    --out) out="$2"; shift 2 ;;
-    -h|--help) sed -n 2,11p "$0"; exit 0 ;;
-    *) echo "stream-bytes.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
-  esac
-done
+sceneList=""
+bench_parse --build=build --scenes=sceneList --out=out -- "$@"
+[[ -z $sceneList ]] || read -r -a scenes <<<"$sceneList"
 lattice="$build/app/lattice"
-[[ -x $lattice ]] || { echo "stream-bytes.sh: $lattice is missing; build it (scripts/build.sh --target lattice)" >&2; exit 2; }
+bench_need_built "$build" lattice
 havePngquant=1
 command -v pngquant >/dev/null 2>&1 ||
   { havePngquant=0; echo "stream-bytes.sh: pngquant is not installed: its column is left empty (scripts/setup.sh --bench)" >&2; }
 strategies=(shortest plain skip rectangles spans runs)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+bench_workdir work
 size() { stat -c %s "$1"; }
 
 {

@@ -27,7 +27,7 @@
 #include "foundation/byte_sink.hpp"
 #include "foundation/line_timing.hpp"
 #include "io/png.hpp"
-#include "lht/lattice_scene.hpp"
+#include "loader/lattice_scene_loader.hpp"
 #include "foundation/indexed_image.hpp"
 #include "quantize/run_pipeline.hpp"
 #include "render/renderer.hpp"

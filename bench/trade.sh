@@ -29,40 +29,25 @@
 # column, the thesis's precomputation); the timed runs read it.
 set -euo pipefail
 
-root=$(cd "$(dirname "$0")/.." && pwd)
+source "$(dirname "$0")/lib.sh"
 build="$root/build"
 runs=3
 size="512x512"
 scenes="fuzzy-sphere-1000 thistle"
 docs=1
 out=""
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --build) build=$2; shift 2 ;;
-    --runs) runs=$2; shift 2 ;;
-    --size) size=$2; shift 2 ;;
-    --scenes) scenes=$2; shift 2 ;;
-    --out) out=$2; shift 2 ;;
-    --no-docs) docs=0; shift ;;
-    -h|--help) sed -n 2,29p "$0"; exit 0 ;;
-    *) echo "trade.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
-  esac
-done
+bench_parse --build=build --runs=runs --size=size --scenes=scenes --out=out --no-docs:docs=0 -- "$@"
 lattice="$build/app/lattice"
 metric="$build/bench/trade_bench"
-for exe in "$lattice" "$metric"; do
-  [[ -x $exe ]] || { echo "trade.sh: $exe is missing; build it: cmake --build $build --target lattice trade_bench" >&2; exit 2; }
-done
-[[ -x /usr/bin/time ]] || { echo "trade.sh: /usr/bin/time is missing (Debian package 'time')" >&2; exit 2; }
-[[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "trade.sh: --runs takes a positive integer" >&2; exit 2; }
-[[ $size =~ ^([1-9][0-9]*)x([1-9][0-9]*)$ ]] || { echo "trade.sh: --size takes WxH, e.g. 256x256" >&2; exit 2; }
-sizeArgs=(--width "${BASH_REMATCH[1]}" --height "${BASH_REMATCH[2]}")
+bench_need_built "$build" lattice trade_bench
+bench_need_time
+bench_positive --runs "$runs"
+bench_size "$size"
 # The Tek 4125's screen shrunk to the picture, so its emulated picture lines up with the reference.
-tekScreen=(--set "width=${BASH_REMATCH[1]}" --set "height=${BASH_REMATCH[2]}")
+tekScreen=(--set "width=$bench_width" --set "height=$bench_height")
 out=${out:-$build/trade}
 mkdir -p "$out"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+bench_workdir work
 
 arithmetics="double float"
 # Fixed point counts once `lattice render --arith fixed` renders (a 1x1 picture decides).
@@ -83,7 +68,7 @@ variant() {  # scene f tag -> path
 
 # One timed run: prints "cpu_seconds peak_kib"; the render's own output goes to $work/log.
 timed() {
-  /usr/bin/time -f "%U %S %M" -o "$work/time" "$lattice" render "$@" --threads 1 --quiet "${sizeArgs[@]}" \
+  /usr/bin/time -f "%U %S %M" -o "$work/time" "$lattice" render "$@" --threads 1 --quiet "${bench_size_args[@]}" \
     >"$work/log" 2>&1 || { echo "trade.sh: lattice render $* failed:" >&2; cat "$work/log" >&2; exit 4; }
   awk '{ printf "%.3f %d\n", $1 + $2, $3 }' "$work/time"
 }
@@ -96,8 +81,7 @@ measure() {
     times+=("$t")
     ((m > peak)) && peak=$m
   done
-  printf '%s\n' "${times[@]}" | sort -g | awk -v p="$peak" '{ a[NR] = $1 } END {
-    m = (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2; printf "%.3f %d\n", m, p }'
+  printf '%s %d\n' "$(bench_median -f %.3f "${times[@]}")" "$peak"
 }
 
 tableBytes() {  # lht file -> bytes
@@ -122,7 +106,7 @@ latticeRow() {  # group setting scene f tag render-args...
 }
 
 for scene in $scenes; do
-  [[ -f $root/scenes/$scene.toml ]] || { echo "trade.sh: scenes/$scene.toml does not exist" >&2; exit 2; }
+  [[ -f $root/scenes/$scene.toml ]] || bench_die "scenes/$scene.toml does not exist"
   tsv="$out/$scene.tsv"
   printf 'group\tsetting\tcpu_s\tratio\tpeak_kib\ttable_bytes\traster_s\tpsnr_db\tmax_err\tssim\n' >"$tsv.tmp"
   base=$(variant "$scene" 1 "$scene-f1")

@@ -10,9 +10,9 @@
 
 #include "exporter/pov_format.hpp"
 #include "exporter/pov_objects.hpp"
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "foundation/error.hpp"
-#include "lht/lattice_scene.hpp"
+#include "loader/lattice_scene_loader.hpp"
 
 namespace lattice::exporter {
 

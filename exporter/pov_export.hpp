@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "render/scene.hpp"
+#include "render/scene/scene.hpp"
 
 namespace lattice::exporter {
 

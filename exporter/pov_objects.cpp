@@ -103,7 +103,7 @@ void PovObjectWriter::quartic(std::string& out, const QuarticShape& shape, const
 }
 
 // Spheres of `radius` at the points joined by cylinders: exactly the union of
-// capsules Lattice builds (render/polyline.hpp), POV-Ray's cylinders being capped.
+// capsules Lattice builds (render/scene/polyline.hpp), POV-Ray's cylinders being capped.
 void PovObjectWriter::tube(std::string& out, const std::vector<Vec3d>& points, double radius,
                            const std::string& modifiers, int depth) {
   const std::string pad = indent(depth), r = povNumber(radius);

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/shapes.hpp"
+#include "render/shapes/quartic_presets.hpp"
 
 namespace lattice::exporter {
 

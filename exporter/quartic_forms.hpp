@@ -6,12 +6,12 @@
 // Method: read off the coefficients. Degree 1 is a half-space; degree 2 is a
 // quadric, and a sphere when its squares are equal and it has no cross
 // terms; degree 4 is a torus about z when the torus rebuilt from its x^2 and
-// z^2 coefficients (render/shapes.hpp) has the same 35 coefficients to
+// z^2 coefficients (render/shapes/quartic_presets.hpp) has the same 35 coefficients to
 // kRelativeTolerance of the largest. Anything else is General. Scaling f by
 // a positive number changes neither the solid nor the answer.
 #include <array>
 
-#include "render/quartic.hpp"
+#include "render/shapes/quartic.hpp"
 
 namespace lattice::exporter {
 

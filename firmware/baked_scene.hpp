@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "quantize/run_pipeline.hpp"
-#include "render/scene.hpp"
+#include "render/scene/scene.hpp"
 
 namespace lattice::firmware {
 

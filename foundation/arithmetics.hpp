@@ -6,7 +6,7 @@
 // instantiations, and every runtime choice among the types, come from this
 // list, so adding an arithmetic means adding it here and writing its
 // specialisations (a *_fixed.cpp file for each place where the generic code
-// cannot serve it, as render/roots_fixed.cpp does for fixed point).
+// cannot serve it, as render/solve/roots_fixed.cpp does for fixed point).
 //   * Arithmetics: a type list, for code that expands over the types
 //     (ArithmeticVariant<F>: std::variant<F<float>, F<double>, F<Fixed32>>).
 //   * arithmeticName<T>(): the name `--arith` gives it; withArithmetic(name, f)

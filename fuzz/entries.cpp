@@ -31,9 +31,9 @@
 #include "devices/tek4027/tek4027_decoder.hpp"
 #include "devices/tek4125/tek4125_decoder.hpp"
 #include "io/png.hpp"
-#include "lht/lattice_scene.hpp"
-#include "lht/lht_file.hpp"
-#include "lht/lht_lookup.hpp"
+#include "loader/lattice_scene_loader.hpp"
+#include "lht/file/lht_file.hpp"
+#include "lht/leaf/table_lookup.hpp"
 #include "foundation/error.hpp"
 
 namespace lattice::fuzz {
@@ -93,7 +93,7 @@ void lhtReader(std::span<const std::uint8_t> bytes) {
   if (bytes.size() < lht::kLhtHeaderBytes + 8) return;
   std::vector<std::uint8_t> fixed(bytes.begin(), bytes.end());
   const std::size_t end = fixed.size() - 8;
-  std::uint64_t sum = lht::fnv1a64(std::span<const std::uint8_t>(fixed).first(end));
+  std::uint64_t sum = fnv1a64(std::span<const std::uint8_t>(fixed).first(end));
   for (std::size_t i = 0; i < 8; ++i, sum >>= 8) fixed[end + i] = static_cast<std::uint8_t>(sum);
   readAndProbe([&] { return lht::parseLht(fixed, "fuzz.lht"); });
   static const ScratchFile scratch{std::filesystem::temp_directory_path() /

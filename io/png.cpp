@@ -5,7 +5,7 @@
 
 #include <cstring>
 
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "foundation/error.hpp"
 
 namespace lattice::io {

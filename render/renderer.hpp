@@ -1,6 +1,6 @@
 #pragma once
 // The row renderer ("model" in the thesis): primary ray per pixel, first hit
-// in the CSG tree, eq. 2.3 with shadow rays (render/shading.hpp).
+// in the CSG tree, eq. 2.3 with shadow rays (render/scene/shading.hpp).
 //
 // Output per pixel is linear RGB clamped to [0, 1] in T, and the 18-bit
 // colour the thesis's model produced: each channel v becomes round(v * 63)
@@ -19,9 +19,9 @@
 
 #include "foundation/rgb_image.hpp"
 #include "foundation/scanline.hpp"
-#include "render/camera.hpp"
-#include "render/scene.hpp"
-#include "render/shading.hpp"
+#include "render/scene/camera.hpp"
+#include "render/scene/scene.hpp"
+#include "render/scene/shading.hpp"
 #include "foundation/arithmetics.hpp"
 #include "foundation/threads.hpp"
 

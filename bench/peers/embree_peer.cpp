@@ -15,7 +15,7 @@
 //    from the hit lifted kShadowOffset x max(1, |p|) along the facing normal
 //    (float hits are rougher than our double ones; 1e-4 keeps hair from
 //    shadowing itself and is under 2 % of the hair radius of the examples).
-//  * shading: render/shading.hpp's shade(), our eq. 2.3 itself, in double;
+//  * shading: render/scene/shading.hpp's shade(), our eq. 2.3 itself, in double;
 //    pixels round(255 v) as our renderer writes them.
 //  * threads: rows interleaved over N std::threads; the trace time is the
 //    wall time of that loop (no load, no BVH build, no PNG).
@@ -33,10 +33,10 @@
 #include "bench/peers/peer_scene.hpp"
 #include "foundation/error.hpp"
 #include "io/png.hpp"
-#include "lht/lattice_scene.hpp"
-#include "render/camera.hpp"
+#include "loader/lattice_scene_loader.hpp"
+#include "render/scene/camera.hpp"
 #include "render/renderer.hpp"
-#include "render/shading.hpp"
+#include "render/scene/shading.hpp"
 
 using namespace lattice;
 using namespace lattice::peers;

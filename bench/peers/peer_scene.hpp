@@ -15,7 +15,7 @@
 #include <optional>
 #include <vector>
 
-#include "render/scene.hpp"
+#include "render/scene/scene.hpp"
 
 namespace lattice::peers {
 

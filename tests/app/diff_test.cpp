@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "io/image_metrics.hpp"
 #include "io/png.hpp"
 #include "tests/support/temp_dir.hpp"

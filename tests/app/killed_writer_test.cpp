@@ -16,7 +16,7 @@
 #include <thread>
 #include <vector>
 
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "tests/support/run_lattice.hpp"
 #include "tests/support/temp_dir.hpp"
 

@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "app/memory_plan.hpp"
-#include "lht/table.hpp"
+#include "lht/table/hash_table.hpp"
 #include "foundation/error.hpp"
 
 using lattice::quantize::PipelineMode;

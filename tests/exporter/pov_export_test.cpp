@@ -9,9 +9,9 @@
 #include <string>
 
 #include "exporter/pov_export.hpp"
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "foundation/error.hpp"
-#include "lht/lattice_scene.hpp"
+#include "loader/lattice_scene_loader.hpp"
 #include "tests/support/run_lattice.hpp"
 #include "tests/support/temp_dir.hpp"
 

@@ -19,7 +19,7 @@
 #include <sstream>
 #include <string>
 
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "tests/support/run_lattice.hpp"
 #include "tests/support/temp_dir.hpp"
 

@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "exporter/quartic_forms.hpp"
-#include "render/shapes.hpp"
+#include "render/shapes/quartic_presets.hpp"
 
 using namespace lattice;
 using lattice::exporter::classifyQuartic;

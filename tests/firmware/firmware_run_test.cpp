@@ -22,7 +22,7 @@
 #include "devices/tek4125/tek4125_decoder.hpp"
 #include "devices/tek4125/tek4125_driver.hpp"
 #include "devices/tek4125/tek4125_profile.hpp"
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "foundation/indexed_image.hpp"
 #include "foundation/rgb_image.hpp"
 #include "tests/support/golden.hpp"

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "tests/support/temp_dir.hpp"
 #include "foundation/error.hpp"
 

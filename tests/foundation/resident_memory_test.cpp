@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "foundation/error.hpp"
-#include "foundation/resident_memory.hpp"
+#include "foundation/system/resident_memory.hpp"
 
 using lattice::ErrorKind;
 using lattice::formatBytes;

@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <utility>
 
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "io/image_metrics.hpp"
 #include "io/png.hpp"
 #include "tests/support/run_lattice.hpp"

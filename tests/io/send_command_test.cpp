@@ -12,7 +12,7 @@
 #include <sstream>
 #include <thread>
 
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "io/pty.hpp"
 #include "tests/support/run_lattice.hpp"
 #include "pty_peer.hpp"

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "devices/device_table.hpp"
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "io/png.hpp"
 #include "io/pty.hpp"
 #include "tests/support/run_lattice.hpp"
@@ -34,7 +34,7 @@
 #include "io/serial_sink.hpp"
 #include "quantize/run_pipeline.hpp"
 #include "render/renderer.hpp"
-#include "render/scene_loader.hpp"
+#include "loader/scene_loader.hpp"
 #include "tests/support/golden.hpp"
 
 using namespace lattice;

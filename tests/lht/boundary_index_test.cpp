@@ -1,8 +1,8 @@
-// The numbering of a lattice box's surface points (lht/boundary_index.hpp):
+// The numbering of a lattice box's surface points (lht/grid/boundary_index.hpp):
 // the pair space the compressed table and the look-up statistics index.
 #include <catch2/catch.hpp>
 
-#include "lht/boundary_index.hpp"
+#include "lht/grid/boundary_index.hpp"
 
 using namespace lattice::lht;
 

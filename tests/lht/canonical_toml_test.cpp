@@ -4,7 +4,7 @@
 
 #include <toml++/toml.h>
 
-#include "lht/canonical_toml.hpp"
+#include "loader/canonical_toml.hpp"
 
 using namespace lattice::lht;
 

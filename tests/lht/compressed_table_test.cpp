@@ -1,4 +1,4 @@
-// The compressed LHT (lht/compressed_table.hpp): exact membership over the
+// The compressed LHT (lht/table/compressed_table.hpp): exact membership over the
 // whole pair space, payload bytes identical to the hashed table's, and its
 // .lht version 3 with the bounded reader's checks.
 #include <catch2/catch.hpp>
@@ -6,11 +6,11 @@
 #include <cstring>
 #include <filesystem>
 
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "foundation/error.hpp"
-#include "lht/lattice_object.hpp"
-#include "lht/lht_file.hpp"
-#include "lht/lht_lookup.hpp"
+#include "lht/raster/lattice_object.hpp"
+#include "lht/file/lht_file.hpp"
+#include "lht/leaf/table_lookup.hpp"
 #include "tests/support/temp_dir.hpp"
 
 using namespace lattice;

@@ -1,19 +1,19 @@
-// The rasterizer's cull (lht/object_cover.hpp, lht/cover_cull.hpp) may only
+// The rasterizer's cull (lht/raster/object_cover.hpp, lht/raster/cover_cull.hpp) may only
 // skip pairs that miss: with and without a cover the hit lists must be the
 // same, double for double, while the cover traces fewer segments.
 #include <catch2/catch.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "lht/cover_cull.hpp"
-#include "lht/lattice_object.hpp"
-#include "lht/object_cover.hpp"
-#include "lht/rasterize.hpp"
-#include "lht/table1.hpp"
-#include "render/leaf_descs.hpp"
-#include "render/polyline.hpp"
-#include "render/scene.hpp"
-#include "render/shapes.hpp"
+#include "lht/raster/cover_cull.hpp"
+#include "lht/raster/lattice_object.hpp"
+#include "lht/raster/object_cover.hpp"
+#include "lht/raster/rasterize.hpp"
+#include "lht/raster/thesis_table1.hpp"
+#include "render/scene/builtin_leaves.hpp"
+#include "render/scene/polyline.hpp"
+#include "render/scene/scene.hpp"
+#include "render/shapes/quartic_presets.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;

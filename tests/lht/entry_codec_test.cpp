@@ -1,4 +1,4 @@
-// The LHT entry precisions (lht/lht_precision.hpp): each form's quantization
+// The LHT entry precisions (lht/table/lht_precision.hpp): each form's quantization
 // round trip stays within the error bounds it documents, at the extremes
 // (s = 0, 1/2, 1; normals along the axes, the diagonals, and both sides of
 // the octahedral fold) and over a dense sample of the sphere.
@@ -11,9 +11,9 @@
 #include <numbers>
 #include <vector>
 
-#include "lht/entry_codec.hpp"
-#include "lht/lattice_scene.hpp"
-#include "lht/octahedral.hpp"
+#include "lht/table/entry_codec.hpp"
+#include "loader/lattice_scene_loader.hpp"
+#include "lht/grid/octahedral.hpp"
 #include "foundation/error.hpp"
 
 using namespace lattice;

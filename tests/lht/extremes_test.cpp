@@ -18,13 +18,13 @@
 #include <string>
 #include <vector>
 
-#include "lht/lattice_leaf.hpp"
-#include "lht/lattice_object.hpp"
-#include "lht/lattice_scene.hpp"
-#include "lht/table.hpp"
+#include "lht/leaf/lattice_leaf.hpp"
+#include "lht/raster/lattice_object.hpp"
+#include "loader/lattice_scene_loader.hpp"
+#include "lht/table/hash_table.hpp"
 #include "render/renderer.hpp"
-#include "render/scene_loader.hpp"
-#include "render/shapes.hpp"
+#include "loader/scene_loader.hpp"
+#include "render/shapes/quartic_presets.hpp"
 #include "tests/lht/raster_support.hpp"
 #include "tests/render/extremes_support.hpp"
 #include "foundation/error.hpp"

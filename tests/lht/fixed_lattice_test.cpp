@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "lht/lattice_scene.hpp"
+#include "loader/lattice_scene_loader.hpp"
 #include "render/renderer.hpp"
-#include "render/scene_loader.hpp"
+#include "loader/scene_loader.hpp"
 #include "tests/render/fixed_support.hpp"
 
 using namespace lattice;

@@ -3,7 +3,7 @@
 #include <set>
 #include <tuple>
 
-#include "lht/lattice_box.hpp"
+#include "lht/grid/lattice_box.hpp"
 #include "foundation/error.hpp"
 
 using namespace lattice;

@@ -1,4 +1,4 @@
-// The lattice leaf's firstHit, firstEnter and anyHit (lht/lattice_leaf.cpp)
+// The lattice leaf's firstHit, firstEnter and anyHit (lht/leaf/lattice_leaf.cpp)
 // skip the span list, the exit read and unused normals; they must answer
 // exactly what Primitive's defaults derive from the leaf's spans(), for rays
 // from outside, from inside, starting on the surface (the self-shadow rule)
@@ -10,9 +10,9 @@
 #include <random>
 
 #include "foundation/fixed.hpp"
-#include "lht/lattice_chord.hpp"
-#include "lht/lattice_leaf.hpp"
-#include "lht/lattice_object.hpp"
+#include "lht/grid/lattice_chord.hpp"
+#include "lht/leaf/lattice_leaf.hpp"
+#include "lht/raster/lattice_object.hpp"
 #include "tests/lht/raster_support.hpp"
 
 using namespace lattice;

@@ -6,11 +6,11 @@
 
 #include <cmath>
 
-#include "lht/lattice_leaf.hpp"
-#include "lht/lattice_object.hpp"
-#include "render/csg.hpp"
-#include "render/csg_shapes.hpp"
-#include "render/shapes.hpp"
+#include "lht/leaf/lattice_leaf.hpp"
+#include "lht/raster/lattice_object.hpp"
+#include "render/shapes/csg.hpp"
+#include "render/shapes/composite_shapes.hpp"
+#include "render/shapes/quartic_presets.hpp"
 #include "tests/lht/raster_support.hpp"
 
 using namespace lattice;

@@ -15,12 +15,12 @@
 #include <fmt/format.h>
 
 #include "io/image_metrics.hpp"
-#include "lht/canonical_toml.hpp"
-#include "lht/lattice_object.hpp"
-#include "lht/lattice_scene.hpp"
-#include "lht/table_build.hpp"
+#include "loader/canonical_toml.hpp"
+#include "lht/raster/lattice_object.hpp"
+#include "loader/lattice_scene_loader.hpp"
+#include "loader/table_build.hpp"
 #include "render/renderer.hpp"
-#include "render/scene_loader.hpp"
+#include "loader/scene_loader.hpp"
 #include "tests/support/golden.hpp"
 #include "foundation/error.hpp"
 

@@ -7,13 +7,13 @@
 #include <filesystem>
 #include <string>
 
-#include "foundation/atomic_file.hpp"
-#include "lht/chained_table.hpp"
-#include "lht/lattice_object.hpp"
-#include "lht/lht_file.hpp"
+#include "foundation/system/atomic_file.hpp"
+#include "lht/file/chained_table.hpp"
+#include "lht/raster/lattice_object.hpp"
+#include "lht/file/lht_file.hpp"
 #include "tests/support/temp_dir.hpp"
 #include "foundation/error.hpp"
-#include "foundation/resident_memory.hpp"
+#include "foundation/system/resident_memory.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;

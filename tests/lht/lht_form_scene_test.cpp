@@ -1,4 +1,4 @@
-// The table forms in scenes (lht/lht_form.hpp): `form = "compressed"` and
+// The table forms in scenes (lht/table/lht_form.hpp): `form = "compressed"` and
 // `"on-demand"` (or TableSettings::form, `--lht-form`) render the pictures the
 // hashed table renders, byte for byte, in every arithmetic and precision; the
 // compressed form's cache is .lht version 3; the on-demand table stores what
@@ -11,10 +11,10 @@
 
 #include "foundation/error.hpp"
 #include "foundation/fixed.hpp"
-#include "lht/lattice_scene.hpp"
-#include "lht/lht_file.hpp"
-#include "lht/lookup_stats.hpp"
-#include "lht/table_build.hpp"
+#include "loader/lattice_scene_loader.hpp"
+#include "lht/file/lht_file.hpp"
+#include "lht/leaf/lookup_stats.hpp"
+#include "loader/table_build.hpp"
 #include "render/renderer.hpp"
 #include "tests/support/temp_dir.hpp"
 

@@ -1,13 +1,13 @@
-// Counting a render's look-ups (lht/lookup_stats.hpp, `render --lht-stats`):
+// Counting a render's look-ups (lht/leaf/lookup_stats.hpp, `render --lht-stats`):
 // exact counts for rays whose pairs are known, the same counts from one
 // thread and from two, and no change to the picture.
 #include <catch2/catch.hpp>
 
 #include <limits>
 
-#include "lht/lattice_leaf.hpp"
-#include "lht/lattice_object.hpp"
-#include "lht/lattice_scene.hpp"
+#include "lht/leaf/lattice_leaf.hpp"
+#include "lht/raster/lattice_object.hpp"
+#include "loader/lattice_scene_loader.hpp"
 #include "render/renderer.hpp"
 #include "tests/lht/raster_support.hpp"
 

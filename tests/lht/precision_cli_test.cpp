@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "lht/lht_file.hpp"
+#include "lht/file/lht_file.hpp"
 #include "tests/support/run_lattice.hpp"
 #include "tests/support/temp_dir.hpp"
 

@@ -3,9 +3,9 @@
 // (no progress bar), for the lattice tests.
 #include <memory>
 
-#include "lht/lattice_object.hpp"
-#include "lht/lht_file.hpp"
-#include "lht/rasterize.hpp"
+#include "lht/raster/lattice_object.hpp"
+#include "lht/file/lht_file.hpp"
+#include "lht/raster/rasterize.hpp"
 
 namespace lattice::testing {
 

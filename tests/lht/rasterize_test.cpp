@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "lht/lattice_object.hpp"
-#include "lht/rasterize.hpp"
-#include "lht/table.hpp"
+#include "lht/raster/lattice_object.hpp"
+#include "lht/raster/rasterize.hpp"
+#include "lht/table/hash_table.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;

@@ -2,7 +2,7 @@
 // exactly, N_lp and N_iz both.
 #include <catch2/catch.hpp>
 
-#include "lht/table1.hpp"
+#include "lht/raster/thesis_table1.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;

@@ -5,8 +5,8 @@
 #include <numbers>
 #include <set>
 
-#include "lht/lattice_object.hpp"
-#include "lht/table.hpp"
+#include "lht/raster/lattice_object.hpp"
+#include "lht/table/hash_table.hpp"
 #include "foundation/error.hpp"
 
 using namespace lattice;

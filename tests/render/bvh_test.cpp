@@ -6,10 +6,10 @@
 #include <set>
 
 #include "geometry_checks.hpp"
-#include "render/bvh.hpp"
-#include "render/csg.hpp"
-#include "render/shapes.hpp"
-#include "render/span_ops.hpp"
+#include "render/accel/bvh.hpp"
+#include "render/shapes/csg.hpp"
+#include "render/shapes/quartic_presets.hpp"
+#include "render/shapes/span_ops.hpp"
 
 using namespace lattice;
 using namespace lattice::testing;

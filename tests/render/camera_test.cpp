@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "render/camera.hpp"
+#include "render/scene/camera.hpp"
 #include "foundation/error.hpp"
 
 using namespace lattice;

@@ -1,4 +1,4 @@
-// The closed-form capsule (render/capsule_leaf.cpp) against the quartic-and-
+// The closed-form capsule (render/shapes/capsule_leaf.cpp) against the quartic-and-
 // CSG capsule it replaces for float and double (and a sphere, a capsule of
 // length 0, against the quartic sphere): the same spans to rounding,
 // on random rays, on rays along the axis and through the end planes, from
@@ -11,7 +11,7 @@
 #include <random>
 
 #include "geometry_checks.hpp"
-#include "render/csg_shapes.hpp"
+#include "render/shapes/composite_shapes.hpp"
 
 using namespace lattice;
 using namespace lattice::testing;

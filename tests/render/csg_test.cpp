@@ -6,9 +6,9 @@
 #include <random>
 
 #include "geometry_checks.hpp"
-#include "render/csg.hpp"
-#include "render/shapes.hpp"
-#include "render/span_ops.hpp"
+#include "render/shapes/csg.hpp"
+#include "render/shapes/quartic_presets.hpp"
+#include "render/shapes/span_ops.hpp"
 #include "foundation/error.hpp"
 
 using namespace lattice;

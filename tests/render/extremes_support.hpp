@@ -18,7 +18,7 @@
 #include <utility>
 
 #include "foundation/arithmetics.hpp"
-#include "render/primitive.hpp"
+#include "render/shapes/primitive.hpp"
 
 namespace lattice::testing {
 

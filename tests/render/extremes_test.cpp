@@ -17,11 +17,11 @@
 #include <string>
 #include <vector>
 
-#include "render/csg.hpp"
-#include "render/quartic.hpp"
+#include "render/shapes/csg.hpp"
+#include "render/shapes/quartic.hpp"
 #include "render/renderer.hpp"
-#include "render/scene_loader.hpp"
-#include "render/shapes.hpp"
+#include "loader/scene_loader.hpp"
+#include "render/shapes/quartic_presets.hpp"
 #include "foundation/transform_condition.hpp"
 #include "tests/render/extremes_support.hpp"
 #include "tests/render/fixed_support.hpp"
@@ -124,7 +124,7 @@ void checkScaledScene(double k, const std::string& object, bool viaScale) {
   CHECK(a.worstRelativeT <= tBound);
   CHECK(a.worstNormalAngle <= angleBound);
   // Shading adds shadow rays, lifted off the surface in proportion to the
-  // scene (render/shading.hpp): the pictures agree to within a few pixels.
+  // scene (render/scene/shading.hpp): the pictures agree to within a few pixels.
   CHECK(a.image.psnr > 35.0);
   CHECK(a.image.farFraction < 0.005);
 }

@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "render/renderer.hpp"
-#include "render/quartic.hpp"
-#include "render/roots.hpp"
-#include "render/shapes.hpp"
-#include "render/scene_loader.hpp"
+#include "render/shapes/quartic.hpp"
+#include "render/solve/roots.hpp"
+#include "render/shapes/quartic_presets.hpp"
+#include "loader/scene_loader.hpp"
 #include "tests/render/fixed_support.hpp"
 #include "tests/render/scene_test_util.hpp"
 #include "tests/support/golden.hpp"

@@ -7,7 +7,7 @@
 #include <functional>
 #include <random>
 
-#include "render/primitive.hpp"
+#include "render/shapes/primitive.hpp"
 
 namespace lattice::testing {
 

@@ -1,4 +1,4 @@
-// Instance nodes (render/instance_node.hpp): one object-space polyline shared
+// Instance nodes (render/scene/instance_node.hpp): one object-space polyline shared
 // by a placement must answer every query as the world-space copy of it does
 // (spans, first hit, first enter, any hit; t and normals to rounding), under a
 // rigid placement and under a non-uniform scale (normals by the inverse
@@ -10,9 +10,9 @@
 #include <random>
 
 #include "geometry_checks.hpp"
-#include "render/instance_node.hpp"
-#include "render/polyline.hpp"
-#include "render/scene.hpp"
+#include "render/scene/instance_node.hpp"
+#include "render/scene/polyline.hpp"
+#include "render/scene/scene.hpp"
 #include "foundation/error.hpp"
 
 using namespace lattice;

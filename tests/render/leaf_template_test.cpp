@@ -1,4 +1,4 @@
-// Leaves are written once, as a template (render/scene.hpp LeafTemplate):
+// Leaves are written once, as a template (render/scene/scene.hpp LeafTemplate):
 // building a tree for any arithmetic reaches the leaf's buildAs<T> with the
 // leaf's placement, material and build options.
 #include <catch2/catch.hpp>
@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "render/quartic.hpp"
-#include "render/scene.hpp"
-#include "render/shapes.hpp"
+#include "render/shapes/quartic.hpp"
+#include "render/scene/scene.hpp"
+#include "render/shapes/quartic_presets.hpp"
 
 using namespace lattice;
 

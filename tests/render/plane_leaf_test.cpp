@@ -1,4 +1,4 @@
-// The closed-form half-space (render/plane_leaf.cpp) against the quartic leaf
+// The closed-form half-space (render/shapes/plane_leaf.cpp) against the quartic leaf
 // it replaces in float and double, on thousands of random rays per placement:
 // rays from inside and outside, grazing rays (nearly parallel to the plane)
 // and rays exactly parallel to it, inside and outside. The spans must match
@@ -14,8 +14,8 @@
 
 #include "geometry_checks.hpp"
 #include "foundation/error.hpp"
-#include "render/plane_leaf.hpp"
-#include "render/shapes.hpp"
+#include "render/shapes/plane_leaf.hpp"
+#include "render/shapes/quartic_presets.hpp"
 
 using namespace lattice;
 using namespace lattice::testing;

@@ -1,4 +1,4 @@
-// The closed-form quadric (render/quadric_leaf.cpp) against the quartic leaf
+// The closed-form quadric (render/shapes/quadric_leaf.cpp) against the quartic leaf
 // it replaces in float and double, for every degree-2 preset (cylinder,
 // ellipsoid, cone, paraboloid, hyperboloids of one and two sheets) under a
 // rigid placement and a non-uniform scale: 3,000 random rays each, half of
@@ -13,8 +13,8 @@
 
 #include "geometry_checks.hpp"
 #include "foundation/error.hpp"
-#include "render/quadric_leaf.hpp"
-#include "render/shapes.hpp"
+#include "render/shapes/quadric_leaf.hpp"
+#include "render/shapes/quartic_presets.hpp"
 
 using namespace lattice;
 using namespace lattice::testing;

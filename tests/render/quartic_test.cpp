@@ -6,8 +6,8 @@
 #include <set>
 
 #include "geometry_checks.hpp"
-#include "render/quartic.hpp"
-#include "render/shapes.hpp"
+#include "render/shapes/quartic.hpp"
+#include "render/shapes/quartic_presets.hpp"
 #include "foundation/error.hpp"
 
 using namespace lattice;

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "render/renderer.hpp"
-#include "render/scene_loader.hpp"
+#include "loader/scene_loader.hpp"
 #include "tests/support/golden.hpp"
 #include "foundation/error.hpp"
 

@@ -1,4 +1,4 @@
-// Polynomial root solvers (render/roots.hpp) on the published hard cases.
+// Polynomial root solvers (render/solve/roots.hpp) on the published hard cases.
 //
 // Every bound below comes from one formula, so it is stated once here. For a
 // root r of multiplicity m of p(x) = sum c_k x^k, write S(r) = sum |c_k||r|^k
@@ -22,11 +22,11 @@
 #include <span>
 #include <vector>
 
-#include "render/roots.hpp"
+#include "render/solve/roots.hpp"
 #include "foundation/error.hpp"
 
 namespace lattice::roots_detail {
-std::uint64_t fallbackCount() noexcept;  // defined in render/roots.cpp (diagnostic)
+std::uint64_t fallbackCount() noexcept;  // defined in render/solve/roots.cpp (diagnostic)
 }
 
 namespace {

@@ -2,7 +2,7 @@
 // each checking the message names file:line and what was expected.
 #include <catch2/catch.hpp>
 
-#include "render/scene_loader.hpp"
+#include "loader/scene_loader.hpp"
 #include "tests/render/scene_test_util.hpp"
 #include "foundation/error.hpp"
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "render/scene_loader.hpp"
+#include "loader/scene_loader.hpp"
 
 namespace lattice::testing {
 

@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "render/scene_loader.hpp"
-#include "render/scene_text.hpp"
+#include "loader/scene_loader.hpp"
+#include "loader/scene_text.hpp"
 #include "tests/support/temp_dir.hpp"
 #include "foundation/error.hpp"
 

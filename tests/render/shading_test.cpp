@@ -1,9 +1,9 @@
 // Eq. 2.3 against numbers worked out by hand.
 #include <catch2/catch.hpp>
 
-#include "render/quartic.hpp"
-#include "render/shading.hpp"
-#include "render/shapes.hpp"
+#include "render/shapes/quartic.hpp"
+#include "render/scene/shading.hpp"
+#include "render/shapes/quartic_presets.hpp"
 
 using namespace lattice;
 

@@ -6,8 +6,8 @@
 #include <random>
 
 #include "geometry_checks.hpp"
-#include "render/csg_shapes.hpp"
-#include "render/shapes.hpp"
+#include "render/shapes/composite_shapes.hpp"
+#include "render/shapes/quartic_presets.hpp"
 #include "foundation/error.hpp"
 
 using namespace lattice;

@@ -2,8 +2,8 @@
 // when the tree is built (thesis sec. 3.1, fig. 4).
 #include <catch2/catch.hpp>
 
-#include "render/scene.hpp"
-#include "render/scene_loader.hpp"
+#include "render/scene/scene.hpp"
+#include "loader/scene_loader.hpp"
 #include "tests/render/scene_test_util.hpp"
 
 using namespace lattice;

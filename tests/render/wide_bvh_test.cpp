@@ -15,7 +15,7 @@
 #include <random>
 #include <set>
 
-#include "render/wide_bvh.hpp"
+#include "render/accel/wide_bvh.hpp"
 
 using namespace lattice;
 

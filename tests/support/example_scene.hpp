@@ -5,7 +5,7 @@
 // only test binaries that link lattice_render and lattice_lht include it.
 #include <string>
 
-#include "lht/lattice_scene.hpp"
+#include "loader/lattice_scene_loader.hpp"
 #include "render/renderer.hpp"
 #include "tests/support/golden.hpp"
 

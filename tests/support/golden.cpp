@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <cmath>
 
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 
 namespace lattice::testing {
 

@@ -12,11 +12,11 @@
 #include "devices/apollo_sim/apollo_output.hpp"
 #include "devices/apollo_sim/apollo_profile.hpp"
 #include "io/png.hpp"
-#include "lht/lattice_scene.hpp"
+#include "loader/lattice_scene_loader.hpp"
 #include "foundation/indexed_image.hpp"
 #include "quantize/run_pipeline.hpp"
 #include "render/renderer.hpp"
-#include "render/scene_loader.hpp"
+#include "loader/scene_loader.hpp"
 #include "tests/support/example_scene.hpp"
 #include "tests/support/golden.hpp"
 

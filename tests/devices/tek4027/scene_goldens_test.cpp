@@ -18,11 +18,11 @@
 #include "devices/tek4027/tek4027_profile.hpp"
 #include "foundation/byte_sink.hpp"
 #include "io/png.hpp"
-#include "lht/lattice_scene.hpp"
+#include "loader/lattice_scene_loader.hpp"
 #include "foundation/indexed_image.hpp"
 #include "quantize/run_pipeline.hpp"
 #include "render/renderer.hpp"
-#include "render/scene_loader.hpp"
+#include "loader/scene_loader.hpp"
 #include "tests/support/example_scene.hpp"
 #include "tests/support/golden.hpp"
 

@@ -1,0 +1,88 @@
+#include "foundation/system/resident_memory.hpp"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "foundation/error.hpp"
+
+namespace lattice {
+
+namespace {
+
+// "VmRSS:\t    8212 kB" -> 8212 * 1024
+std::optional<std::uint64_t> statusField(std::string_view status, std::string_view name) {
+  std::size_t at = 0;
+  while (at < status.size()) {
+    const std::size_t end = std::min(status.find('\n', at), status.size());
+    const std::string_view line = status.substr(at, end - at);
+    at = end + 1;
+    if (line.size() <= name.size() || line.substr(0, name.size()) != name || line[name.size()] != ':') continue;
+    std::string_view value = line.substr(name.size() + 1);
+    while (!value.empty() && std::isspace(static_cast<unsigned char>(value.front()))) value.remove_prefix(1);
+    std::uint64_t kib = 0;
+    const auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), kib);
+    if (ec != std::errc() || std::string_view(ptr, value.data() + value.size()).find("kB") == std::string_view::npos)
+      return std::nullopt;
+    return kib * 1024;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<ResidentMemory> parseProcStatus(std::string_view status) {
+  const auto current = statusField(status, "VmRSS");
+  const auto peak = statusField(status, "VmHWM");
+  if (!current || !peak) return std::nullopt;
+  return ResidentMemory{*current, *peak};
+}
+
+std::optional<ResidentMemory> residentMemory() {
+  std::ifstream in("/proc/self/status");
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseProcStatus(text.str());
+}
+
+std::uint64_t parseByteCount(std::string_view text, std::string_view flag) {
+  const auto bad = [&] {
+    return Error(ErrorKind::Usage, fmt::format("{} {}: give a size in bytes, e.g. 8388608, 8192K, 8MiB or 1.5M "
+                                               "(K, M, G with or without 'iB' are powers of 1024)",
+                                               flag, text));
+  };
+  double number = 0.0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
+  if (ec != std::errc() || !(number > 0.0) || !std::isfinite(number)) throw bad();
+  std::string suffix(ptr, text.data() + text.size());
+  for (char& c : suffix) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  double scale = 1.0;
+  if (suffix.empty() || suffix == "B")
+    scale = 1.0;
+  else if (suffix == "K" || suffix == "KB" || suffix == "KIB")
+    scale = 1024.0;
+  else if (suffix == "M" || suffix == "MB" || suffix == "MIB")
+    scale = 1024.0 * 1024.0;
+  else if (suffix == "G" || suffix == "GB" || suffix == "GIB")
+    scale = 1024.0 * 1024.0 * 1024.0;
+  else
+    throw bad();
+  const double bytes = std::round(number * scale);
+  if (bytes < 1.0 || bytes > 1e18) throw bad();
+  return static_cast<std::uint64_t>(bytes);
+}
+
+std::string formatBytes(std::uint64_t bytes) {
+  const double b = static_cast<double>(bytes);
+  if (bytes >= 1024ull * 1024 * 1024) return fmt::format("{:.2f} GiB", b / (1024.0 * 1024 * 1024));
+  if (bytes >= 1024ull * 1024) return fmt::format("{:.2f} MiB", b / (1024.0 * 1024));
+  if (bytes >= 1024) return fmt::format("{:.1f} KiB", b / 1024.0);
+  return fmt::format("{} B", bytes);
+}
+
+}  // namespace lattice

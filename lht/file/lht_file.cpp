@@ -1,0 +1,323 @@
+#include "lht/file/lht_file.hpp"
+
+#include <fmt/format.h>
+
+#include <bit>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <string>
+
+#include "foundation/system/atomic_file.hpp"
+#include "foundation/error.hpp"
+#include "lht/file/chained_table.hpp"
+
+namespace lattice::lht {
+
+namespace {
+
+constexpr std::uint8_t kMagic[8] = {'L', 'A', 'T', 'L', 'H', 'T', '\r', '\n'};
+
+class Writer {
+ public:
+  void bytes(const void* p, std::size_t n) {
+    const auto* b = static_cast<const std::uint8_t*>(p);
+    out.insert(out.end(), b, b + n);
+  }
+  void u16(std::uint16_t v) { uint(v, 2); }
+  void u32(std::uint32_t v) { uint(v, 4); }
+  void u64(std::uint64_t v) { uint(v, 8); }
+  void f64(double v) { u64(std::bit_cast<std::uint64_t>(v)); }
+  std::vector<std::uint8_t> out;
+
+ private:
+  void uint(std::uint64_t v, int n) {
+    for (int i = 0; i < n; ++i) out.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+  }
+};
+
+// Reads within bounds the caller has already checked.
+class Reader {
+ public:
+  explicit Reader(std::span<const std::uint8_t> b) : in(b) {}
+  std::uint64_t uint(int n) {
+    std::uint64_t v = 0;
+    for (int i = 0; i < n; ++i) v |= std::uint64_t(in[at + i]) << (8 * i);
+    at += static_cast<std::size_t>(n);
+    return v;
+  }
+  double f64() { return std::bit_cast<double>(uint(8)); }
+  std::span<const std::uint8_t> in;
+  std::size_t at = 0;
+};
+
+Error bad(const std::string& name, const std::string& what) {
+  return Error(ErrorKind::Input, fmt::format("{}: {}; rebuild it with `lattice rasterize` (or delete it so the "
+                                             "scene rasterizes the lattice again)",
+                                             name, what));
+}
+
+// "0 thesis, 1 wide, 2 compact"
+std::string precisionCodes() {
+  std::string out;
+  for (const LhtPrecisionInfo& info : kLhtPrecisions)
+    out += fmt::format("{}{} {}", out.empty() ? "" : ", ", static_cast<unsigned>(info.precision), info.name);
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> serializeLht(const LhtFile& lht) {
+  if (lht.form == LhtForm::OnDemand)
+    throw Error(ErrorKind::Usage, "an on-demand table is built while rendering and never written to a .lht file; "
+                                  "rasterize it as hashed or compressed");
+  const bool compressed = lht.form == LhtForm::Compressed;
+  Writer w;
+  w.bytes(kMagic, sizeof kMagic);
+  w.u32(compressed ? kLhtCompressedVersion : kLhtVersion);
+  for (int a = 0; a < 3; ++a) w.u16(static_cast<std::uint16_t>(lht.box.cells()[a]));
+  w.u16(static_cast<std::uint16_t>(lht.precision()));
+  w.f64(lht.box.lambda());
+  w.f64(lht.box.oversample());
+  for (int a = 0; a < 3; ++a) w.f64(lht.box.origin()[a]);
+  w.u64(lht.objectHash);
+  w.u64(lht.pairs);
+  w.u64(lht.hits);
+  if (compressed) {
+    const CompressedTable& c = lht.compressed;
+    w.u64(c.entryCount());
+    w.u64(c.bitCount());
+    w.u64(c.words().size());
+    w.u16(static_cast<std::uint16_t>(LhtForm::Compressed));
+    w.u16(static_cast<std::uint16_t>(c.layout()));
+    w.u32(0);
+    w.out.reserve(w.out.size() + c.bitmapBytes() + c.payloads().size() + 8);
+    for (std::uint64_t word : c.words()) w.u64(word);
+    w.bytes(c.payloads().data(), c.payloads().size());
+  } else {
+    w.u64(lht.table.entryCount());
+    w.u64(lht.table.capacity());
+    w.u64(lht.table.capacity());
+    w.bytes(lht.table.slotView().data(), lht.table.slotView().size());
+  }
+  w.u64(fnv1a64(w.out));
+  return std::move(w.out);
+}
+
+namespace {
+
+// What the header says (108 bytes, 116 in version 3), checked on its own and
+// against the file's size: magic, version, codes, and every count, before
+// anything is allocated.
+struct LhtHeader {
+  std::uint32_t version = 0;
+  std::size_t headerBytes = kLhtHeaderBytes;
+  std::array<int, 3> cells{};
+  LhtPrecision precision = LhtPrecision::Thesis;
+  LhtForm form = LhtForm::Hashed;
+  PairLayout layout = PairLayout::Symmetric;
+  std::size_t stride = 0;
+  double lambda = 0, oversample = 0;
+  Vec3d origin{0.0};
+  std::uint64_t objectHash = 0, pairs = 0, hits = 0, entries = 0, buckets = 0, slots = 0;
+  std::uint64_t bodyBytes = 0;  // between the header and the checksum
+};
+
+// The compressed body's counts against the file's size (version 3).
+void checkCompressedSizes(LhtHeader& h, std::uint64_t size, const std::string& name) {
+  for (int a = 0; a < 3; ++a)
+    if (h.cells[a] < 1 || h.cells[a] > kMaxCells)
+      throw bad(name, fmt::format("lattice cell count {} along {} is outside 1..{}", h.cells[a], "xyz"[a], kMaxCells));
+  std::uint64_t bits = 0;
+  try {
+    bits = CompressedTable::bitmapBits(h.cells, h.layout);
+  } catch (const Error& e) {
+    throw bad(name, e.what());
+  }
+  const std::uint64_t words = (bits + 63) / 64;
+  if (h.buckets != bits || h.slots != words)
+    throw bad(name, fmt::format("its header gives a bitmap of {} bits in {} words, but a {} x {} x {} lattice's pair "
+                                "space has {} bits in {} words",
+                                h.buckets, h.slots, h.cells[0], h.cells[1], h.cells[2], bits, words));
+  const std::uint64_t room = size - h.headerBytes - 8;
+  const std::uint64_t payload = payloadBytes(h.precision);
+  if (words > room / 8 || h.entries > (room - words * 8) / payload ||
+      words * 8 + h.entries * payload != room)
+    throw bad(name, fmt::format("truncated or padded: {} bytes, but its header describes a {}-word bitmap and {} "
+                                "payloads of {} bytes",
+                                size, words, h.entries, payload));
+  h.bodyBytes = room;
+}
+
+// `prefix` holds the first bytes of the file (up to the header's 108 or
+// 116), `size` the file's whole size: enough to refuse junk before reading
+// anything else.
+LhtHeader parseHeader(std::span<const std::uint8_t> prefix, std::uint64_t size, const std::string& name) {
+  if (prefix.size() < sizeof kMagic || std::memcmp(prefix.data(), kMagic, sizeof kMagic) != 0)
+    throw bad(name, "not a lattice hash table file (wrong magic number)");
+  if (size < kLhtHeaderBytes + 8 || prefix.size() < kLhtHeaderBytes)
+    throw bad(name, fmt::format("truncated: {} bytes, shorter than the {}-byte header and checksum", size,
+                                kLhtHeaderBytes + 8));
+  Reader r(prefix);
+  r.at = sizeof kMagic;
+  LhtHeader h;
+  h.version = static_cast<std::uint32_t>(r.uint(4));
+  if (h.version < 1 || h.version > kLhtVersion)
+    throw bad(name, fmt::format("format version {} but this program reads versions 1 to {}", h.version,
+                                kLhtVersion));
+  if (h.version == kLhtCompressedVersion) {
+    h.headerBytes = kLhtHeaderBytesV3;
+    if (size < kLhtHeaderBytesV3 + 8 || prefix.size() < kLhtHeaderBytesV3)
+      throw bad(name, fmt::format("truncated: {} bytes, shorter than the version-3 {}-byte header and checksum", size,
+                                  kLhtHeaderBytesV3 + 8));
+  }
+  for (int a = 0; a < 3; ++a) h.cells[a] = static_cast<int>(r.uint(2));
+  const auto precisionCode = static_cast<std::uint16_t>(r.uint(2));
+  // Version 1 had only the thesis's entry (and 0 in this field).
+  const std::optional<LhtPrecision> precision =
+      h.version == 1 ? std::optional(LhtPrecision::Thesis) : lhtPrecisionFromCode(precisionCode);
+  if (!precision)
+    throw bad(name, fmt::format("unknown entry precision code {} at byte 18 (this program knows {})", precisionCode,
+                                precisionCodes()));
+  h.precision = *precision;
+  // Versions 1-3 chained their slots (an overflow index in each); 4 probes open.
+  h.stride = h.version == kLhtVersion ? LatticeHashTable::slotStride(h.precision) : entryBytes(h.precision);
+  h.lambda = r.f64();
+  h.oversample = r.f64();
+  for (int a = 0; a < 3; ++a) h.origin[a] = r.f64();
+  h.objectHash = r.uint(8);
+  h.pairs = r.uint(8);
+  h.hits = r.uint(8);
+  h.entries = r.uint(8);
+  h.buckets = r.uint(8);
+  h.slots = r.uint(8);
+  if (h.version == kLhtCompressedVersion) {
+    const auto formCode = static_cast<std::uint16_t>(r.uint(2));
+    const auto layoutCode = static_cast<std::uint16_t>(r.uint(2));
+    const auto form = lhtFormFromCode(formCode);
+    if (!form || *form == LhtForm::OnDemand)
+      throw bad(name, fmt::format("unknown LHT form code {} at byte 108 (this program knows 0 hashed, 1 compressed)",
+                                  formCode));
+    if (layoutCode > static_cast<std::uint16_t>(PairLayout::Ordered))
+      throw bad(name, fmt::format("unknown pair layout code {} at byte 110 (0 symmetric, 1 ordered)", layoutCode));
+    h.form = *form;
+    h.layout = static_cast<PairLayout>(layoutCode);
+    if (h.form == LhtForm::Compressed) {
+      checkCompressedSizes(h, size, name);
+      return h;
+    }
+  }
+  // Size before anything else is read (it catches truncation with a clearer
+  // message than the checksum would), guarding the multiplication against
+  // absurd counts.
+  const std::uint64_t maxSlots = (size - h.headerBytes - 8) / h.stride;
+  if (h.slots > maxSlots || h.headerBytes + h.slots * h.stride + 8 != size) {
+    // slots comes from the file: keep the arithmetic for the message from overflowing.
+    const std::string expected = h.slots < (std::uint64_t(1) << 58)
+                                     ? fmt::format("{} bytes", h.headerBytes + h.slots * h.stride + 8)
+                                     : std::string("an impossible size");
+    throw bad(name, fmt::format("truncated or padded: {} bytes, but its header describes {} table slots of {} "
+                                "bytes ({})",
+                                size, h.slots, h.stride, expected));
+  }
+  h.bodyBytes = h.slots * h.stride;
+  return h;
+}
+
+// The header and the table, once the checksum has matched.
+LhtFile assemble(const LhtHeader& h, std::vector<std::uint8_t> body, const std::string& name,
+                 std::optional<std::uint64_t> expectedObjectHash, std::optional<LhtPrecision> expectedPrecision,
+                 std::optional<LhtForm> expectedForm) {
+  if (expectedPrecision && *expectedPrecision != h.precision)
+    throw bad(name, fmt::format("holds '{}' entries ({} bytes each) but '{}' entries were asked for (the scene's "
+                                "`precision` or --lht-precision)",
+                                lhtPrecisionName(h.precision), entryBytes(h.precision), lhtPrecisionName(*expectedPrecision)));
+  if (expectedForm && *expectedForm != h.form)
+    throw bad(name, fmt::format("holds a {} table but a {} one was asked for (the scene's `form` or --lht-form)",
+                                lhtFormName(h.form), lhtFormName(*expectedForm)));
+  if (expectedObjectHash && *expectedObjectHash != h.objectHash)
+    throw bad(name, fmt::format("rasterized from a different object definition (object hash {:016x}, the scene's "
+                                "object has {:016x})",
+                                h.objectHash, *expectedObjectHash));
+  try {
+    LhtFile lht;
+    lht.version = h.version;
+    lht.box = LatticeBox(h.cells, h.lambda, h.oversample, h.origin);
+    lht.objectHash = h.objectHash;
+    lht.pairs = h.pairs;
+    lht.hits = h.hits;
+    lht.form = h.form;
+    if (h.form == LhtForm::Compressed) {
+      std::vector<std::uint64_t> words(h.slots);
+      Reader r(body);
+      for (std::uint64_t& word : words) word = r.uint(8);
+      std::vector<std::uint8_t> payloads(body.begin() + static_cast<std::ptrdiff_t>(r.at), body.end());
+      std::vector<std::uint8_t>().swap(body);
+      lht.compressed = CompressedTable(h.cells, h.precision, h.layout, std::move(words), std::move(payloads), h.entries);
+    } else {
+      lht.table = h.version == kLhtVersion ? LatticeHashTable(h.precision, std::move(body), h.buckets, h.entries)
+                                           : readChainedTable(h.precision, body, h.buckets, h.entries);
+    }
+    return lht;
+  } catch (const Error& e) {
+    throw bad(name, fmt::format("inconsistent contents ({})", e.what()));
+  }
+}
+
+std::uint64_t readChecksum(std::span<const std::uint8_t> eight) {
+  Reader r(eight);
+  return r.uint(8);
+}
+
+}  // namespace
+
+LhtFile parseLht(std::span<const std::uint8_t> bytes, const std::string& name,
+                 std::optional<std::uint64_t> expectedObjectHash, std::optional<LhtPrecision> expectedPrecision,
+                 std::optional<LhtForm> expectedForm) {
+  const LhtHeader h = parseHeader(bytes.first(std::min(bytes.size(), kLhtHeaderBytesV3)), bytes.size(), name);
+  const std::size_t payloadEnd = bytes.size() - 8;
+  if (readChecksum(bytes.subspan(payloadEnd)) != fnv1a64(bytes.first(payloadEnd)))
+    throw bad(name, "checksum mismatch: the file is corrupted");
+  const auto* first = bytes.data() + h.headerBytes;
+  return assemble(h, std::vector<std::uint8_t>(first, first + h.bodyBytes), name, expectedObjectHash,
+                  expectedPrecision, expectedForm);
+}
+
+void writeLhtFile(const std::filesystem::path& path, const LhtFile& lht) {
+  const std::vector<std::uint8_t> bytes = serializeLht(lht);
+  writeFileAtomically(path, bytes);
+}
+
+LhtFile readLhtFile(const std::filesystem::path& path, std::optional<std::uint64_t> expectedObjectHash,
+                    std::optional<LhtPrecision> expectedPrecision, std::optional<LhtForm> expectedForm) {
+  // Streamed: the header is checked against the file's size before the
+  // table is allocated or read, so junk costs a few bytes of reading.
+  const std::string name = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(ErrorKind::Input, fmt::format("{}: cannot open: {}", name, std::strerror(errno)));
+  std::error_code ec;
+  const std::uint64_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw Error(ErrorKind::Input, fmt::format("{}: not a regular file: {}", name, ec.message()));
+  auto readInto = [&](std::uint8_t* to, std::size_t n) {
+    in.read(reinterpret_cast<char*>(to), static_cast<std::streamsize>(n));
+    if (static_cast<std::size_t>(in.gcount()) != n) throw bad(name, "truncated while reading (the file shrank?)");
+  };
+  std::uint8_t header[kLhtHeaderBytesV3];
+  in.read(reinterpret_cast<char*>(header), kLhtHeaderBytes);
+  std::size_t got = static_cast<std::size_t>(in.gcount());
+  // Version 3 has 8 more header bytes; the version sits at bytes 8..11.
+  if (got == kLhtHeaderBytes && header[8] == kLhtCompressedVersion && !header[9] && !header[10] && !header[11]) {
+    in.read(reinterpret_cast<char*>(header + kLhtHeaderBytes), kLhtHeaderBytesV3 - kLhtHeaderBytes);
+    got += static_cast<std::size_t>(in.gcount());
+  }
+  const LhtHeader h = parseHeader(std::span<const std::uint8_t>(header, got), size, name);
+  std::vector<std::uint8_t> body(h.bodyBytes);
+  readInto(body.data(), body.size());
+  std::uint8_t tail[8];
+  readInto(tail, sizeof tail);
+  if (readChecksum(tail) != fnv1a64(body, fnv1a64(std::span<const std::uint8_t>(header, h.headerBytes))))
+    throw bad(name, "checksum mismatch: the file is corrupted");
+  return assemble(h, std::move(body), name, expectedObjectHash, expectedPrecision, expectedForm);
+}
+
+}  // namespace lattice::lht

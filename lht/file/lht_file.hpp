@@ -1,0 +1,112 @@
+#pragma once
+// The .lht file: a rasterized lattice saved so a scene need not rasterize it
+// again. Layout (all integers little-endian, reals IEEE-754 binary64):
+//
+//   offset size
+//        0    8  magic "LATLHT\r\n" (the CR LF catches text-mode mangling)
+//        8    4  version: 4 for the hashed form (kLhtVersion), 3 for the
+//                compressed one (kLhtCompressedVersion); 1 and 2, and 3's
+//                hashed form, are still read (see below)
+//       12    6  cells along x, y, z (u16 each, 1..255)
+//       18    2  entry precision code (LhtPrecision: 0 thesis, 1 wide, 2 compact;
+//                reserved and 0 in version 1, whose entries are all the thesis's)
+//       20    8  lambda (object units)
+//       28    8  f_lat
+//       36   24  lattice origin in object coordinates (x, y, z)
+//       60    8  object hash (FNV-1a 64 of the object's definition)
+//       68    8  N_lp (pairs, as eq. 1.3 counts them)
+//       76    8  N_iz (hitting pairs, same counting)
+//       84    8  entries
+//       92    8  buckets (primary slots)
+//      100    8  slots (primary + overflow)
+//      108  e*n  the n slots, e = entryBytes(precision) bytes each, as in memory
+//      end    8  FNV-1a 64 of every byte before it
+//
+// That is version 2 (and 1): the thesis's chained table, read into the
+// open-addressed layout (lht/file/chained_table.hpp). Version 4 has version 2's
+// header with the open-addressed table of lht/table/hash_table.hpp as the body:
+//       92    8  capacity (slots, a power of two)
+//      100    8  slots (the same number)
+//      108  e*n  the n slots, e = LatticeHashTable::slotStride(precision)
+//                = entryBytes(precision) - 4 bytes each (no overflow
+//                index), an empty slot all zero, as in memory and in the
+//                firmware's flash
+//
+// Version 3 adds 8 header bytes and, for the compressed form, its own body:
+//      108    2  form code (LhtForm: 0 hashed, 1 compressed)
+//      110    2  pair layout (PairLayout: 0 symmetric, 1 ordered; 0 when hashed)
+//      112    4  reserved, 0
+//   hashed: fields 92 and 100 and the slots as in version 2, from byte 116
+//   (read, never written: hashed tables are written as version 4).
+//   compressed: field 92 holds the bitmap's bits (which the cells and the
+//   layout decide; a mismatch is refused) and field 100 its 64-bit words;
+//   from byte 116 the words (8 bytes each), then `entries` payloads of
+//   payloadBytes(precision) bytes, then the checksum.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "foundation/fnv1a.hpp"
+#include "lht/grid/lattice_box.hpp"
+#include "lht/table/compressed_table.hpp"
+#include "lht/table/lht_form.hpp"
+#include "lht/table/on_demand_table.hpp"
+#include "lht/table/hash_table.hpp"
+
+namespace lattice::lht {
+
+inline constexpr std::uint32_t kLhtVersion = 4;            // hashed tables are written so (open-addressed)
+inline constexpr std::uint32_t kLhtCompressedVersion = 3;  // compressed tables are written so
+inline constexpr std::size_t kLhtHeaderBytes = 108;
+inline constexpr std::size_t kLhtHeaderBytesV3 = 116;
+
+struct LhtFile {
+  std::uint32_t version = kLhtVersion;  // as read; written: kLhtVersion, or kLhtCompressedVersion when compressed
+  LatticeBox box{{1, 1, 1}, 1.0, 1.0, Vec3d(0.0)};
+  std::uint64_t objectHash = 0;
+  std::uint64_t pairs = 0;  // N_lp
+  std::uint64_t hits = 0;   // N_iz
+  LhtForm form = LhtForm::Hashed;
+  LatticeHashTable table;      // the hashed form's table (empty when compressed)
+  CompressedTable compressed;  // the compressed form's table (empty otherwise)
+  std::shared_ptr<const OnDemandTable> onDemand;  // the on-demand form's table (null otherwise)
+
+  LhtPrecision precision() const {
+    return form == LhtForm::Compressed ? compressed.precision()
+           : form == LhtForm::OnDemand ? onDemand->precision()
+                                       : table.precision();
+  }
+  // Entries held (on demand: the hits stored so far).
+  std::uint64_t entryCount() const {
+    return form == LhtForm::Compressed ? compressed.entryCount()
+           : form == LhtForm::OnDemand ? onDemand->entryCount()
+                                       : table.entryCount();
+  }
+  // The table's bytes in memory (compressed: with its rank directory; on demand: so far).
+  std::uint64_t tableBytes() const {
+    return form == LhtForm::Compressed ? compressed.bytes()
+           : form == LhtForm::OnDemand ? onDemand->bytes()
+                                       : table.bytes();
+  }
+};
+
+std::vector<std::uint8_t> serializeLht(const LhtFile& lht);
+// `name` is used in messages. With expectedObjectHash, a file rasterized
+// from another object definition is refused; with expectedPrecision, a file
+// whose entries have another precision (a cache must not silently give a
+// picture of another accuracy than asked for); with expectedForm, a file of
+// the other form.
+LhtFile parseLht(std::span<const std::uint8_t> bytes, const std::string& name,
+                 std::optional<std::uint64_t> expectedObjectHash = std::nullopt,
+                 std::optional<LhtPrecision> expectedPrecision = std::nullopt,
+                 std::optional<LhtForm> expectedForm = std::nullopt);
+
+void writeLhtFile(const std::filesystem::path& path, const LhtFile& lht);  // atomically
+LhtFile readLhtFile(const std::filesystem::path& path, std::optional<std::uint64_t> expectedObjectHash = std::nullopt,
+                    std::optional<LhtPrecision> expectedPrecision = std::nullopt,
+                    std::optional<LhtForm> expectedForm = std::nullopt);
+
+}  // namespace lattice::lht

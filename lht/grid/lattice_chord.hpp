@@ -1,0 +1,86 @@
+#pragma once
+// A world ray carried into a lattice's own coordinates and cut to its box:
+// the per-instance work of a lattice leaf (lht/leaf/lattice_leaf.cpp) before any
+// table read.
+//
+// Method and tunables (none tunable; each part gives the last bit the code it
+// replaced gave, so pictures do not change):
+// * LatticeAffine: world -> lattice as three columns and a translation (3x4,
+//   no w row), applied in glm's order for a 4x4 matrix times (p, 1):
+//   (m0 x + m1 y) + (m2 z + m3). A direction drops the m3 * 0 term, which can
+//   only change the sign of a zero component; the clip tests d == 0 and the
+//   rounding maps -0 and +0 alike.
+// * clipToCells: the slab test of Bounds::clip over [0, cells] along the
+//   whole line, with the three reciprocals taken first (independent
+//   divisions the CPU overlaps) and Bounds::clip's compare and swap as
+//   selects: the same t0 and t1.
+// * nearestGridCoordinate: std::round (halves away from zero) without the
+//   library call, after the clamp to [0, cells]: truncate, then add one when
+//   the fractional part, exact in IEEE arithmetic below 2^24, is at least
+//   1/2. Clamping first and rounding after gives what rounding and then
+//   clamping did, because the bounds are integers; NaN clamps to 0.
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+
+#include "foundation/ray.hpp"
+#include "foundation/vec.hpp"
+
+namespace lattice::lht {
+
+template <typename T>
+class LatticeAffine {
+ public:
+  explicit LatticeAffine(const Mat4<T>& m) : x_(m[0]), y_(m[1]), z_(m[2]), w_(m[3]) {}
+
+  Ray<T> apply(const Ray<T>& ray) const {
+    const Vec3<T>& o = ray.origin;
+    const Vec3<T>& d = ray.direction;
+    return {(x_ * o.x + y_ * o.y) + (z_ * o.z + w_), (x_ * d.x + y_ * d.y) + z_ * d.z};
+  }
+
+ private:
+  Vec3<T> x_, y_, z_, w_;
+};
+
+// The part [t0, t1] of the ray's whole line inside [0, cells]; false if none.
+// Locals, not the out-parameters, carry t0 and t1 through the loop, so they
+// stay in registers.
+template <typename T>
+inline bool clipToCells(const Ray<T>& ray, const Vec3<T>& cells, T& t0Out, T& t1Out) {
+  T inv[3];
+  for (int a = 0; a < 3; ++a) inv[a] = ray.direction[a] == T(0) ? T(0) : T(1) / ray.direction[a];
+  T t0 = -std::numeric_limits<T>::infinity(), t1 = std::numeric_limits<T>::infinity();
+  for (int a = 0; a < 3; ++a) {
+    const T o = ray.origin[a];
+    if (ray.direction[a] == T(0)) {
+      if (o < T(0) || o > cells[a]) return false;
+      continue;
+    }
+    const T toLow = (T(0) - o) * inv[a], toHigh = (cells[a] - o) * inv[a];
+    // Bounds::clip's swap as selects (a NaN from 0 * inf falls the same way).
+    const bool swap = toLow > toHigh;
+    const T ta = swap ? toHigh : toLow, tb = swap ? toLow : toHigh;
+    t0 = ta > t0 ? ta : t0;
+    t1 = tb < t1 ? tb : t1;
+    if (t0 > t1) return false;
+  }
+  t0Out = t0;
+  t1Out = t1;
+  return true;
+}
+
+// The grid coordinate nearest v, within [0, cells].
+template <typename T>
+std::uint8_t nearestGridCoordinate(T v, int cells) {
+  if constexpr (kIsIeee<T>) {
+    const T top = T(cells);
+    const T x = v >= T(0) ? (v <= top ? v : top) : T(0);
+    const int i = static_cast<int>(x);
+    return static_cast<std::uint8_t>(i + (x - T(i) >= T(0.5) ? 1 : 0));
+  } else {
+    return static_cast<std::uint8_t>(std::clamp(static_cast<int>(roundNearest(v)), 0, cells));
+  }
+}
+
+}  // namespace lattice::lht

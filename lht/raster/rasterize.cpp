@@ -1,0 +1,201 @@
+#include "lht/raster/rasterize.hpp"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+
+#include "foundation/progress.hpp"
+#include "foundation/threads.hpp"
+
+namespace lattice::lht {
+
+namespace {
+
+// Traces one segment in object coordinates. The segment's ray keeps s as its
+// parameter (an affine map preserves t), so the hit's t is s directly.
+bool traceSegment(const Primitive<double>& object, const Mat4d& latticeToObject, const Vec3d& from,
+                  const Vec3d& to, double& s, Vec3d& normal) {
+  const Ray<double> lattice{from, to - from};
+  const Ray<double> ray = lattice.transformed(latticeToObject);
+  Hit<double> hit;
+  if (!object.firstHit(ray, 0.0, 1.0, hit)) return false;
+  s = hit.t;
+  normal = hit.normal;
+  return true;
+}
+
+}  // namespace
+
+PairTracer::PairTracer(const LatticeBox& box, const Primitive<double>& object, double grazeTolerance)
+    : PairTracer(box, object, nullptr, grazeTolerance) {}
+
+PairTracer::PairTracer(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
+                       double grazeTolerance)
+    : box_(box), object_(object), grazeTolerance_(grazeTolerance), latticeToObject_(box.latticeToObject()) {
+  if (cover) cull_ = CoverCull(cover->mapped(box.objectToLattice()), box.cells());
+  // The object's box in lattice coordinates, grown by the graze tolerance:
+  // a segment that misses it cannot touch the object.
+  const Bounds<double>& b = object.bounds();
+  if (b.isFinite() && !b.empty()) {
+    bounds_ = transformBounds(b, box.objectToLattice());
+    bounds_.lo -= Vec3d(2 * grazeTolerance);
+    bounds_.hi += Vec3d(2 * grazeTolerance);
+  } else {
+    bounds_ = Bounds<double>::infinite();
+  }
+}
+
+bool PairTracer::trace(const LatticePoint& in, const LatticePoint& out, RasterHit& hit) const {
+  bool traced = false;
+  return in != out && trace(in, box_.facesOf(in), out, box_.facesOf(out), hit, traced);
+}
+
+bool PairTracer::trace(const LatticePoint& in, std::uint8_t facesIn, const LatticePoint& out, std::uint8_t facesOut,
+                       RasterHit& hit, bool& traced, const CoverCull::Fan* fan) const {
+  traced = false;
+  // Points sharing a face span a segment inside that face, and the object
+  // lies at least lambda/2 inside the box: a certain miss.
+  if (facesIn & facesOut) return false;
+  const Vec3d from = in.toVec(), to = out.toVec();
+  if (!(fan ? cull_.mayTouch(*fan, to, facesOut) : cull_.mayTouch(from, to))) return false;
+  double t0, t1;
+  if (!bounds_.clip(Ray<double>{from, to - from}, 0.0, 1.0, t0, t1)) return false;
+  traced = true;
+  hit = RasterHit{in, out, 0.0, {}};
+  if (!traceClosed(from, to, hit.s, hit.normal)) return false;
+  hit.normal = glm::normalize(hit.normal);
+  return true;
+}
+
+// The segment against the closed object: if it misses, the four segments
+// shifted sideways by the graze tolerance decide whether it touches the
+// surface (an exactly tangent segment gives a double root that rounding may
+// lose either way; a shifted one cuts a clean chord).
+bool PairTracer::traceClosed(const Vec3d& from, const Vec3d& to, double& s, Vec3d& normal) const {
+  if (traceSegment(object_, latticeToObject_, from, to, s, normal)) return true;
+  const Vec3d d = to - from;
+  const Vec3d a = std::abs(d.x) <= std::abs(d.y) && std::abs(d.x) <= std::abs(d.z) ? Vec3d(1, 0, 0)
+                  : std::abs(d.y) <= std::abs(d.z)                                 ? Vec3d(0, 1, 0)
+                                                                                  : Vec3d(0, 0, 1);
+  const Vec3d u = glm::normalize(glm::cross(d, a));
+  const Vec3d v = glm::normalize(glm::cross(d, u));
+  const double e = grazeTolerance_;
+  bool found = false;
+  for (const Vec3d& offset : {u * e, -u * e, v * e, -v * e}) {
+    double sOffset;
+    Vec3d nOffset;
+    if (traceSegment(object_, latticeToObject_, from + offset, to + offset, sOffset, nOffset) &&
+        (!found || sOffset < s)) {
+      found = true;
+      s = sOffset;
+      normal = nOffset;
+    }
+  }
+  return found;
+}
+
+namespace {
+
+class Rasterizer {
+ public:
+  Rasterizer(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
+             const RasterOptions& options)
+      : options_(options), points_(box.boundaryPoints()), tracer_(box, object, cover, options.grazeTolerance) {
+    faces_.reserve(points_.size());
+    for (const LatticePoint& p : points_) faces_.push_back(box.facesOf(p));
+    // Face masks have 6 bits: every pair's multiplicity is one of 64 x 64
+    // (a look-up instead of three popcounts, which are library calls on x86-64's baseline).
+    for (unsigned a = 0; a < 64; ++a)
+      for (unsigned b = 0; b < 64; ++b)
+        multiplicity_[a * 64 + b] = static_cast<std::uint8_t>(
+            LatticeBox::pairMultiplicity(static_cast<std::uint8_t>(a), static_cast<std::uint8_t>(b)));
+    perPoint_.resize(points_.size());
+  }
+
+  RasterResult run() {
+    const auto start = std::chrono::steady_clock::now();
+    unsigned threads = options_.threads ? options_.threads : hardwareThreads();
+    threads = std::min<unsigned>(threads, static_cast<unsigned>(std::max<std::size_t>(1, points_.size())));
+    Progress progress("rasterize", points_.size(), "points");
+    if (!options_.progress) progress.setEnabled(false);
+
+    std::vector<RasterStats> stats(threads);
+    std::vector<CoverCull::Fan> fans(threads);
+    const auto work = [this, &stats, &fans, &progress](unsigned w) {
+      for (std::size_t i = next_.fetch_add(1); i < points_.size(); i = next_.fetch_add(1)) {
+        tracePoint(i, stats[w], fans[w]);
+        progress.advance();
+      }
+    };
+    // runWorkers keeps worker 0 in the caller's thread (no allocator arena of
+    // its own) and carries the first exception (std::bad_alloc) to the caller.
+    runWorkers(threads, work, [this] { next_.store(points_.size()); });
+    progress.finish();
+
+    RasterResult result;
+    for (const RasterStats& s : stats) {
+      result.stats.pairs += s.pairs;
+      result.stats.hits += s.hits;
+      result.stats.distinctPairs += s.distinctPairs;
+      result.stats.traced += s.traced;
+    }
+    // The lists stay as made (each sized exactly): joining them would hold
+    // every hit twice (lht/raster/raster_hits.hpp).
+    result.hits = RasterHits(std::move(perPoint_));
+    result.stats.buildMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+  }
+
+ private:
+  void tracePoint(std::size_t i, RasterStats& stats, CoverCull::Fan& fan) {
+    const LatticePoint& in = points_[i];
+    std::vector<RasterHit>& out = perPoint_[i];
+    tracer_.cull().aim(in.toVec(), faces_[i], fan);
+    for (std::size_t j = 0; j < points_.size(); ++j) {
+      const int multiplicity = multiplicity_[faces_[i] * 64u + faces_[j]];
+      if (multiplicity == 0) continue;
+      stats.pairs += static_cast<std::uint64_t>(multiplicity);
+      if (i == j) continue;  // a point, not a segment
+      ++stats.distinctPairs;
+      RasterHit hit;
+      bool traced = false;
+      const bool hits = tracer_.trace(in, faces_[i], points_[j], faces_[j], hit, traced, &fan);
+      if (traced) ++stats.traced;
+      if (hits) {
+        stats.hits += static_cast<std::uint64_t>(multiplicity);
+        out.push_back(hit);
+      }
+    }
+    out.shrink_to_fit();  // growth by doubling left up to half of it unused
+  }
+
+  RasterOptions options_;
+  std::vector<LatticePoint> points_;
+  PairTracer tracer_;
+  std::vector<std::uint8_t> faces_;
+  std::array<std::uint8_t, 64 * 64> multiplicity_{};  // by (faces of p_i) * 64 + faces of p_o
+  std::vector<std::vector<RasterHit>> perPoint_;
+  std::atomic<std::size_t> next_{0};
+};
+
+}  // namespace
+
+RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const RasterOptions& options) {
+  return rasterize(box, object, nullptr, options);
+}
+
+RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
+                       const RasterOptions& options) {
+  Rasterizer rasterizer(box, object, cover, options);
+  return rasterizer.run();
+}
+
+RasterResult rasterize(const LatticeBox& box, const LatticeObject& object, const RasterOptions& options) {
+  return rasterize(box, *object.primitive, object.cover ? &*object.cover : nullptr, options);
+}
+
+}  // namespace lattice::lht

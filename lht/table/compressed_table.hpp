@@ -1,0 +1,87 @@
+#pragma once
+// The compressed LHT (thesis sec. 5.2.1: "the pairs are enumerable, so the
+// key need not be stored"): no key, no overflow chain, exact membership.
+//
+// Method and tunables:
+// * Pair space. Boundary points are numbered by lht/grid/boundary_index.hpp
+//   (P of them). The rasterizer's hits are symmetric in practice ((p_i, p_o)
+//   hits exactly when (p_o, p_i) does: the same segment), so the bitmap has
+//   one bit per unordered pair {i, o}, i < o, at o (o - 1) / 2 + i
+//   (P (P - 1) / 2 bits), and each set bit owns two payloads, i -> o first.
+//   A hit list that is not symmetric (it has never been seen, but rounding
+//   could make one) gets the `ordered` layout instead: one bit per ordered
+//   pair at i P + o (P^2 bits), one payload per bit. Either way a pair whose
+//   bit is clear has no entry, so a ray that misses can never get a hit.
+// * Rank directory: a 32-bit count of the set bits before every 512-bit
+//   block (8 words; 1/16 of the bitmap), so the rank of a bit is one count
+//   plus at most 8 popcounts. It is derived from the bitmap when a table is
+//   built or read, never stored in a file.
+// * Payloads: payloadBytes(precision) each (4, 6 or 3 bytes), the entry
+//   precision's bits unchanged, in bit order; identical bytes to the hashed
+//   table's payloads, so pictures are identical.
+// * kMaxBitmapBits = 2^34 (2 GiB of bitmap): a pair space beyond it is
+//   refused, naming the lattice's size. The table 1 shapes need under 2^23.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "lht/grid/boundary_index.hpp"
+#include "lht/table/entry_codec.hpp"
+#include "lht/raster/rasterize.hpp"
+
+namespace lattice::lht {
+
+enum class PairLayout : std::uint16_t {
+  Symmetric = 0,  // one bit per unordered pair, two payloads per bit
+  Ordered = 1,    // one bit per ordered pair, one payload per bit
+};
+
+class CompressedTable {
+ public:
+  static constexpr std::uint64_t kMaxBitmapBits = std::uint64_t(1) << 34;
+  static constexpr std::uint64_t kBlockWords = 8;  // rank directory granularity (512 bits)
+
+  // An empty table of a one-cell box (28 pair bits, one word).
+  CompressedTable() : CompressedTable({1, 1, 1}, LhtPrecision::Thesis, PairLayout::Symmetric, {0}, {}, 0) {}
+  // From rasterized hits (distinct keys, all on the box's surface) of a box of `cells`.
+  CompressedTable(const RasterHits& hits, const std::array<int, 3>& cells, LhtPrecision precision);
+  // Adopts a file's bitmap words and payload bytes; throws lattice::Error(Input)
+  // when their sizes or the number of set bits disagree with `entries`.
+  CompressedTable(const std::array<int, 3>& cells, LhtPrecision precision, PairLayout layout,
+                  std::vector<std::uint64_t> words, std::vector<std::uint8_t> payloads, std::uint64_t entries);
+
+  // The bits of the pair space of a box (throws Error(Input) above kMaxBitmapBits).
+  static std::uint64_t bitmapBits(const std::array<int, 3>& cells, PairLayout layout);
+
+  // The payload of (in, out), payloadBytes(precision()) bytes; null if absent.
+  const std::uint8_t* findPayload(const LatticePoint& in, const LatticePoint& out) const;
+  std::optional<LhtHit> find(const LatticePoint& in, const LatticePoint& out) const;
+
+  LhtPrecision precision() const { return precision_; }
+  PairLayout layout() const { return layout_; }
+  std::uint64_t entryCount() const { return entries_; }
+  std::uint64_t bitCount() const { return bits_; }
+  const std::vector<std::uint64_t>& words() const { return words_; }
+  const std::vector<std::uint8_t>& payloads() const { return payloads_; }
+  std::uint64_t bitmapBytes() const { return words_.size() * sizeof(std::uint64_t); }
+  std::uint64_t rankBytes() const { return ranks_.size() * sizeof(std::uint32_t); }
+  // Everything held: bitmap, rank directory, payloads.
+  std::uint64_t bytes() const { return bitmapBytes() + rankBytes() + payloads_.size(); }
+  double bytesPerEntry() const { return entries_ ? double(bytes()) / double(entries_) : 0.0; }
+
+ private:
+  void buildRanks();
+
+  BoundaryIndex index_;
+  LhtPrecision precision_;
+  PairLayout layout_;
+  std::size_t stride_;
+  std::uint64_t bits_ = 0;
+  std::uint64_t entries_ = 0;
+  std::vector<std::uint64_t> words_;
+  std::vector<std::uint32_t> ranks_;  // set bits before each block of kBlockWords words
+  std::vector<std::uint8_t> payloads_;
+};
+
+}  // namespace lattice::lht

@@ -1,0 +1,99 @@
+#include "loader/table_build.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <functional>
+
+#include "foundation/error.hpp"
+#include "lht/raster/lattice_object.hpp"
+#include "loader/lattice_scene_loader.hpp"
+
+namespace lattice::lht {
+
+namespace {
+
+// The steps every table goes through; `hashFor` names the object for the
+// form the table ends up in.
+BuiltTable packTable(const LatticeObject& object, double lambda, double oversample, const TableSettings& settings,
+                     LhtForm tableForm,
+                     const std::function<LhtPrecision(std::uint64_t, std::uint64_t)>& chooseForm,
+                     const std::function<std::uint64_t(LhtPrecision)>& hashFor) {
+  if (tableForm == LhtForm::OnDemand)
+    throw Error(ErrorKind::Usage, "an on-demand table is built while rendering, not rasterized; use --form hashed or "
+                                  "compressed");
+  BuiltTable built;
+  LhtFile& lht = built.lht;
+  lht.box = LatticeBox(object.bounds, lambda, oversample);
+  RasterOptions options;
+  options.progress = settings.progress;
+  options.threads = settings.threads;
+  const RasterResult raster = rasterize(lht.box, object, options);
+  const LhtPrecision form = chooseForm(raster.hits.size(), raster.hits.bytes());
+  built.stats = raster.stats;
+  lht.objectHash = hashFor(form);
+  lht.pairs = raster.stats.pairs;
+  lht.hits = raster.stats.hits;
+  lht.form = tableForm;
+  if (tableForm == LhtForm::Compressed)
+    lht.compressed = CompressedTable(raster.hits, lht.box.cells(), form);
+  else
+    lht.table = LatticeHashTable(raster.hits, form);
+  return built;
+}
+
+LatticeObject shapeObject(const TableRequest& request) {
+  if (request.shape == "sphere") return sphereObject(request.radius);
+  if (request.shape == "capsule") return capsuleObject(request.radius, request.length);
+  throw Error(ErrorKind::Usage, fmt::format("unknown --shape '{}'; use sphere or capsule", request.shape));
+}
+
+LatticeDefinition findDefinition(const TableRequest& request) {
+  if (request.name.empty())
+    throw Error(ErrorKind::Usage, "--scene needs --name NAME, the [[lattices]] entry to rasterize");
+  const SceneWithLattices loaded = loadSceneWithLattices(request.scene, request.settings);
+  const auto& defs = loaded.lattices;
+  const auto it = std::find_if(defs.begin(), defs.end(), [&](const auto& d) { return d->name == request.name; });
+  if (it == defs.end()) {
+    std::string names;
+    for (const auto& d : defs) names += (names.empty() ? "" : ", ") + d->name;
+    throw Error(ErrorKind::Input, fmt::format("{}: no [[lattices]] entry named '{}' (defined: {})",
+                                              request.scene.string(), request.name, names.empty() ? "none" : names));
+  }
+  return **it;
+}
+
+}  // namespace
+
+BuiltTable buildLatticeTable(const LatticeDefinition& lattice, const TableSettings& settings) {
+  try {
+    const LatticeObject solid = sceneObject(lattice.object, lattice.objectText);
+    const LhtPrecision requested = lattice.precisionUnder(settings);
+    return packTable(
+        solid, lattice.lambda, lattice.oversample, settings, lattice.formUnder(settings),
+        [&](std::uint64_t entries, std::uint64_t hitListBytes) {
+          return settings.packing ? settings.packing(lattice, requested, entries, hitListBytes) : requested;
+        },
+        [&](LhtPrecision form) { return lattice.hashFor(form); });
+  } catch (const Error& e) {
+    throw Error(e.kind(), fmt::format("{}: lattice '{}': {}", lattice.origin, lattice.name, e.what()));
+  }
+}
+
+BuiltTable buildLatticeTable(const TableRequest& request) {
+  const bool fromScene = !request.scene.empty();
+  if (fromScene == !request.shape.empty())
+    throw Error(ErrorKind::Usage, "rasterize needs either --scene FILE --name NAME or --shape sphere|capsule");
+  if (fromScene) {
+    LatticeDefinition lattice = findDefinition(request);
+    if (request.oversample) lattice.oversample = *request.oversample;  // the request overrides the scene
+    return buildLatticeTable(lattice, request.settings);
+  }
+  const LatticeObject object = shapeObject(request);
+  const LhtPrecision form = request.settings.precision.value_or(LhtPrecision::Thesis);
+  return packTable(
+      object, 1.0, request.oversample.value_or(1.0), request.settings, request.settings.form.value_or(LhtForm::Hashed),
+      [&](std::uint64_t, std::uint64_t) { return form; }, [&](LhtPrecision) { return object.hash(); });
+}
+
+}  // namespace lattice::lht

@@ -1,0 +1,95 @@
+#include "render/scene/scene.hpp"
+
+#include <fmt/format.h>
+
+#include "render/shapes/csg.hpp"
+#include "foundation/transform_condition.hpp"
+#include "foundation/error.hpp"
+#include "foundation/arithmetics.hpp"
+
+namespace lattice {
+
+std::string LeafDesc::bake(SceneBaker&) const {
+  throw Error(ErrorKind::Usage, fmt::format("{} cannot be baked for the firmware (docs/firmware.md lists the leaves "
+                                            "a baked scene can hold)", describe()));
+}
+
+NodeDesc NodeDesc::makeLeaf(LeafDescPtr leafDesc, std::string where) {
+  NodeDesc n;
+  n.kind = Kind::Leaf;
+  n.leaf = std::move(leafDesc);
+  n.origin = std::move(where);
+  return n;
+}
+
+NodeDesc NodeDesc::makeOperation(Kind kind, std::vector<NodeDesc> operands, std::string where) {
+  NodeDesc n;
+  n.kind = kind;
+  n.children = std::move(operands);
+  n.origin = std::move(where);
+  return n;
+}
+
+std::optional<MaterialId> SceneDesc::findMaterial(const std::string& name) const {
+  for (std::size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].name == name) return static_cast<MaterialId>(i);
+  return std::nullopt;
+}
+
+MaterialId SceneDesc::addMaterial(const std::string& name, const Material<double>& material) {
+  if (auto id = findMaterial(name)) {
+    materials[*id].material = material;
+    return *id;
+  }
+  materials.push_back({name, material});
+  return static_cast<MaterialId>(materials.size() - 1);
+}
+
+template <typename T>
+PrimitivePtr<T> buildPrimitive(const NodeDesc& node, const Mat4d& parentToWorld, const BuildOptions& options,
+                               MaterialId inherited) {
+  // Fig. 4: transforms on inner nodes are pushed down, so each leaf gets the
+  // full object -> world matrix and the set operations hold none.
+  const Mat4d toWorld = parentToWorld * node.transform;
+  const MaterialId material = node.material.value_or(inherited);
+  const std::string where = node.origin.empty() ? std::string("scene") : node.origin;
+  if (node.kind == NodeDesc::Kind::Leaf) {
+    if (!node.leaf) throw Error(ErrorKind::Internal, fmt::format("{}: leaf node without a leaf description", where));
+    // Scene files are held to the limit of every arithmetic when loaded; an
+    // arithmetic that follows less (float) refuses here, naming the object.
+    const std::string problem = conditionProblemFor<T>(toWorld);
+    if (!problem.empty()) throw Error(ErrorKind::Input, fmt::format("{}: {}", where, problem));
+    PrimitivePtr<T> p;
+    try {
+      p = node.leaf->template build<T>(toWorld, material, options);
+    } catch (const Error& e) {
+      // Leaves report what is wrong but not where; name the object, unless
+      // the message already names a place in the scene file.
+      const std::string message = e.what();
+      const std::string file = where.substr(0, where.find(':'));
+      if (message.rfind(file + ":", 0) == 0) throw;
+      throw Error(e.kind(), fmt::format("{}: {}", where, message));
+    }
+    if (!p) throw Error(ErrorKind::Internal, fmt::format("{}: {} built no primitive", where, node.leaf->describe()));
+    return p;
+  }
+  if (node.children.empty())
+    throw Error(ErrorKind::Input, fmt::format("{}: a set operation needs at least one child object", where));
+  std::vector<PrimitivePtr<T>> children;
+  children.reserve(node.children.size());
+  for (const NodeDesc& child : node.children) children.push_back(buildPrimitive<T>(child, toWorld, options, material));
+  // A set operation of one operand is that operand; skipping the node saves
+  // a span merge per ray.
+  if (children.size() == 1) return std::move(children.front());
+  const CsgOp op = node.kind == NodeDesc::Kind::Union          ? CsgOp::Union
+                   : node.kind == NodeDesc::Kind::Intersection ? CsgOp::Intersection
+                                                               : CsgOp::Difference;
+  return makeCsgNode<T>(op, std::move(children));
+}
+
+#define LATTICE_INSTANTIATE(T) \
+  template PrimitivePtr<T> buildPrimitive<T>(const NodeDesc&, const Mat4d&, const BuildOptions&, MaterialId);
+LATTICE_FOR_EACH_ARITHMETIC(LATTICE_INSTANTIATE)
+#undef LATTICE_INSTANTIATE
+
+}  // namespace lattice
