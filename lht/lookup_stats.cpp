@@ -17,10 +17,10 @@ LookupStats::LookupStats(std::string lattice, std::shared_ptr<const LhtFile> lht
 LookupSummary LookupStats::summary() const {
   LookupSummary s;
   s.lattice = lattice_;
-  s.lookups = lookups_.load();
-  s.hits = hits_.load();
+  s.lookups = lookups_.value();
+  s.hits = hits_.value();
   s.misses = s.lookups - s.hits;
-  s.offSurface = offSurface_.load();
+  s.offSurface = offSurface_.value();
   const std::uint64_t p = index_.count();
   s.pairSpace = p * (p - 1);
   s.entries = lht_->entryCount();
