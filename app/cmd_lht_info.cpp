@@ -41,7 +41,7 @@ void runLhtInfo(const std::string& path) {
   fmt::print("file:          {}\n", path);
   const LhtPrecisionInfo& precision = lhtPrecisionInfo(lht.precision());
   fmt::print("format:        version {}\n", lht.version);
-  fmt::print("form:          {}\n", lht.form == LhtForm::Compressed
+  fmt::print("form:          {}\n", lht.form() == LhtForm::Compressed
                                         ? "compressed (no key, no chain: a rank bitmap over the pair space)"
                                         : lht.version < kLhtVersion
                                               ? "hashed (read from the chained layout, thesis sec. 2.3; held open-addressed)"
@@ -60,10 +60,10 @@ void runLhtInfo(const std::string& path) {
   const std::uint64_t space = points * (points - 1);
   fmt::print("pair space:    {} boundary points, {} ordered pairs; entries fill {:.2f} % of it\n", points, space,
              space ? 100.0 * double(lht.entryCount()) / double(space) : 0.0);
-  if (lht.form == LhtForm::Compressed)
-    printCompressed(lht.compressed, lht.hits);
+  if (lht.form() == LhtForm::Compressed)
+    printCompressed(lht.compressed(), lht.hits);
   else
-    printHashed(lht.table);
+    printHashed(lht.hashed());
 }
 
 }  // namespace

@@ -33,7 +33,7 @@ void runRasterize(const RasterizeArgs& args, bool oversampleGiven) {
   if (args.stats)
     fmt::print("pairs={} hits={} entries={} bytes={} precision={} build_ms={:.0f} form={}\n", built.lht.pairs,
                built.lht.hits, built.lht.entryCount(), built.lht.tableBytes(), lhtPrecisionName(built.lht.precision()),
-               built.stats.buildMs, lhtFormName(built.lht.form));
+               built.stats.buildMs, lhtFormName(built.lht.form()));
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 
 #include <memory>
 #include <string>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "app/commands.hpp"
@@ -19,6 +21,8 @@
 #include "foundation/system/resident_memory.hpp"
 #include "lht/leaf/lookup_mode.hpp"
 #include "lht/table/lht_form.hpp"
+#include "lht/table/lht_precision.hpp"
+#include "lht/leaf/lookup_stats.hpp"
 
 namespace lattice::app {
 namespace {
@@ -118,6 +122,41 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
   return job;
 }
 
+// What the render says on stderr as it goes (app/render_events.hpp).
+void sayRenderEvent(const RenderEvent& event) {
+  std::visit(
+      [](const auto& e) {
+        using E = std::decay_t<decltype(e)>;
+        if constexpr (std::is_same_v<E, SizeFitted>) {
+          fmt::print(stderr, "lattice render: the scene's {}x{} is larger than the device's {}x{}: rendering {}x{}\n",
+                     e.sceneWidth, e.sceneHeight, e.deviceWidth, e.deviceHeight, e.width, e.height);
+        } else if constexpr (std::is_same_v<E, TableRepacked>) {
+          fmt::print(stderr, "lattice render: memory plan: lattice '{}' packed as {} ({}) instead of {} to fit the "
+                             "budget; not written to its cache\n",
+                     e.lattice, lht::lhtPrecisionName(e.packed), formatBytes(e.packedBytes),
+                     lht::lhtPrecisionName(e.requested));
+        } else if constexpr (std::is_same_v<E, MemoryPlanned>) {
+          fmt::print(stderr, "lattice render: memory plan: {}\n", e.summary);
+        } else if constexpr (std::is_same_v<E, PeakMeasured>) {
+          fmt::print(stderr, "lattice render: peak resident memory {} of the {} budget\n", formatBytes(e.peak),
+                     formatBytes(e.budget));
+        } else if constexpr (std::is_same_v<E, StreamSent>) {
+          if (e.baud)
+            fmt::print(stderr, "lattice render: {} stream {} bytes -> {}; {:.1f} s on a {} at {} baud ({})\n", e.device,
+                       e.stats.bytes, e.where, e.stats.seconds, e.title, *e.baud, e.stats.detail);
+          else
+            fmt::print(stderr, "lattice render: {} stream {} bytes -> {} ({}, {})\n", e.device, e.stats.bytes, e.where,
+                       e.title, e.stats.detail);
+        } else {
+          static_assert(std::is_same_v<E, LookupsCounted>);
+          if (e.lattices.empty()) fmt::print(stderr, "lattice render: lht-stats: no lattice was looked up\n");
+          for (const lht::LookupSummary& s : e.lattices)
+            fmt::print(stderr, "lattice render: lht-stats: {}\n", lht::describeLookups(s));
+        }
+      },
+      event);
+}
+
 }  // namespace
 
 void addRender(CLI::App& root) {
@@ -134,7 +173,8 @@ void addRender(CLI::App& root) {
   auto flags = std::make_shared<RenderFlags>();
   defineFlags(*cmd, *flags);
   cmd->callback([flags, cmd] {
-    const RenderJob job = jobFrom(*flags, *cmd);
+    RenderJob job = jobFrom(*flags, *cmd);
+    job.events = sayRenderEvent;
     const RenderResult r = renderScene(job);
     fmt::print(stderr, "lattice render: {}: {}x{}, {:.2f} s{}, {} rays ({} arithmetic, {} threads){}\n", job.scene,
                r.width, r.height, r.seconds,

@@ -50,22 +50,19 @@ MemoryPlanRequest renderBudgetRequest(std::uint64_t budget, int width, int heigh
   return request;
 }
 
-lht::TablePackingHook tablePackingWithin(const MemoryPlanRequest& request) {
-  return [budget = request.budget, leastOutput = leastOutputBytes(request)](
+lht::TablePackingHook tablePackingWithin(const MemoryPlanRequest& request, RenderEvents events) {
+  return [budget = request.budget, leastOutput = leastOutputBytes(request), events = std::move(events)](
              const lht::LatticeDefinition& lattice, lht::LhtPrecision requested, std::uint64_t entries,
              std::uint64_t hitListBytes) {
     const TablePacking packing =
         chooseTablePacking(budget, measuredResidentMemory().current, hitListBytes, leastOutput, entries, requested);
     if (packing.form != requested)
-      fmt::print(stderr, "lattice render: memory plan: lattice '{}' packed as {} ({}) instead of {} to fit the "
-                         "budget; not written to its cache\n",
-                 lattice.name, lht::lhtPrecisionName(packing.form), formatBytes(packing.tableBytes),
-                 lht::lhtPrecisionName(requested));
+      raise(events, TableRepacked{lattice.name, requested, packing.form, packing.tableBytes});
     return packing.form;
   };
 }
 
-MemoryPlan planBuiltRender(MemoryPlanRequest request) {
+MemoryPlan planBuiltRender(MemoryPlanRequest request, const RenderEvents& events) {
   // The rasterizer's per-point hit lists are many small blocks, freed by now
   // but kept by the allocator: give those pages back before measuring.
   ::malloc_trim(0);
@@ -73,15 +70,14 @@ MemoryPlan planBuiltRender(MemoryPlanRequest request) {
   request.resident = resident.current;
   request.peakSoFar = resident.peak;
   MemoryPlan plan = planMemory(request);
-  fmt::print(stderr, "lattice render: memory plan: {}\n", plan.summary());
+  raise(events, MemoryPlanned{plan.summary()});
   return plan;
 }
 
-void checkPeakAgainst(std::uint64_t budget) {
+void checkPeakAgainst(std::uint64_t budget, const RenderEvents& events) {
   const auto resident = residentMemory();
   if (!resident) return;
-  fmt::print(stderr, "lattice render: peak resident memory {} of the {} budget\n", formatBytes(resident->peak),
-             formatBytes(budget));
+  raise(events, PeakMeasured{resident->peak, budget});
   // The plan is an estimate: say so, loudly, when the measured peak broke it.
   if (resident->peak > budget)
     throw Error(ErrorKind::Budget,

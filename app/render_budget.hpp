@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/memory_plan.hpp"
+#include "app/render_events.hpp"
 #include "devices/device.hpp"
 #include "loader/lattice_definition.hpp"
 #include "foundation/system/resident_memory.hpp"
@@ -28,15 +29,17 @@ MemoryPlanRequest renderBudgetRequest(std::uint64_t budget, int width, int heigh
                                       bool modeChosenByUser, const devices::Device* device, bool writesPng);
 
 // The packing of lattices rasterized in this run: the form the budget can
-// hold, decided when their entry count is known (chooseTablePacking).
-lht::TablePackingHook tablePackingWithin(const MemoryPlanRequest& request);
+// hold, decided when their entry count is known (chooseTablePacking); a
+// lattice packed otherwise than asked is a TableRepacked event.
+lht::TablePackingHook tablePackingWithin(const MemoryPlanRequest& request, RenderEvents events = {});
 
 // Once the scene is built: returns freed allocator pages to the system,
-// measures, plans (lattice::Error(Budget) when nothing fits) and logs the plan.
-MemoryPlan planBuiltRender(MemoryPlanRequest request);
+// measures, plans (lattice::Error(Budget) when nothing fits); the plan is a
+// MemoryPlanned event.
+MemoryPlan planBuiltRender(MemoryPlanRequest request, const RenderEvents& events = {});
 
-// After the render: logs the measured peak; lattice::Error(Budget) if it
-// broke the budget (the outputs are written by then).
-void checkPeakAgainst(std::uint64_t budget);
+// After the render: the measured peak is a PeakMeasured event;
+// lattice::Error(Budget) if it broke the budget (the outputs are written by then).
+void checkPeakAgainst(std::uint64_t budget, const RenderEvents& events = {});
 
 }  // namespace lattice::app

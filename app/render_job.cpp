@@ -7,6 +7,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <utility>
 
 #include "app/render_budget.hpp"
 #include "devices/device_table.hpp"
@@ -35,7 +36,7 @@ void requireDirectoryFor(const std::string& path, const char* flag) {
 }
 
 // The picture size: what the job asks for, else the scene's own, shrunk
-// (keeping its shape) to fit the device's screen.
+// (keeping its shape) to fit the device's screen (a SizeFitted event).
 RenderSettings renderSettings(const RenderJob& job, const SceneDesc& scene, int deviceWidth, int deviceHeight) {
   RenderSettings s;
   s.threads = job.threads;
@@ -51,8 +52,7 @@ RenderSettings renderSettings(const RenderJob& job, const SceneDesc& scene, int 
                               s.width, s.height, deviceWidth, deviceHeight));
     const double scale = std::min(double(deviceWidth) / s.width, double(deviceHeight) / s.height);
     const int w = std::max(1, int(s.width * scale)), h = std::max(1, int(s.height * scale));
-    fmt::print(stderr, "lattice render: the scene's {}x{} is larger than the device's {}x{}: rendering {}x{}\n",
-               s.width, s.height, deviceWidth, deviceHeight, w, h);
+    raise(job.events, SizeFitted{s.width, s.height, deviceWidth, deviceHeight, w, h});
     s.width = w;
     s.height = h;
   }
@@ -120,12 +120,8 @@ devices::DriverStats renderToDevice(Renderer<T>& renderer, const RenderJob& job,
   quantize::runPipeline(renderer, driver->sink(), pipeline);
   tee.close();  // renames the stream file into place, or drains the serial line
   const devices::DriverStats stats = driver->stats();
-  if (device.line)
-    fmt::print(stderr, "lattice render: {} stream {} bytes -> {}; {:.1f} s on a {} at {} baud ({})\n", device.name,
-               stats.bytes, where, stats.seconds, device.title, device.line->baud, stats.detail);
-  else
-    fmt::print(stderr, "lattice render: {} stream {} bytes -> {} ({}, {})\n", device.name, stats.bytes, where,
-               device.title, stats.detail);
+  raise(job.events, StreamSent{device.name, device.title,
+                                device.line ? std::optional<int>(device.line->baud) : std::nullopt, where, stats});
   if (emulator) {
     emulator->finish();
     io::writePng(job.picture, emulator->image());
@@ -138,8 +134,10 @@ devices::DriverStats renderToDevice(Renderer<T>& renderer, const RenderJob& job,
   return stats;
 }
 
+// Takes the loaded scene: its node tree is released once the renderer holds
+// its own.
 template <typename T>
-RenderResult renderWith(lht::SceneWithLattices& loaded, const RenderJob& job) {
+RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job) {
   const auto start = std::chrono::steady_clock::now();
   quantize::PipelineOptions pipeline = job.pipeline;
   std::optional<devices::Device> device;
@@ -153,7 +151,7 @@ RenderResult renderWith(lht::SceneWithLattices& loaded, const RenderJob& job) {
                                  device ? &*device : nullptr, !job.picture.empty());
     budget->histogramChosenByUser = job.histogramChosenByUser;
     lht::TableSettings tables = loaded.tables;
-    tables.packing = tablePackingWithin(*budget);
+    tables.packing = tablePackingWithin(*budget, job.events);
     bound = lht::withTableSettings(loaded, tables);
   }
   Renderer<T> renderer(bound ? bound->scene : loaded.scene, settings);
@@ -163,7 +161,7 @@ RenderResult renderWith(lht::SceneWithLattices& loaded, const RenderJob& job) {
   loaded.scene.root = NodeDesc{};
   if (bound) bound->scene.root = NodeDesc{};
   if (budget) {
-    const MemoryPlan plan = planBuiltRender(*budget);
+    const MemoryPlan plan = planBuiltRender(*budget, job.events);
     pipeline.mode = plan.mode;
     pipeline.quantize.histogram = plan.histogram;
   }
@@ -178,7 +176,7 @@ RenderResult renderWith(lht::SceneWithLattices& loaded, const RenderJob& job) {
   result.height = renderer.height();
   result.rays = renderer.raysTraced();
   result.threads = renderer.threads();
-  if (budget) checkPeakAgainst(budget->budget);
+  if (budget) checkPeakAgainst(budget->budget, job.events);
   return result;
 }
 
@@ -223,13 +221,8 @@ RenderResult renderScene(const RenderJob& job) {
   tables.threads = static_cast<unsigned>(job.threads);  // one thread means one thread throughout
   lht::SceneWithLattices loaded = lht::loadSceneWithLattices(job.scene, tables);
   RenderResult result =
-      withArithmetic(job.arithmetic, [&](auto type) { return renderWith<typename decltype(type)::type>(loaded, job); });
-  if (tables.stats) {
-    const auto summaries = tables.stats->summaries();
-    if (summaries.empty()) fmt::print(stderr, "lattice render: lht-stats: no lattice was looked up\n");
-    for (const lht::LookupSummary& s : summaries)
-      fmt::print(stderr, "lattice render: lht-stats: {}\n", lht::describeLookups(s));
-  }
+      withArithmetic(job.arithmetic, [&](auto type) { return renderWith<typename decltype(type)::type>(std::move(loaded), job); });
+  if (tables.stats) raise(job.events, LookupsCounted{tables.stats->summaries()});
   return result;
 }
 

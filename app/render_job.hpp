@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "app/render_events.hpp"
 #include "devices/device.hpp"
 #include "io/serial_options.hpp"
 #include "lht/leaf/lookup_mode.hpp"
@@ -49,6 +50,7 @@ struct RenderJob {
   bool histogramChosenByUser = false;          // and the histogram form (--histogram)
   quantize::PipelineOptions pipeline;
   bool quiet = false;  // no progress bars
+  RenderEvents events;  // told what happened along the way (app/render_events.hpp); empty: nobody
 };
 
 struct RenderResult {
@@ -66,7 +68,8 @@ struct RenderResult {
 // called by renderScene first, and by the CLI before any work.
 void checkRenderJob(const RenderJob& job);
 
-// Renders; logs progress and the device's stream figures to stderr.
+// Renders; progress bars on stderr (unless quiet), and what happened along
+// the way to job.events.
 // Throws lattice::Error; the outputs are whole or absent.
 RenderResult renderScene(const RenderJob& job);
 

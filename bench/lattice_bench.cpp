@@ -125,7 +125,7 @@ int main(int argc, char** argv) try {
     fmt::print("  lattice f_lat {}: cells {}x{}x{}  N_lp {}  N_iz {}  entries {}  table {} bytes ({:.2f} B/entry)  "
                "rasterize {:.0f} ms\n",
                f, lht.box.cells()[0], lht.box.cells()[1], lht.box.cells()[2], lht.pairs, lht.hits,
-               lht.table.entryCount(), lht.table.bytes(), lht.table.bytesPerEntry(), stats.buildMs);
+               lht.hashed().entryCount(), lht.hashed().bytes(), lht.hashed().bytesPerEntry(), stats.buildMs);
     fmt::print("                   build {:6.2f} s  render {:7.2f} s ({:.2f}x the full trace)  image vs full: "
                "{:.1f}% pixels differ, RMS {:.1f}/255, worst 8x8 block {:.1f}/255\n",
                lattice.buildSeconds, lattice.renderSeconds, lattice.renderSeconds / full.renderSeconds,

@@ -103,14 +103,13 @@ Forms bothForms(const LatticeBox& box, const RasterResult& raster, LhtPrecision 
     file->hits = raster.stats.hits;
   }
   f.hashed.table = LatticeHashTable(raster.hits, precision);
-  f.compressed.form = LhtForm::Compressed;
-  f.compressed.compressed = CompressedTable(raster.hits, box.cells(), precision);
+  f.compressed.table = CompressedTable(raster.hits, box.cells(), precision);
   return f;
 }
 
 void sizeRow(const std::string& name, const LatticeBox& box, const RasterResult& raster, LhtPrecision precision) {
   const Forms f = bothForms(box, raster, precision);
-  const CompressedTable& c = f.compressed.compressed;
+  const CompressedTable& c = f.compressed.compressed();
   const double niz = double(raster.stats.hits), entries = double(raster.hits.size());
   fmt::print("| {} | {} | {}x{}x{} | {} | {} | {:.2f} | {:.2f} | {} ({} + {} + {}) | {:.2f} | {:.2f} | {} |\n", name,
              lhtPrecisionName(precision), box.cells()[0], box.cells()[1], box.cells()[2], raster.stats.hits,

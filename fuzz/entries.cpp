@@ -47,7 +47,7 @@ void decode(StreamDecoder& decoder, std::span<const std::uint8_t> bytes) {
 }
 
 void probeLht(const lht::LhtFile& file) {
-  if (file.form == lht::LhtForm::Hashed) (void)file.table.probeStats();
+  if (file.form() == lht::LhtForm::Hashed) (void)file.hashed().probeStats();
   const lht::LhtLookup lookup(file);
   const auto& cells = file.box.cells();
   for (int i = 0; i < 64; ++i) {

@@ -14,8 +14,7 @@ std::shared_ptr<const LhtFile> onDemandTable(const LatticeDefinition& lattice, L
   auto lht = std::make_shared<LhtFile>();
   lht->box = LatticeBox(object.bounds, lattice.lambda, lattice.oversample);
   lht->objectHash = lattice.hashFor(precision);
-  lht->form = LhtForm::OnDemand;
-  lht->onDemand = std::make_shared<const OnDemandTable>(lht->box, object.primitive, precision, capacityBytes);
+  lht->table = std::make_shared<const OnDemandTable>(lht->box, object.primitive, precision, capacityBytes);
   return lht;
 }
 

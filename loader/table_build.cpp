@@ -34,9 +34,8 @@ BuiltTable packTable(const LatticeObject& object, double lambda, double oversamp
   lht.objectHash = hashFor(form);
   lht.pairs = raster.stats.pairs;
   lht.hits = raster.stats.hits;
-  lht.form = tableForm;
   if (tableForm == LhtForm::Compressed)
-    lht.compressed = CompressedTable(raster.hits, lht.box.cells(), form);
+    lht.table = CompressedTable(raster.hits, lht.box.cells(), form);
   else
     lht.table = LatticeHashTable(raster.hits, form);
   return built;

@@ -16,10 +16,6 @@ namespace {
 
 constexpr int kMaxImageSide = 16384;
 constexpr int kMaxThreads = 256;
-// Rows per thread in one band of row(): enough that the rows' uneven costs
-// even out before the band's last row (a thread idles until then), few
-// enough that a streaming consumer sees rows early.
-constexpr int kBandRowsPerThread = 8;
 
 int resolveThreads(int requested) {
   if (requested < 0 || requested > kMaxThreads)
@@ -67,7 +63,8 @@ Renderer<T>::Renderer(const SceneDesc& scene, const RenderSettings& settings)
       root_(buildPrimitive<T>(scene.root, Mat4d(1.0), settings.build, 0)),
       background_(Vec3<T>(glm::clamp(scene.options.background, Vec3d(0.0), Vec3d(1.0)))),
       shadows_(scene.options.shadows),
-      offsetScale_(static_cast<T>(std::min(1.0, viewingDistance(scene.camera)))) {
+      offsetScale_(static_cast<T>(std::min(1.0, viewingDistance(scene.camera)))),
+      bands_(width_, height_, threads_, [this](int y, Color18* out) { shadeRow(y, out); }) {
   lighting_.ambient = Vec3<T>(scene.options.ambient);
   lighting_.attenuationK = static_cast<T>(scene.options.attenuationK);
   for (const auto& light : scene.lights) lighting_.lights.push_back(light.template cast<T>());
@@ -95,7 +92,7 @@ template <typename T>
 Vec3<T> Renderer<T>::trace(const Ray<T>& ray) const {
   std::uint64_t rays = 0;
   Vec3<T> c = trace(ray, rays);
-  rays_.fetch_add(rays, std::memory_order_relaxed);
+  rays_.add(rays);
   return c;
 }
 
@@ -111,12 +108,7 @@ void Renderer<T>::rowLinear(int y, std::span<Vec3<T>> out) const {
                                                  out.size(), width_));
   std::uint64_t rays = 0;
   for (int x = 0; x < width_; ++x) out[static_cast<std::size_t>(x)] = trace(camera_.primaryRay(x, y), rays);
-  rays_.fetch_add(rays, std::memory_order_relaxed);
-}
-
-template <typename T>
-int Renderer<T>::bandRowsAt(int y0) const {
-  return std::min(height_ - y0, std::max(1, threads_ * kBandRowsPerThread));
+  rays_.add(rays);
 }
 
 template <typename T>
@@ -125,47 +117,8 @@ void Renderer<T>::shadeRow(int y, Color18* out) const {
   rowLinear(y, linear);
   for (int x = 0; x < width_; ++x) {
     const Vec3<T>& c = linear[static_cast<std::size_t>(x)];
-    out[x] = packColor18(quantizeLevel(c.r, 63), quantizeLevel(c.g, 63), quantizeLevel(c.b, 63));
+    out[x] = packColor18(quantizeLevel<kLevels6>(c.r), quantizeLevel<kLevels6>(c.g), quantizeLevel<kLevels6>(c.b));
   }
-}
-
-// One thread (and the firmware): the band in the caller, row after row.
-template <typename T>
-void Renderer<T>::renderBandHere(int y0) {
-  const int rows = bandRowsAt(y0);
-  band_.assign(static_cast<std::size_t>(rows) * static_cast<std::size_t>(width_), 0);
-  for (int y = y0; y < y0 + rows; ++y) shadeRow(y, band_.data() + static_cast<std::size_t>(y - y0) * width_);
-  bandStart_ = y0;
-  bandRows_ = rows;
-}
-
-// Hands the band at y0 to the pool, rows one at a time from a shared counter
-// (which thread renders a row never changes its pixels), and returns.
-template <typename T>
-void Renderer<T>::startBandAhead(int y0) {
-  const int rows = bandRowsAt(y0);
-  ahead_.assign(static_cast<std::size_t>(rows) * static_cast<std::size_t>(width_), 0);
-  aheadStart_ = y0;
-  aheadRows_ = rows;
-  aheadNext_.store(y0);
-  Color18* out = ahead_.data();
-  const int y1 = y0 + rows;
-  pool_->start(
-      [this, out, y0, y1](unsigned) {
-        for (int y = aheadNext_.fetch_add(1); y < y1; y = aheadNext_.fetch_add(1))
-          shadeRow(y, out + static_cast<std::size_t>(y - y0) * width_);
-      },
-      [this, y1] { aheadNext_.store(y1); });
-}
-
-// Waits for the band under way and makes it the current one.
-template <typename T>
-void Renderer<T>::takeBandAhead() {
-  const int start = std::exchange(aheadStart_, -1);
-  pool_->wait();  // rethrows a worker's error
-  band_.swap(ahead_);
-  bandStart_ = start;
-  bandRows_ = aheadRows_;
 }
 
 template <typename T>
@@ -173,27 +126,7 @@ void Renderer<T>::row(int y, std::span<Color18> out) {
   if (y < 0 || y >= height_ || out.size() != static_cast<std::size_t>(width_))
     throw Error(ErrorKind::Internal, fmt::format("row {} of {} asked with a buffer of {} for width {}", y, height_,
                                                  out.size(), width_));
-  std::lock_guard lock(bandMutex_);
-  if (y < bandStart_ || y >= bandStart_ + bandRows_) {
-    if (threads_ <= 1 || !kHasThreads) {
-      renderBandHere(y);
-    } else {
-      if (!pool_) pool_ = std::make_unique<WorkerPool>(static_cast<unsigned>(threads_));
-      // A band ahead that does not hold y (rows asked out of order, a second
-      // pass from the top) is finished and dropped.
-      if (aheadStart_ >= 0 && (y < aheadStart_ || y >= aheadStart_ + aheadRows_)) takeBandAhead();
-      if (y < bandStart_ || y >= bandStart_ + bandRows_) {
-        if (aheadStart_ < 0) startBandAhead(y);
-        takeBandAhead();
-      }
-      // The next band is rendered while the consumer reads this one; none
-      // past the last row.
-      const int next = bandStart_ + bandRows_;
-      if (next < height_) startBandAhead(next);
-    }
-  }
-  const Color18* src = band_.data() + static_cast<std::size_t>(y - bandStart_) * static_cast<std::size_t>(width_);
-  std::copy(src, src + width_, out.begin());
+  bands_.row(y, out);
 }
 
 template <typename T>
@@ -205,7 +138,7 @@ RgbImage renderImage(Renderer<T>& renderer, Progress* progress) {
     for (int x = 0; x < renderer.width(); ++x) {
       std::uint8_t* p = image.pixel(x, y);
       for (int c = 0; c < 3; ++c)
-        p[c] = static_cast<std::uint8_t>(quantizeLevel(linear[static_cast<std::size_t>(x)][c], 255));
+        p[c] = static_cast<std::uint8_t>(quantizeLevel<kLevels8>(linear[static_cast<std::size_t>(x)][c]));
     }
     if (progress) progress->advance();
   });

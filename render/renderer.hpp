@@ -17,8 +17,10 @@
 #include <span>
 #include <vector>
 
+#include "foundation/counter.hpp"
 #include "foundation/rgb_image.hpp"
 #include "foundation/scanline.hpp"
+#include "render/band_cache.hpp"
 #include "render/scene/camera.hpp"
 #include "render/scene/scene.hpp"
 #include "render/scene/shading.hpp"
@@ -36,27 +38,34 @@ struct RenderSettings {
   BuildOptions build;
 };
 
-// 6-bit channel of a linear intensity in [0, 1], rounded to nearest.
-inline unsigned quantize6(double v) {
-  const double c = v < 0 ? 0 : (v > 1 ? 1 : v);
-  return static_cast<unsigned>(c * 63.0 + 0.5);
-}
-inline unsigned quantize8(double v) {
-  const double c = v < 0 ? 0 : (v > 1 ? 1 : v);
-  return static_cast<unsigned>(c * 255.0 + 0.5);
-}
-// The same for the renderer's scalar: fixed point rounds in integers (no
-// double per pixel), the IEEE types go through the double versions above.
-template <typename T>
-unsigned quantizeLevel(T v, unsigned levels) {
+// The two channel depths the renderer writes: the thesis's 6-bit colour
+// (Color18) and 8-bit images.
+inline constexpr unsigned kLevels6 = 63;
+inline constexpr unsigned kLevels8 = 255;
+
+// A linear intensity clamped to [0, 1] as the nearest of Levels + 1 levels
+// (0..Levels; a half rounds up). The IEEE types round in double (one
+// multiply, add 0.5, truncate); fixed point in its own integers (no double
+// per pixel), which the level count must not overflow.
+template <unsigned Levels, typename T>
+unsigned quantizeLevel(T v) {
+  static_assert(Levels >= 1, "a channel has at least two levels");
   if constexpr (kIsIeee<T>) {
-    return levels == 63 ? quantize6(static_cast<double>(v)) : quantize8(static_cast<double>(v));
+    const double d = static_cast<double>(v);
+    const double c = d < 0 ? 0 : (d > 1 ? 1 : d);
+    return static_cast<unsigned>(c * double(Levels) + 0.5);
   } else {
+    using Raw = typename T::Raw;
+    static_assert(Levels <= (Raw(1) << (sizeof(Raw) * 8 - 2 - T::kFractionBits)),
+                  "this many levels overflow the fixed-point product");
     const T c = v < T(0) ? T(0) : (v > T(1) ? T(1) : v);
-    const auto one = typename T::Raw(1) << T::kFractionBits;
-    return static_cast<unsigned>((c.raw() * static_cast<typename T::Raw>(levels) + one / 2) >> T::kFractionBits);
+    const auto one = Raw(1) << T::kFractionBits;
+    return static_cast<unsigned>((c.raw() * static_cast<Raw>(Levels) + one / 2) >> T::kFractionBits);
   }
 }
+// 6- and 8-bit channels of a double intensity.
+inline unsigned quantize6(double v) { return quantizeLevel<kLevels6>(v); }
+inline unsigned quantize8(double v) { return quantizeLevel<kLevels8>(v); }
 
 template <typename T>
 class Renderer final : public RowSource18 {
@@ -70,10 +79,9 @@ class Renderer final : public RowSource18 {
   int height() const override { return height_; }
   int threads() const { return threads_; }
 
-  // Row y as 18-bit colour. Renders a band of rows at once and keeps it; with
-  // several threads a pool started once renders the following band while
-  // the consumer reads this one, so a consumer asking row by row keeps every
-  // core busy without starting threads per band.
+  // Row y as 18-bit colour, through the band cache (render/band_cache.hpp):
+  // a band of rows rendered at once and kept, the next one rendered ahead
+  // on the renderer's threads while the consumer reads this one.
   void row(int y, std::span<Color18> out) override;
 
   // Row y in full precision (linear, clamped to [0, 1]); single-threaded and
@@ -85,17 +93,13 @@ class Renderer final : public RowSource18 {
   Vec3<T> trace(const Ray<T>& ray) const;
 
   // Primary plus shadow rays traced so far (statistics).
-  std::uint64_t raysTraced() const { return rays_.load(std::memory_order_relaxed); }
+  std::uint64_t raysTraced() const { return rays_.value(); }
   const Primitive<T>& root() const { return *root_; }
   const Camera<T>& camera() const { return camera_; }
 
  private:
   Vec3<T> trace(const Ray<T>& ray, std::uint64_t& rays) const;
-  int bandRowsAt(int y0) const;
   void shadeRow(int y, Color18* out) const;
-  void renderBandHere(int y0);
-  void startBandAhead(int y0);
-  void takeBandAhead();
 
   int width_ = 0, height_ = 0, threads_ = 1;
   Camera<T> camera_;
@@ -106,21 +110,10 @@ class Renderer final : public RowSource18 {
   // The smallest length shadow-ray offsets are measured against
   // (surfaceOffset): min(1, the camera's viewing distance).
   T offsetScale_{1};
-  mutable std::atomic<std::uint64_t> rays_{0};
+  mutable Counter rays_;
 
-  // The band cache of row(): rows [bandStart_, bandStart_ + bandRows_). With
-  // more than one thread the pool renders the next band into ahead_ while the
-  // consumer reads this one (aheadStart_ >= 0 while it is under way).
-  Mutex bandMutex_;
-  int bandStart_ = -1;
-  int bandRows_ = 0;
-  std::vector<Color18> band_;
-  int aheadStart_ = -1;
-  int aheadRows_ = 0;
-  std::vector<Color18> ahead_;
-  std::atomic<int> aheadNext_{0};
-  // Last, so it is stopped (waiting for its band) before what it writes goes.
-  std::unique_ptr<WorkerPool> pool_;
+  // Last, so its threads are stopped before what they read goes.
+  BandCache bands_;
 };
 
 #define LATTICE_DECLARE(T) extern template class Renderer<T>;

@@ -1,29 +1,23 @@
 #pragma once
 // Lookup by name in a small table of named settings (form sets,
-// strategies): one spelling of the "unknown name, use one of ..." error.
+// strategies): the 4125 profile's spelling of the "unknown name, use one of
+// ..." error over foundation/name_table.hpp.
 #include <fmt/format.h>
 
-#include <string>
 #include <string_view>
 #include <vector>
 
 #include "foundation/error.hpp"
+#include "foundation/name_table.hpp"
 
 namespace lattice::tek4125 {
 
-// "a, b, c" from each entry's `name`.
-template <class T>
-std::string namesOf(const std::vector<T>& table) {
-  std::string names;
-  for (const T& entry : table) names += (names.empty() ? "" : ", ") + entry.name;
-  return names;
-}
+using lattice::namesOf;
 
 // The entry called `name`, or lattice::Error(Usage) naming the key and the choices.
 template <class T>
 const T& findNamed(const std::vector<T>& table, std::string_view name, std::string_view key) {
-  for (const T& entry : table)
-    if (entry.name == name) return entry;
+  if (const T* entry = lattice::findNamed(table, name)) return *entry;
   throw Error(ErrorKind::Usage,
               fmt::format("tek4125 profile: {}={} is unknown; use one of {} (docs/tek4125.md)", key, name,
                           namesOf(table)));

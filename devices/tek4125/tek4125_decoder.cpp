@@ -6,6 +6,7 @@
 
 #include "devices/canvas.hpp"
 #include "devices/work_budget.hpp"
+#include "foundation/rounding.hpp"
 
 namespace lattice::tek4125 {
 
@@ -28,7 +29,7 @@ Rgb8 hlsToRgb(int hue, int lightness, int saturation) {
   auto channel = [&](double t) {
     t -= std::floor(t);
     double v = t < 1.0 / 6 ? p + (q - p) * 6 * t : t < 0.5 ? q : t < 2.0 / 3 ? p + (q - p) * (2.0 / 3 - t) * 6 : p;
-    return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255));
+    return static_cast<std::uint8_t>(scaledStep(v, 0.0, 1.0, 255));
   };
   return Rgb8{channel(h + 1.0 / 3), channel(h), channel(h - 1.0 / 3)};
 }

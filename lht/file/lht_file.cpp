@@ -68,10 +68,10 @@ std::string precisionCodes() {
 }  // namespace
 
 std::vector<std::uint8_t> serializeLht(const LhtFile& lht) {
-  if (lht.form == LhtForm::OnDemand)
+  if (lht.form() == LhtForm::OnDemand)
     throw Error(ErrorKind::Usage, "an on-demand table is built while rendering and never written to a .lht file; "
                                   "rasterize it as hashed or compressed");
-  const bool compressed = lht.form == LhtForm::Compressed;
+  const bool compressed = lht.form() == LhtForm::Compressed;
   Writer w;
   w.bytes(kMagic, sizeof kMagic);
   w.u32(compressed ? kLhtCompressedVersion : kLhtVersion);
@@ -84,7 +84,7 @@ std::vector<std::uint8_t> serializeLht(const LhtFile& lht) {
   w.u64(lht.pairs);
   w.u64(lht.hits);
   if (compressed) {
-    const CompressedTable& c = lht.compressed;
+    const CompressedTable& c = lht.compressed();
     w.u64(c.entryCount());
     w.u64(c.bitCount());
     w.u64(c.words().size());
@@ -95,10 +95,11 @@ std::vector<std::uint8_t> serializeLht(const LhtFile& lht) {
     for (std::uint64_t word : c.words()) w.u64(word);
     w.bytes(c.payloads().data(), c.payloads().size());
   } else {
-    w.u64(lht.table.entryCount());
-    w.u64(lht.table.capacity());
-    w.u64(lht.table.capacity());
-    w.bytes(lht.table.slotView().data(), lht.table.slotView().size());
+    const LatticeHashTable& t = lht.hashed();
+    w.u64(t.entryCount());
+    w.u64(t.capacity());
+    w.u64(t.capacity());
+    w.bytes(t.slotView().data(), t.slotView().size());
   }
   w.u64(fnv1a64(w.out));
   return std::move(w.out);
@@ -246,14 +247,13 @@ LhtFile assemble(const LhtHeader& h, std::vector<std::uint8_t> body, const std::
     lht.objectHash = h.objectHash;
     lht.pairs = h.pairs;
     lht.hits = h.hits;
-    lht.form = h.form;
     if (h.form == LhtForm::Compressed) {
       std::vector<std::uint64_t> words(h.slots);
       Reader r(body);
       for (std::uint64_t& word : words) word = r.uint(8);
       std::vector<std::uint8_t> payloads(body.begin() + static_cast<std::ptrdiff_t>(r.at), body.end());
       std::vector<std::uint8_t>().swap(body);
-      lht.compressed = CompressedTable(h.cells, h.precision, h.layout, std::move(words), std::move(payloads), h.entries);
+      lht.table = CompressedTable(h.cells, h.precision, h.layout, std::move(words), std::move(payloads), h.entries);
     } else {
       lht.table = h.version == kLhtVersion ? LatticeHashTable(h.precision, std::move(body), h.buckets, h.entries)
                                            : readChainedTable(h.precision, body, h.buckets, h.entries);

@@ -44,9 +44,12 @@
 //   payloadBytes(precision) bytes, then the checksum.
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string_view>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "foundation/fnv1a.hpp"
@@ -63,33 +66,53 @@ inline constexpr std::uint32_t kLhtCompressedVersion = 3;  // compressed tables 
 inline constexpr std::size_t kLhtHeaderBytes = 108;
 inline constexpr std::size_t kLhtHeaderBytesV3 = 116;
 
+// The table in one of its forms. The alternative's index is its LhtForm code
+// (lht/table/lht_form.hpp), so the form is never stored apart from the table it
+// names. A new form is one alternative here, its name in lht_form.cpp, and
+// its body in lht_file.cpp; everything else asks the variant.
+using LhtTable = std::variant<LatticeHashTable, CompressedTable, std::shared_ptr<const OnDemandTable>>;
+static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(LhtForm::Hashed), LhtTable>,
+                             LatticeHashTable>);
+static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(LhtForm::Compressed), LhtTable>,
+                             CompressedTable>);
+static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(LhtForm::OnDemand), LhtTable>,
+                             std::shared_ptr<const OnDemandTable>>);
+
+// The table object behind an alternative (the on-demand one is shared, since
+// it grows while several renders read it).
+template <class Table>
+const Table& formTable(const Table& table) {
+  return table;
+}
+template <class Table>
+const Table& formTable(const std::shared_ptr<const Table>& table) {
+  return *table;
+}
+
 struct LhtFile {
   std::uint32_t version = kLhtVersion;  // as read; written: kLhtVersion, or kLhtCompressedVersion when compressed
   LatticeBox box{{1, 1, 1}, 1.0, 1.0, Vec3d(0.0)};
   std::uint64_t objectHash = 0;
   std::uint64_t pairs = 0;  // N_lp
   std::uint64_t hits = 0;   // N_iz
-  LhtForm form = LhtForm::Hashed;
-  LatticeHashTable table;      // the hashed form's table (empty when compressed)
-  CompressedTable compressed;  // the compressed form's table (empty otherwise)
-  std::shared_ptr<const OnDemandTable> onDemand;  // the on-demand form's table (null otherwise)
+  LhtTable table;           // hashed unless set otherwise
+
+  LhtForm form() const { return static_cast<LhtForm>(table.index()); }
+  // The table as the given form; throws std::bad_variant_access for another form.
+  const LatticeHashTable& hashed() const { return std::get<LatticeHashTable>(table); }
+  const CompressedTable& compressed() const { return std::get<CompressedTable>(table); }
+  const OnDemandTable& onDemand() const { return *std::get<std::shared_ptr<const OnDemandTable>>(table); }
 
   LhtPrecision precision() const {
-    return form == LhtForm::Compressed ? compressed.precision()
-           : form == LhtForm::OnDemand ? onDemand->precision()
-                                       : table.precision();
+    return std::visit([](const auto& t) { return formTable(t).precision(); }, table);
   }
   // Entries held (on demand: the hits stored so far).
   std::uint64_t entryCount() const {
-    return form == LhtForm::Compressed ? compressed.entryCount()
-           : form == LhtForm::OnDemand ? onDemand->entryCount()
-                                       : table.entryCount();
+    return std::visit([](const auto& t) { return formTable(t).entryCount(); }, table);
   }
   // The table's bytes in memory (compressed: with its rank directory; on demand: so far).
   std::uint64_t tableBytes() const {
-    return form == LhtForm::Compressed ? compressed.bytes()
-           : form == LhtForm::OnDemand ? onDemand->bytes()
-                                       : table.bytes();
+    return std::visit([](const auto& t) { return formTable(t).bytes(); }, table);
   }
 };
 

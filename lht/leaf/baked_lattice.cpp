@@ -49,7 +49,6 @@ std::shared_ptr<const LhtFile> makeBakedLhtFile(std::uint32_t version, const Lat
   file->objectHash = objectHash;
   file->pairs = pairs;
   file->hits = hits;
-  file->form = LhtForm::Hashed;
   file->table = std::move(table);
   return file;
 }
@@ -57,14 +56,14 @@ std::shared_ptr<const LhtFile> makeBakedLhtFile(std::uint32_t version, const Lat
 std::string bakeLatticeLeaf(SceneBaker& baker, const LhtFile& lht, bool castsShadows, const std::string& name,
                             const Bounds<double>& objectBounds) {
   baker.include("lht/leaf/baked_lattice.hpp");
-  if (lht.form != LhtForm::Hashed)
+  if (lht.form() != LhtForm::Hashed)
     throw Error(ErrorKind::Usage, fmt::format("lattice '{}': only the hashed table form can be baked for the firmware "
                                               "(docs/firmware.md); bake without a compressed or on-demand form",
                                               name));
   // One table in flash for every instance of the lattice.
   const std::string file = baker.shared(&lht, [&] {
     const LatticeBox& box = lht.box;
-    const LatticeHashTable& table = lht.table;
+    const LatticeHashTable& table = lht.hashed();
     const std::string slots = baker.flashBytes(table.slotView(), fmt::format("lattice '{}' table slots", name));
     return fmt::format(
         "lattice::lht::makeBakedLhtFile({}u, lattice::lht::LatticeBox({{{}, {}, {}}}, {}, {}, {}), {}ull, {}ull, {}ull, "

@@ -3,38 +3,26 @@
 #include <fmt/format.h>
 
 #include <array>
-#include <utility>
 
 #include "foundation/error.hpp"
+#include "foundation/name_table.hpp"
 
 namespace lattice::lht {
 
 namespace {
 
-constexpr std::array<std::pair<LatticeLookup, std::string_view>, 2> kLookups = {{
+constexpr std::array<EnumName<LatticeLookup>, 2> kLookups = {{
     {LatticeLookup::Thesis, "thesis"},
     {LatticeLookup::Blend, "blend"},
 }};
 
 }  // namespace
 
-std::string_view latticeLookupName(LatticeLookup lookup) {
-  for (const auto& [l, name] : kLookups)
-    if (l == lookup) return name;
-  return "unknown";
-}
+std::string_view latticeLookupName(LatticeLookup lookup) { return nameOfValue(kLookups, lookup); }
 
-std::string latticeLookupChoices() {
-  std::string out;
-  for (const auto& [l, name] : kLookups) out += fmt::format("{}{}", out.empty() ? "" : ", ", name);
-  return out;
-}
+std::string latticeLookupChoices() { return namesOf(kLookups); }
 
-std::optional<LatticeLookup> latticeLookupFromName(std::string_view name) {
-  for (const auto& [l, n] : kLookups)
-    if (n == name) return l;
-  return std::nullopt;
-}
+std::optional<LatticeLookup> latticeLookupFromName(std::string_view name) { return valueNamed(kLookups, name); }
 
 LatticeLookup parseLatticeLookup(std::string_view name, std::string_view what) {
   if (const auto lookup = latticeLookupFromName(name)) return *lookup;

@@ -17,10 +17,10 @@ LookupStats::LookupStats(std::string lattice, std::shared_ptr<const LhtFile> lht
 LookupSummary LookupStats::summary() const {
   LookupSummary s;
   s.lattice = lattice_;
-  s.lookups = lookups_.load();
-  s.hits = hits_.load();
+  s.lookups = lookups_.value();
+  s.hits = hits_.value();
   s.misses = s.lookups - s.hits;
-  s.offSurface = offSurface_.load();
+  s.offSurface = offSurface_.value();
   const std::uint64_t p = index_.count();
   s.pairSpace = p * (p - 1);
   s.entries = lht_->entryCount();
@@ -28,7 +28,7 @@ LookupSummary LookupStats::summary() const {
   s.oversample = lht_->box.oversample();
   s.distinctCounted = !asked_.empty();
   // Before the walk below, whose look-ups an on-demand table would answer too.
-  if (lht_->form == LhtForm::OnDemand) s.onDemand = lht_->onDemand->counts();
+  if (lht_->form() == LhtForm::OnDemand) s.onDemand = lht_->onDemand().counts();
   const LhtLookup lookup(*lht_);
   for (std::size_t w = 0; w < asked_.size(); ++w) {
     for (std::uint64_t word = asked_[w].load(std::memory_order_relaxed); word; word &= word - 1) {

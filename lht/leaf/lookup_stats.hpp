@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "foundation/counter.hpp"
 #include "foundation/threads.hpp"
 #include "lht/grid/boundary_index.hpp"
 #include "lht/file/lht_file.hpp"
@@ -53,11 +54,11 @@ class LookupStats {
   LookupStats(std::string lattice, std::shared_ptr<const LhtFile> lht);
 
   void record(const LatticePoint& in, const LatticePoint& out, bool hit) {
-    lookups_.fetch_add(1, std::memory_order_relaxed);
-    if (hit) hits_.fetch_add(1, std::memory_order_relaxed);
+    lookups_.add();
+    if (hit) hits_.add();
     const std::uint64_t i = index_.indexOf(in), o = index_.indexOf(out);
     if (i == BoundaryIndex::kNotOnBoundary || o == BoundaryIndex::kNotOnBoundary) {
-      offSurface_.fetch_add(1, std::memory_order_relaxed);
+      offSurface_.add();
       return;
     }
     if (asked_.empty()) return;
@@ -72,7 +73,7 @@ class LookupStats {
   std::string lattice_;
   std::shared_ptr<const LhtFile> lht_;
   BoundaryIndex index_;
-  std::atomic<std::uint64_t> lookups_{0}, hits_{0}, offSurface_{0};
+  Counter lookups_, hits_, offSurface_;
   std::vector<std::atomic<std::uint64_t>> asked_;  // one bit per ordered pair; empty above kMaxPairBits
 };
 

@@ -11,8 +11,8 @@ namespace lattice::lht {
 class LhtLookup {
  public:
   explicit LhtLookup(const LhtFile& lht)
-      : hashed_(&lht.table), compressed_(lht.form == LhtForm::Compressed ? &lht.compressed : nullptr),
-        onDemand_(lht.form == LhtForm::OnDemand ? lht.onDemand.get() : nullptr), precision_(lht.precision()) {}
+      : hashed_(std::get_if<LatticeHashTable>(&lht.table)), compressed_(std::get_if<CompressedTable>(&lht.table)),
+        onDemand_(lht.form() == LhtForm::OnDemand ? &lht.onDemand() : nullptr), precision_(lht.precision()) {}
 
   const std::uint8_t* payload(const LatticePoint& in, const LatticePoint& out) const {
     if (compressed_) return compressed_->findPayload(in, out);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "foundation/rounding.hpp"
 #include "lht/grid/octahedral.hpp"
 
 namespace lattice::lht {
@@ -27,11 +28,11 @@ std::int32_t loadNormalByte(std::uint8_t b) { return std::max<std::int32_t>(load
 }  // namespace
 
 std::uint32_t quantizeFraction(double s, std::uint32_t steps) {
-  return static_cast<std::uint32_t>(std::lround(std::clamp(s, 0.0, 1.0) * steps));
+  return static_cast<std::uint32_t>(scaledStep(s, 0.0, 1.0, steps));
 }
 
 std::int8_t quantizeNormalComponent(double n) {
-  return static_cast<std::int8_t>(std::lround(std::clamp(n, -1.0, 1.0) * 127.0));
+  return static_cast<std::int8_t>(scaledStep(n, -1.0, 1.0, 127.0));
 }
 
 std::int32_t normalDirectionMax(LhtPrecision precision) {

@@ -3,15 +3,15 @@
 #include <fmt/format.h>
 
 #include <array>
-#include <utility>
 
 #include "foundation/error.hpp"
+#include "foundation/name_table.hpp"
 
 namespace lattice::lht {
 
 namespace {
 
-constexpr std::array<std::pair<LhtForm, std::string_view>, 3> kForms = {{
+constexpr std::array<EnumName<LhtForm>, 3> kForms = {{
     {LhtForm::Hashed, "hashed"},
     {LhtForm::Compressed, "compressed"},
     {LhtForm::OnDemand, "on-demand"},
@@ -19,29 +19,13 @@ constexpr std::array<std::pair<LhtForm, std::string_view>, 3> kForms = {{
 
 }  // namespace
 
-std::string_view lhtFormName(LhtForm form) {
-  for (const auto& [f, name] : kForms)
-    if (f == form) return name;
-  return "unknown";
-}
+std::string_view lhtFormName(LhtForm form) { return nameOfValue(kForms, form); }
 
-std::string lhtFormChoices() {
-  std::string out;
-  for (const auto& [f, name] : kForms) out += fmt::format("{}{}", out.empty() ? "" : ", ", name);
-  return out;
-}
+std::string lhtFormChoices() { return namesOf(kForms); }
 
-std::optional<LhtForm> lhtFormFromName(std::string_view name) {
-  for (const auto& [f, n] : kForms)
-    if (n == name) return f;
-  return std::nullopt;
-}
+std::optional<LhtForm> lhtFormFromName(std::string_view name) { return valueNamed(kForms, name); }
 
-std::optional<LhtForm> lhtFormFromCode(std::uint16_t code) {
-  for (const auto& [f, n] : kForms)
-    if (static_cast<std::uint16_t>(f) == code) return f;
-  return std::nullopt;
-}
+std::optional<LhtForm> lhtFormFromCode(std::uint16_t code) { return valueWithCode(kForms, code); }
 
 LhtForm parseLhtForm(std::string_view name, std::string_view what) {
   if (const auto form = lhtFormFromName(name)) return *form;

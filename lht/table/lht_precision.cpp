@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "foundation/error.hpp"
+#include "foundation/name_table.hpp"
 
 namespace lattice::lht {
 
@@ -23,8 +24,7 @@ std::string lhtPrecisionChoices() {
 }
 
 std::optional<LhtPrecision> lhtPrecisionFromName(std::string_view name) {
-  for (const LhtPrecisionInfo& info : kLhtPrecisions)
-    if (info.name == name) return info.precision;
+  if (const LhtPrecisionInfo* info = findNamed(kLhtPrecisions, name)) return info->precision;
   return std::nullopt;
 }
 

@@ -26,34 +26,34 @@ const std::uint8_t* OnDemandTable::findPayload(const LatticePoint& in, const Lat
   RasterHit hit;
   Answer answer;
   answer.hit = tracer_.trace(in, out, hit);
-  traced_.fetch_add(1, std::memory_order_relaxed);
+  traced_.add();
   if (answer.hit) encodePayload(hit, precision_, answer.payload.data());
   if (!answer.hit && !missBits_.empty()) {
     // Two threads may both set it; only the first counts it.
     if (!(missBits_[key / 64].fetch_or(missBit, std::memory_order_relaxed) & missBit))
-      missesStored_.fetch_add(1, std::memory_order_relaxed);
+      missesStored_.add();
     return nullptr;
   }
   std::lock_guard lock(shard.mutex);
   const auto found = shard.answers.find(key);
   if (found != shard.answers.end()) return found->second.hit ? found->second.payload.data() : nullptr;
-  if (mapAnswers_.load(std::memory_order_relaxed) >= capacity_) {
-    refused_.fetch_add(1, std::memory_order_relaxed);
+  if (mapAnswers_.value() >= capacity_) {
+    refused_.add();
     if (!answer.hit) return nullptr;
     // Not stored: the caller decodes it at once, before this thread asks again.
     LATTICE_THREAD_LOCAL std::array<std::uint8_t, 6> unstored;
     unstored = answer.payload;
     return unstored.data();
   }
-  (answer.hit ? hitsStored_ : missesStored_).fetch_add(1, std::memory_order_relaxed);
-  mapAnswers_.fetch_add(1, std::memory_order_relaxed);
+  (answer.hit ? hitsStored_ : missesStored_).add();
+  mapAnswers_.add();
   const auto stored = shard.answers.emplace(key, answer).first;
   return stored->second.hit ? stored->second.payload.data() : nullptr;
 }
 
 OnDemandCounts OnDemandTable::counts() const {
-  return {hitsStored_.load(), missesStored_.load(), traced_.load(),          refused_.load(),
-          capacity_ * kStoredBytes, mapAnswers_.load(), missBits_.size() * 8};
+  return {hitsStored_.value(), missesStored_.value(), traced_.value(),          refused_.value(),
+          capacity_ * kStoredBytes, mapAnswers_.value(), missBits_.size() * 8};
 }
 
 }  // namespace lattice::lht

@@ -33,6 +33,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "foundation/counter.hpp"
 #include "foundation/threads.hpp"
 #include "lht/grid/boundary_index.hpp"
 #include "lht/table/entry_codec.hpp"
@@ -61,8 +62,8 @@ class OnDemandTable {
 
   LhtPrecision precision() const { return precision_; }
   OnDemandCounts counts() const;
-  std::uint64_t entryCount() const { return hitsStored_.load(std::memory_order_relaxed); }
-  std::uint64_t bytes() const { return mapAnswers_.load() * kStoredBytes + missBits_.size() * 8; }
+  std::uint64_t entryCount() const { return hitsStored_.value(); }
+  std::uint64_t bytes() const { return mapAnswers_.value() * kStoredBytes + missBits_.size() * 8; }
 
  private:
   struct Answer {
@@ -82,7 +83,7 @@ class OnDemandTable {
   std::uint64_t capacity_;  // answers
   mutable std::array<Shard, kShards> shards_;
   mutable std::vector<std::atomic<std::uint64_t>> missBits_;  // empty above kMaxMissBits
-  mutable std::atomic<std::uint64_t> hitsStored_{0}, missesStored_{0}, mapAnswers_{0}, traced_{0}, refused_{0};
+  mutable Counter hitsStored_, missesStored_, mapAnswers_, traced_, refused_;
 };
 
 }  // namespace lattice::lht

@@ -34,7 +34,9 @@
 #include <fmt/format.h>
 
 #include "render/solve/roots_fixed.hpp"
+#include "foundation/counter.hpp"
 #include "foundation/error.hpp"
+#include "foundation/rounding.hpp"
 #include "foundation/arithmetics.hpp"
 
 namespace lattice::roots_detail {
@@ -47,7 +49,7 @@ std::uint64_t fallbackCount() noexcept;
 namespace lattice {
 namespace {
 
-std::atomic<std::uint64_t> fallbackCounter{0};
+Counter fallbackCounter;
 
 template <typename T>
 constexpr T kEps = std::numeric_limits<T>::epsilon();
@@ -651,7 +653,7 @@ bool balance(const T* c, int size, Balanced<T>& out) {
   const int en = std::ilogb(c[high]);
   // x = 2^shift y makes |c_0| and |c_n 2^(n shift)| about equal.
   const int diff = e0 - en;
-  out.shift = diff >= 0 ? (diff + n / 2) / n : -((-diff + n / 2) / n);
+  out.shift = roundedQuotient(diff, n);
   int maxExponent = std::numeric_limits<int>::min();
   for (int k = 0; k <= n; ++k) {
     if (c[low + k] != 0) maxExponent = std::max(maxExponent, std::ilogb(c[low + k]) + k * out.shift);
@@ -703,7 +705,7 @@ int solveBalanced(const T* c, int n, T* roots, bool countFallback) {
     set.trustworthy = false;
   }
   if (!set.trustworthy) {
-    if (countFallback) fallbackCounter.fetch_add(1, std::memory_order_relaxed);
+    if (countFallback) fallbackCounter.add();
     return isolateRoots(c, n, roots);
   }
   sortSmall(set.x.data(), set.count);
@@ -747,7 +749,7 @@ int solveCubicInternal(const T* c, T* roots) {
 }  // namespace
 
 namespace roots_detail {
-std::uint64_t fallbackCount() noexcept { return fallbackCounter.load(std::memory_order_relaxed); }
+std::uint64_t fallbackCount() noexcept { return fallbackCounter.value(); }
 }  // namespace roots_detail
 
 template <typename T>

@@ -22,6 +22,8 @@
 #include <array>
 #include <cstdint>
 
+#include "foundation/rounding.hpp"
+
 namespace lattice::fixed_roots {
 namespace {
 
@@ -170,7 +172,7 @@ int solve(const Fixed32* c, int size, Fixed32 roots[4]) {
   if (n > 0) {
     // 1. x = 2^k y balances the end coefficients (k rounded to nearest).
     const int diff = topBit(c[low].raw()) - topBit(c[high].raw());
-    const int k = diff >= 0 ? (diff + n / 2) / n : -((-diff + n / 2) / n);
+    const int k = roundedQuotient(diff, n);
     int largest = -1000;
     for (int i = 0; i <= n; ++i)
       if (c[low + i].raw() != 0) largest = std::max(largest, topBit(c[low + i].raw()) + i * k);

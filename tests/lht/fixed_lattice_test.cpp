@@ -12,50 +12,14 @@
 #include "render/renderer.hpp"
 #include "loader/scene_loader.hpp"
 #include "tests/render/fixed_support.hpp"
+#include "tests/support/hair_scene.hpp"
 
 using namespace lattice;
 
 namespace {
 
 // A small fuzzy ball: 200 hairs on a sphere, over a floor.
-const char* kScene = R"(
-[options]
-width = 64
-height = 64
-ambient = 0.2
-K = 0
-[camera]
-type = "look_at"
-eye = [0.0, 1.0, -3.6]
-target = [0.0, 0.0, 0.0]
-fov = 40
-[materials.fur]
-diffuse = [0.9, 0.6, 0.3]
-specular = 0.4
-shininess = 30
-[[lights]]
-position = [4.0, 6.0, -5.0]
-intensity = 9.0
-[[lattices]]
-name = "hair"
-spacing = 0.03
-oversample = 2
-object = { type = "polyline", radius = 0.015, points = [[0, 0, 0], [0.02, 0, 0.15], [0.08, 0.01, 0.3]] }
-[[objects]]
-type = "sphere"
-radius = 0.9
-[[objects]]
-type = "lattice_scatter"
-lattice = "hair"
-count = 200
-radius = 0.9
-seed = 3
-material = "fur"
-[[objects]]
-type = "half_space"
-normal = [0.0, 1.0, 0.0]
-offset = -1.3
-)";
+const std::string kScene = testing::HairScene{.size = 64, .seed = 3, .fur = true, .floor = true}.toml();
 
 RgbImage render(const SceneDesc& scene, bool fixedPoint, bool full) {
   RenderSettings settings;

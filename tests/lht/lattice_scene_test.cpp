@@ -22,6 +22,7 @@
 #include "render/renderer.hpp"
 #include "loader/scene_loader.hpp"
 #include "tests/support/golden.hpp"
+#include "tests/support/hair_scene.hpp"
 #include "foundation/error.hpp"
 
 using namespace lattice;
@@ -40,48 +41,13 @@ TableSettings tablesIn(std::optional<LhtPrecision> form, bool quiet = false) {
 
 // A small fuzzy sphere (thesis sec. 3.4) with a floor, two lights.
 std::string fuzzyScene(int hairs, const std::string& extraLatticeKeys = "") {
-  return R"(
-[options]
-width = 72
-height = 72
-ambient = 0.2
-K = 0
-[camera]
-type = "look_at"
-eye = [0.0, 1.0, -3.6]
-target = [0.0, 0.0, 0.0]
-fov = 40
-[materials.fur]
-diffuse = [0.9, 0.6, 0.3]
-specular = 0.4
-shininess = 30
-[[lights]]
-position = [4.0, 6.0, -5.0]
-intensity = 9.0
-[[lights]]
-position = [-6.0, 3.0, -2.0]
-intensity = 3.0
-[[lattices]]
-name = "hair"
-spacing = 0.03
-oversample = 2
-)" + extraLatticeKeys + R"(
-object = { type = "polyline", radius = 0.015, points = [[0, 0, 0], [0.02, 0, 0.15], [0.08, 0.01, 0.3]] }
-[[objects]]
-type = "sphere"
-radius = 0.9
-[[objects]]
-type = "lattice_scatter"
-lattice = "hair"
-count = )" + std::to_string(hairs) + R"(
-radius = 0.9
-seed = 7
-material = "fur"
-[[objects]]
-type = "half_space"
-normal = [0.0, 1.0, 0.0]
-offset = -1.3
-)";
+  return testing::HairScene{.size = 72,
+                            .hairs = hairs,
+                            .latticeKeys = extraLatticeKeys.empty() ? "" : extraLatticeKeys + "\n",
+                            .fur = true,
+                            .fillLight = true,
+                            .floor = true}
+      .toml();
 }
 
 RgbImage render(const SceneDesc& scene, bool full, bool latticeShadows = true) {
@@ -341,7 +307,7 @@ TEST_CASE("lattice scene: the precision key picks the entry form and the thesis'
     const LatticeDefinitionPtr d = definition(fmt::format("precision = \"{}\"", name));
     CHECK(lhtPrecisionName(d->precision) == name);
     CHECK(d->hash() != plain->hash());
-    CHECK(buildLatticeTable(*d, tablesIn(std::nullopt, true)).lht.table.precision() == d->precision);
+    CHECK(buildLatticeTable(*d, tablesIn(std::nullopt, true)).lht.precision() == d->precision);
   }
 }
 
@@ -350,7 +316,7 @@ TEST_CASE("lattice scene: a cache of another precision is refused and not silent
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "s.toml") << fuzzyScene(5, "cache = \"hair.lht\"");
   render(loadSceneWithLattices(dir / "s.toml").scene, false);  // writes a thesis cache
-  REQUIRE(readLhtFile(dir / "hair.lht").table.precision() == LhtPrecision::Thesis);
+  REQUIRE(readLhtFile(dir / "hair.lht").precision() == LhtPrecision::Thesis);
   const auto expectRefusal = [&](const SceneDesc& scene, const std::string& asked) {
     try {
       render(scene, false);
@@ -410,15 +376,15 @@ TEST_CASE("lattice scene: the packing hook of the table settings picks the form,
   const SceneWithLattices loaded = loadSceneWithLattices(dir / "s.toml");
   const BuiltTable built = buildLatticeTable(*loaded.lattices.at(0), settings);
   CHECK(calls == 1);
-  CHECK(built.lht.table.precision() == LhtPrecision::Compact);
-  CHECK(built.lht.table.entryCount() == entriesSeen);
+  CHECK(built.lht.precision() == LhtPrecision::Compact);
+  CHECK(built.lht.hashed().entryCount() == entriesSeen);
   CHECK(built.lht.objectHash == loaded.lattices[0]->hashFor(LhtPrecision::Compact));
   render(withTableSettings(loaded, settings).scene, false);  // five instances, one table
   CHECK(calls == 2);
   CHECK_FALSE(std::filesystem::exists(dir / "hair.lht"));  // packed otherwise than asked: not cached
   render(loaded.scene, false);  // the scene as loaded packs as asked, and caches
   CHECK(calls == 2);
-  CHECK(readLhtFile(dir / "hair.lht").table.precision() == LhtPrecision::Thesis);
+  CHECK(readLhtFile(dir / "hair.lht").precision() == LhtPrecision::Thesis);
   std::filesystem::remove_all(dir);
 }
 
@@ -431,7 +397,7 @@ TEST_CASE("lattice scene: one call builds a table for a shape or a scene's entry
   CHECK(fromShape.lht.objectHash == sphereObject(2.0).hash());
   CHECK(fromShape.lht.box.cells() == LatticeBox(sphereObject(2.0).bounds, 1.0, 1.0).cells());
   CHECK(fromShape.lht.hits == fromShape.stats.hits);
-  CHECK(fromShape.lht.table.entryCount() > 0);
+  CHECK(fromShape.lht.hashed().entryCount() > 0);
   TableRequest wrong = sphere;
   wrong.shape = "cube";
   REQUIRE_THROWS_WITH(buildLatticeTable(wrong), Catch::Contains("unknown --shape 'cube'"));
@@ -450,7 +416,7 @@ TEST_CASE("lattice scene: one call builds a table for a shape or a scene's entry
   LatticeDefinition expected = *loadSceneWithLattices(entry.scene).lattices.at(0);
   expected.oversample = 1.0;
   CHECK(fromScene.lht.objectHash == expected.hashFor(LhtPrecision::Wide));
-  CHECK(fromScene.lht.table.precision() == LhtPrecision::Wide);
+  CHECK(fromScene.lht.precision() == LhtPrecision::Wide);
   entry.name = "fur";
   REQUIRE_THROWS_WITH(buildLatticeTable(entry), Catch::Contains("no [[lattices]] entry named 'fur' (defined: hair)"));
   std::filesystem::remove_all(dir);

@@ -46,7 +46,7 @@ std::vector<std::uint8_t> resealed(std::vector<std::uint8_t> bytes) {
 // bucket per entry, each key first in its bucket's primary slot, the rest
 // in the overflow area linked from it (the thesis's layout, sec. 2.3).
 std::vector<std::uint8_t> chainedFile(const LhtFile& lht, std::uint32_t version) {
-  const LatticeHashTable& t = lht.table;
+  const LatticeHashTable& t = lht.hashed();
   const std::size_t entry = entryBytes(t.precision());
   const std::uint64_t buckets = t.entryCount();
   std::vector<std::uint8_t> body(buckets * entry, 0);
@@ -122,19 +122,19 @@ TEST_CASE("lht file: every precision writes and reads back the identical table a
     const LhtFile back = readLhtFile(path, lht.objectHash, form.precision);
     std::filesystem::remove_all(dir);
     CHECK(back.version == kLhtVersion);
-    CHECK(back.table.precision() == form.precision);
+    CHECK(back.precision() == form.precision);
     CHECK(back.box.cells() == lht.box.cells());
     CHECK(back.box.lambda() == lht.box.lambda());
     CHECK(back.box.oversample() == lht.box.oversample());
     CHECK(back.box.origin() == lht.box.origin());
     CHECK(back.pairs == 18750);
     CHECK(back.hits == 3486);
-    CHECK(back.table.entryCount() == lht.table.entryCount());
-    CHECK(back.table.capacity() == lht.table.capacity());
-    CHECK(back.table.slotBytes() == lht.table.slotBytes());
+    CHECK(back.hashed().entryCount() == lht.hashed().entryCount());
+    CHECK(back.hashed().capacity() == lht.hashed().capacity());
+    CHECK(back.hashed().slotBytes() == lht.hashed().slotBytes());
     CHECK(serializeLht(back) == serializeLht(lht));
     const std::vector<std::uint8_t> bytes = serializeLht(lht);
-    CHECK(bytes.size() == kLhtHeaderBytes + lht.table.capacity() * (form.entryBytes - 4) + 8);
+    CHECK(bytes.size() == kLhtHeaderBytes + lht.hashed().capacity() * (form.entryBytes - 4) + 8);
     CHECK(bytes[8] == 4);                                           // version 4: open addressing
     CHECK(bytes[18] == static_cast<std::uint8_t>(form.precision));  // the precision code, u16 LE
     CHECK(bytes[19] == 0);
@@ -148,15 +148,15 @@ TEST_CASE("lht file: chained files of versions 1 and 2 are still read, and check
     const std::vector<std::uint8_t> v2 = chainedFile(lht, 2);
     const LhtFile back = parseLht(v2, "old.lht", lht.objectHash, form.precision);
     CHECK(back.version == 2);
-    checkSameEntries(back.table, lht.table);
+    checkSameEntries(back.hashed(), lht.hashed());
     // Written again, it is a version-4 file of the same table.
     CHECK(serializeLht(back)[8] == kLhtVersion);
-    checkSameEntries(parseLht(serializeLht(back), "new.lht").table, lht.table);
+    checkSameEntries(parseLht(serializeLht(back), "new.lht").hashed(), lht.hashed());
     // A chain that loops back on itself is refused, not followed forever:
     // the last overflow slot links to the first.
     std::vector<std::uint8_t> looped = v2;
     const std::size_t last = v2.size() - 8 - kEntryNextBytes;
-    const std::uint64_t buckets = lht.table.entryCount();
+    const std::uint64_t buckets = lht.hashed().entryCount();
     for (int b = 0; b < 4; ++b) looped[last + b] = static_cast<std::uint8_t>(buckets >> (8 * b));
     CHECK(refusal(resealed(looped)).find("inconsistent") != std::string::npos);
   }
@@ -166,8 +166,8 @@ TEST_CASE("lht file: chained files of versions 1 and 2 are still read, and check
   REQUIRE(v1[18] == 0);
   const LhtFile back = parseLht(v1, "old.lht", lht.objectHash, LhtPrecision::Thesis);
   CHECK(back.version == 1);
-  CHECK(back.table.precision() == LhtPrecision::Thesis);
-  checkSameEntries(back.table, lht.table);
+  CHECK(back.precision() == LhtPrecision::Thesis);
+  checkSameEntries(back.hashed(), lht.hashed());
   const std::string message = refusal(v1, std::nullopt, LhtPrecision::Wide);
   CHECK(message.find("'thesis' entries") != std::string::npos);
 }
@@ -254,7 +254,7 @@ TEST_CASE("lht file: the streamed file reader agrees with parseLht on good and b
   const std::string path = scratch / "bad.lht";
   writeFileAtomically(path, good);
   const LhtFile back = readLhtFile(path, lht.objectHash);
-  CHECK(back.table.slotBytes() == lht.table.slotBytes());
+  CHECK(back.hashed().slotBytes() == lht.hashed().slotBytes());
   CHECK(back.objectHash == lht.objectHash);
 
   std::vector<std::vector<std::uint8_t>> bad;

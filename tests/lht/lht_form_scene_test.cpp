@@ -16,6 +16,7 @@
 #include "lht/leaf/lookup_stats.hpp"
 #include "loader/table_build.hpp"
 #include "render/renderer.hpp"
+#include "tests/support/hair_scene.hpp"
 #include "tests/support/temp_dir.hpp"
 
 using namespace lattice;
@@ -24,34 +25,7 @@ using namespace lattice::lht;
 namespace {
 
 std::string hairScene(const std::string& latticeKeys) {
-  return R"(
-[options]
-width = 56
-height = 56
-[camera]
-type = "look_at"
-eye = [0.0, 1.0, -3.6]
-target = [0.0, 0.0, 0.0]
-fov = 40
-[[lights]]
-position = [4.0, 6.0, -5.0]
-intensity = 9.0
-[[lattices]]
-name = "hair"
-spacing = 0.03
-oversample = 2
-)" + latticeKeys + R"(
-object = { type = "polyline", radius = 0.015, points = [[0, 0, 0], [0.02, 0, 0.15], [0.08, 0.01, 0.3]] }
-[[objects]]
-type = "sphere"
-radius = 0.9
-[[objects]]
-type = "lattice_scatter"
-lattice = "hair"
-count = 200
-radius = 0.9
-seed = 7
-)";
+  return testing::HairScene{.latticeKeys = latticeKeys}.toml();
 }
 
 template <typename T>
@@ -88,7 +62,7 @@ TEST_CASE("compressed LHT: a scene's cache is written as version 3, reused, and 
   const RgbImage first = renderScene<double>(text, dir / "s.toml");
   const LhtFile cached = readLhtFile(dir / "hair.lht");
   CHECK(cached.version == kLhtCompressedVersion);
-  CHECK(cached.form == LhtForm::Compressed);
+  CHECK(cached.form() == LhtForm::Compressed);
   CHECK(renderScene<double>(text, dir / "s.toml").rgb == first.rgb);  // read from the cache
   TableSettings hashed;
   hashed.form = LhtForm::Hashed;
@@ -165,6 +139,6 @@ TEST_CASE("on-demand LHT: it is never rasterized or written to a file") {
   request.settings.form = LhtForm::OnDemand;
   CHECK_THROWS_WITH(buildLatticeTable(request), Catch::Contains("built while rendering, not rasterized"));
   LhtFile file;
-  file.form = LhtForm::OnDemand;
+  file.table = std::shared_ptr<const OnDemandTable>();  // the form alone is refused, before the table is read
   CHECK_THROWS_WITH(serializeLht(file), Catch::Contains("never written to a .lht file"));
 }

@@ -10,6 +10,7 @@
 #include "loader/lattice_scene_loader.hpp"
 #include "render/renderer.hpp"
 #include "tests/lht/raster_support.hpp"
+#include "tests/support/hair_scene.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;
@@ -52,33 +53,7 @@ TEST_CASE("lookup stats: a ray through the centre asks two pairs that hit, one a
 
 namespace {
 
-constexpr const char* kScene = R"(
-[options]
-width = 48
-height = 48
-[camera]
-type = "look_at"
-eye = [0.0, 1.0, -3.6]
-target = [0.0, 0.0, 0.0]
-fov = 40
-[[lights]]
-position = [4.0, 6.0, -5.0]
-intensity = 9.0
-[[lattices]]
-name = "hair"
-spacing = 0.03
-oversample = 2
-object = { type = "polyline", radius = 0.015, points = [[0, 0, 0], [0.02, 0, 0.15], [0.08, 0.01, 0.3]] }
-[[objects]]
-type = "sphere"
-radius = 0.9
-[[objects]]
-type = "lattice_scatter"
-lattice = "hair"
-count = 300
-radius = 0.9
-seed = 7
-)";
+const std::string kScene = testing::HairScene{.size = 48, .hairs = 300}.toml();
 
 struct Counted {
   RgbImage image;

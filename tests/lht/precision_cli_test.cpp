@@ -72,8 +72,8 @@ TEST_CASE("precision CLI: rasterize --precision writes that form and lht-info re
     REQUIRE(run.exitCode == 0);
     CHECK(readText(dir / "stats.txt").find(fmt::format("precision={}", form.name)) != std::string::npos);
     const LhtFile read = readLhtFile(lht);
-    CHECK(read.table.precision() == form.precision);
-    CHECK(read.table.entryCount() == 1562);  // the sphere at f_lat 2, whatever the precision
+    CHECK(read.precision() == form.precision);
+    CHECK(read.hashed().entryCount() == 1562);  // the sphere at f_lat 2, whatever the precision
     REQUIRE(runLattice(fmt::format("lht-info '{}' >'{}'", lht, dir / "info.txt")).exitCode == 0);
     const std::string info = readText(dir / "info.txt");
     CHECK(info.find(fmt::format("precision:     {} ({}-byte entries", form.name, form.entryBytes)) !=
@@ -95,11 +95,11 @@ TEST_CASE("precision CLI: rasterize --scene takes the scene's precision unless -
   std::ofstream(dir / "s.toml") << ballScene("precision = \"compact\"");
   REQUIRE(runLattice(fmt::format("rasterize --scene '{}' --name ball -o '{}'", dir / "s.toml", dir / "a.lht"))
               .exitCode == 0);
-  CHECK(readLhtFile(dir / "a.lht").table.precision() == LhtPrecision::Compact);
+  CHECK(readLhtFile(dir / "a.lht").precision() == LhtPrecision::Compact);
   REQUIRE(runLattice(fmt::format("rasterize --scene '{}' --name ball --precision wide -o '{}'", dir / "s.toml",
                                  dir / "b.lht"))
               .exitCode == 0);
-  CHECK(readLhtFile(dir / "b.lht").table.precision() == LhtPrecision::Wide);
+  CHECK(readLhtFile(dir / "b.lht").precision() == LhtPrecision::Wide);
 }
 
 TEST_CASE("precision CLI: render --lht-precision overrides the scene and a cache of another precision is refused") {
@@ -109,7 +109,7 @@ TEST_CASE("precision CLI: render --lht-precision overrides the scene and a cache
   const auto wide = runLattice(fmt::format("render '{}' --lht-precision wide -o '{}'", dir / "s.toml", dir / "w.png"));
   INFO(wide.stderrText);
   REQUIRE(wide.exitCode == 0);
-  CHECK(readLhtFile(dir / "ball.lht").table.precision() == LhtPrecision::Wide);  // rasterized at the override
+  CHECK(readLhtFile(dir / "ball.lht").precision() == LhtPrecision::Wide);  // rasterized at the override
   // The scene asks for the thesis's entry: the wide cache must be refused, naming both.
   const auto stale = runLattice(fmt::format("render '{}' -o '{}'", dir / "s.toml", dir / "t.png"));
   CHECK(stale.exitCode == 3);
@@ -146,7 +146,7 @@ TEST_CASE("form CLI: rasterize --form compressed writes version 3, lht-info show
   REQUIRE(run.exitCode == 0);
   CHECK(readText(dir / "stats.txt").find("form=compressed") != std::string::npos);
   const LhtFile read = readLhtFile(lht);
-  CHECK(read.form == LhtForm::Compressed);
+  CHECK(read.form() == LhtForm::Compressed);
   CHECK(read.entryCount() == 1562);
   REQUIRE(runLattice(fmt::format("lht-info '{}' >'{}'", lht, dir / "info.txt")).exitCode == 0);
   const std::string info = readText(dir / "info.txt");
@@ -157,10 +157,10 @@ TEST_CASE("form CLI: rasterize --form compressed writes version 3, lht-info show
   // The scene's cache in each form; the pictures are the same bytes.
   std::ofstream(dir / "s.toml") << ballScene();
   REQUIRE(runLattice(fmt::format("render '{}' --lht-form compressed -o '{}'", dir / "s.toml", dir / "c.png")).exitCode == 0);
-  CHECK(readLhtFile(dir / "ball.lht").form == LhtForm::Compressed);
+  CHECK(readLhtFile(dir / "ball.lht").form() == LhtForm::Compressed);
   std::filesystem::remove(dir / "ball.lht");
   REQUIRE(runLattice(fmt::format("render '{}' -o '{}'", dir / "s.toml", dir / "h.png")).exitCode == 0);
-  CHECK(readLhtFile(dir / "ball.lht").form == LhtForm::Hashed);
+  CHECK(readLhtFile(dir / "ball.lht").form() == LhtForm::Hashed);
   CHECK(readText(dir / "c.png") == readText(dir / "h.png"));
   const auto bad = runLattice(fmt::format("render '{}' --lht-form zip -o '{}'", dir / "s.toml", dir / "x.png"));
   CHECK(bad.exitCode == 2);

@@ -115,7 +115,7 @@ inline bool isSetUpFunction(const std::string& name) {
   static const std::vector<std::string> setUp = {"::Camera(", "::Renderer(", "::build(", "::Bvh(",
                                                  "makeQuarticLeaf<", "makeCapsule<", "makeQuarticCapsule<", "paddedBox<",
                                                  "buildPrimitive<", "::QuarticLeaf(", "makeCsgNode<",
-                                                 "::LatticeLeaf(", "makePolyline<", "makeLatticeLeaf<",
+                                                 "::LatticeLeafBase(", "makePolyline<", "makeLatticeLeaf<",
                                                  "::QuarticArithmetic(", "QuarticArithmetic<lattice::Fixed<32> >::prepare(",
                                                  "::EntryReader(", "::buildInto(", "::buildAs<"};
   for (const std::string& s : setUp)

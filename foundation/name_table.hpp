@@ -1,0 +1,75 @@
+#pragma once
+// Tables of named things: an enum's values and their spellings on the command
+// line and in files, a device's named presets. One way to list the names
+// ("a, b, c", as every "use one of ..." message gives them), to find an entry
+// by name, and to go between an enum value and its name.
+//
+// Method: a table is a small array or vector read front to back (a handful
+// of entries; a map would cost more than it saves). An entry is either a
+// {value, name} pair (EnumName) or a struct with a `name` member (what the
+// table describes besides); names may be std::string or std::string_view.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+
+namespace lattice {
+
+// One spelling of an enum value.
+template <class Enum>
+using EnumName = std::pair<Enum, std::string_view>;
+
+// The entry's name: a pair's second, else its `name` member.
+template <class Entry>
+std::string_view entryName(const Entry& entry) {
+  if constexpr (requires { entry.name; })
+    return entry.name;
+  else
+    return entry.second;
+}
+
+// "a, b, c": every entry's name, in table order.
+template <class Table>
+std::string namesOf(const Table& table) {
+  std::string names;
+  for (const auto& entry : table) {
+    if (!names.empty()) names += ", ";
+    names += entryName(entry);
+  }
+  return names;
+}
+
+// The entry called `name`, or null.
+template <class Table>
+auto findNamed(const Table& table, std::string_view name) -> decltype(&*std::begin(table)) {
+  for (const auto& entry : table)
+    if (entryName(entry) == name) return &entry;
+  return nullptr;
+}
+
+// The value an EnumName table spells `name`, or none.
+template <class Table>
+auto valueNamed(const Table& table, std::string_view name) -> std::optional<decltype(std::begin(table)->first)> {
+  if (const auto* entry = findNamed(table, name)) return entry->first;
+  return std::nullopt;
+}
+
+// The name an EnumName table gives `value`, or `otherwise`.
+template <class Table, class Enum>
+std::string_view nameOfValue(const Table& table, Enum value, std::string_view otherwise = "unknown") {
+  for (const auto& [v, name] : table)
+    if (v == value) return name;
+  return otherwise;
+}
+
+// The value of an EnumName table whose underlying integer is `code` (a file's
+// field), or none.
+template <class Table>
+auto valueWithCode(const Table& table, std::uint64_t code) -> std::optional<decltype(std::begin(table)->first)> {
+  for (const auto& [v, name] : table)
+    if (static_cast<std::uint64_t>(v) == code) return v;
+  return std::nullopt;
+}
+
+}  // namespace lattice
