@@ -224,8 +224,10 @@ XtermCapture captureXterm(const XtermCaptureOptions& o) {
   std::vector<std::uint8_t> previous;
   while (true) {
     std::this_thread::sleep_for(std::chrono::milliseconds(250));
-    if (runToEnd({"xwd", "-silent", "-id", windowId, "-out", dump}, display) != 0) {
-      result.skipReason = "xwd could not capture xterm's window " + windowId;
+    const std::vector<std::string> which =
+        o.windowName.empty() ? std::vector<std::string>{"-id", windowId} : std::vector<std::string>{"-name", o.windowName};
+    if (runToEnd({"xwd", "-silent", "-nobdrs", which[0], which[1], "-out", dump}, display) != 0) {
+      result.skipReason = "xwd could not capture xterm's window " + which[1];
       return result;
     }
     std::vector<std::uint8_t> bytes = readAll(dump);

@@ -35,6 +35,11 @@ namespace lattice::testing {
 struct XtermCaptureOptions {
   std::vector<std::string> xtermArguments;  // e.g. {"-ti", "vt340", "-xrm", "XTerm*numColorRegisters: 256"}
   std::string streamFile;                   // copied to the terminal as it is
+  // Empty: capture xterm's VT window ($WINDOWID). Otherwise the top-level
+  // window of this name (xwd -name): "tektronix(Tek)" is `xterm -t`'s Tek 4014
+  // window, a window of its own beside the (unmapped) VT one. Either way the
+  // window's border is left out (xwd -nobdrs).
+  std::string windowName;
   int screenWidth = 1280;                   // the Xvfb screen
   int screenHeight = 1024;
   double timeoutSeconds = 30;  // for the X server, xterm and the drawing to settle
