@@ -63,7 +63,7 @@ namespace lattice::app {
 void addEmulate(CLI::App& root) {
   auto o = std::make_shared<EmulateOptions>();
   auto* cmd = root.add_subcommand("emulate", "Decode a device's command stream into the PNG its screen would show");
-  cmd->add_option("--device", o->device, "The device whose stream it is: tek4125 (4100-series commands), tek4027 (!-commands) or apollo (GPR journal)")
+  cmd->add_option("--device", o->device, "The device whose stream it is: tek4125 (4100-series commands), tek4027 (!-commands), tek4014 (4010/4014 graphics) or apollo (GPR journal)")
       ->required()
       ->check(CLI::IsMember(lattice::devices::deviceNames()));
   cmd->add_option("stream", o->input, "Command stream file, or - for standard input")->required();

@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include "devices/apollo_sim/apollo_device.hpp"
+#include "devices/tek4014/tek4014_device.hpp"
 #include "devices/tek4027/tek4027_device.hpp"
 #include "devices/tek4125/tek4125_device.hpp"
 #include "foundation/error.hpp"
@@ -14,6 +15,8 @@ namespace {
 const DeviceEntry kDevices[] = {
     {"tek4125", "Tektronix 4125: a 4100-series command stream", &tek4125::makeDevice},
     {"tek4027", "Tektronix 4027: a !-command stream, eight paint pots", &tek4027::makeDevice},
+    {"tek4014", "Tektronix 4014 (and xterm -t): dithered dots, 10- or 12-bit addresses (--set bits=12)",
+     &tek4014::makeDevice},
     {"apollo", "simulated Apollo DN660/DN580: its GPR calls as a journal (--set profile=dn660|dn660-4|dn580)",
      &apollo::makeDevice},
 };

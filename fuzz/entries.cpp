@@ -28,6 +28,7 @@
 #include <fstream>
 #include <string>
 
+#include "devices/tek4014/tek4014_decoder.hpp"
 #include "devices/tek4027/tek4027_decoder.hpp"
 #include "devices/tek4125/tek4125_decoder.hpp"
 #include "io/png.hpp"
@@ -118,6 +119,14 @@ void tek4027Decoder(std::span<const std::uint8_t> bytes) {
   decode(decoder, bytes);
 }
 
+void tek4014Decoder(std::span<const std::uint8_t> bytes) {
+  tek4014::Tek4014Profile profile;
+  // Now and then the 12-bit screen (16 times the pixels, so not always).
+  if (bytes.size() % 16 == 15) profile.addressBits = 12;
+  tek4014::Tek4014Decoder decoder{profile};
+  decode(decoder, bytes);
+}
+
 void pngReader(std::span<const std::uint8_t> bytes) {
   try {
     (void)io::readPngBytes(bytes, "fuzz.png");
@@ -130,6 +139,7 @@ const std::vector<Target>& targets() {
                                         {"lht", lhtReader},
                                         {"tek4125", tek4125Decoder},
                                         {"tek4027", tek4027Decoder},
+                                        {"tek4014", tek4014Decoder},
                                         {"png", pngReader}};
   return list;
 }

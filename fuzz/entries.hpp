@@ -20,6 +20,7 @@ void sceneLoader(std::span<const std::uint8_t> bytes);  // TOML text -> SceneDes
 void lhtReader(std::span<const std::uint8_t> bytes);    // .lht bytes -> LhtFile, as read and checksum-fixed
 void tek4125Decoder(std::span<const std::uint8_t> bytes);  // Tek 4100 command stream -> screen
 void tek4027Decoder(std::span<const std::uint8_t> bytes);  // Tek 4027 command stream -> screen
+void tek4014Decoder(std::span<const std::uint8_t> bytes);  // Tek 4010/4014 graphics stream -> screen
 void pngReader(std::span<const std::uint8_t> bytes);       // PNG file -> RgbImage
 
 struct Target {

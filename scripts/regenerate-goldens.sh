@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [[ "${1:-}" == "--help" || "${1:-}" == "-h" ]]; then
-  echo "usage: scripts/regenerate-goldens.sh [AREA]   (AREA as ctest names it, e.g. devices/tek4027; default: all)"
+  echo "usage: scripts/regenerate-goldens.sh [AREA]   (AREA as ctest names it, e.g. devices/tek4027 or devices/tek4014; default: all)"
   exit 0
 fi
 bash scripts/build.sh

@@ -2,7 +2,11 @@
 # Installs the Debian packages Lattice builds and tests with, only those
 # missing, so it is safe to run again and again. gnuplot-nox: the Tek 4125
 # emulator's tests decode the streams its tek410x and tek40xx terminals
-# write. `--bench` adds the peers the benchmarks compare against (POV-Ray,
+# write. `--terminals` adds the terminals people own and the programs that
+# check our pictures of them: libsixel-bin (sixel2png, img2sixel), xterm, xvfb
+# and x11-apps (xwd), for the sixel and Tek 4014 tests
+# (tests/support/xterm_capture.hpp; scripts/test.sh asks for them). `--bench`
+# adds the peers the benchmarks compare against (POV-Ray,
 # Embree, pngquant, GNU time); `--fuzz` adds clang 14, its runtime libraries
 # (libFuzzer, ASan, UBSan: libclang-rt-14-dev) and llvm-14 (llvm-symbolizer),
 # for scripts/fuzz.sh and the sanitizer build (scripts/test.sh asks for it);
@@ -15,10 +19,11 @@ packages=(cmake ninja-build g++ make pkg-config git catch2 libglm-dev libpng-dev
           libtomlplusplus-dev libcli11-dev libfmt-dev gnuplot-nox)
 for option in "$@"; do
   case $option in
+    --terminals) packages+=(libsixel-bin xterm xvfb x11-apps) ;;
     --bench) packages+=(povray libembree-dev pngquant time python3) ;;
     --fuzz) packages+=(clang-14 libclang-rt-14-dev llvm-14) ;;
     --firmware) packages+=(gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm) ;;
-    *) echo "setup.sh: unknown option $option (known: --bench, --fuzz, --firmware)" >&2; exit 2 ;;
+    *) echo "setup.sh: unknown option $option (known: --terminals, --bench, --fuzz, --firmware)" >&2; exit 2 ;;
   esac
 done
 

@@ -34,9 +34,9 @@ step() {
 
 started=$SECONDS
 if ((all)); then
-  step setup bash scripts/setup.sh --fuzz --firmware
+  step setup bash scripts/setup.sh --terminals --fuzz --firmware
 else
-  step setup bash scripts/setup.sh --firmware
+  step setup bash scripts/setup.sh --terminals --firmware
 fi
 step layers bash scripts/check-layers.sh
 step build bash scripts/build.sh
