@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/stream_check.hpp"
 #include "devices/device_table.hpp"
 #include "devices/work_budget.hpp"
 #include "io/png.hpp"
@@ -26,6 +27,7 @@ struct EmulateOptions {
   std::vector<std::string> settings;
   bool report = false;
   bool strict = false;
+  bool raw = false;
 };
 
 void runEmulate(const EmulateOptions& o) {
@@ -33,6 +35,8 @@ void runEmulate(const EmulateOptions& o) {
   using lattice::ErrorKind;
   const lattice::devices::Device device = lattice::devices::makeDevice(o.device, o.settings);
   std::unique_ptr<lattice::StreamDecoder> decoder = device.makeEmulator();
+  // Refuses a PNG, a scene, an empty file... before it becomes a picture of noise.
+  if (!o.raw) decoder = std::make_unique<lattice::app::CheckedDecoder>(std::move(decoder), device, o.input);
   // Read in pieces (a stream may be large, and the decoder takes any
   // chunking), within the stream-size limit and the drawing budget.
   std::FILE* in = o.input == "-" ? stdin : std::fopen(o.input.c_str(), "rb");
@@ -71,7 +75,12 @@ void addEmulate(CLI::App& root) {
   cmd->add_option("--set", o->settings, "Override a profile assumption, key=value (repeatable), e.g. --set planes=4");
   cmd->add_flag("--report", o->report, "Print what was decoded: bytes, commands, unknown commands by name");
   cmd->add_flag("--strict", o->strict, "Exit 3 if the stream holds unknown or malformed commands");
+  cmd->add_flag("--raw", o->raw,
+                "Decode the bytes even if they do not look like the device's stream (without it, a PNG, a scene, "
+                "an empty file or another device's stream is refused with exit 3)");
   cmd->footer(
+      "The stream is checked first: a file that does not look like the device's stream (a PNG, a scene, an\n"
+      "empty file, another device's stream) is refused with exit 3 saying what it is; --raw decodes it anyway.\n"
       "The emulator never stops on bad bytes: unknown commands and garbage are skipped (resynchronising at the\n"
       "next command) and counted. Streams over 256 MiB, or asking for more than 2^30 pixels of drawing, are\n"
       "refused with exit 3 (docs/limits.md). Example:\n"

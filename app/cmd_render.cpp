@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -18,6 +19,7 @@
 #include "devices/apollo_sim/apollo_profile.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/arithmetics.hpp"
+#include "foundation/error.hpp"
 #include "foundation/system/resident_memory.hpp"
 #include "lht/leaf/lookup_mode.hpp"
 #include "lht/table/lht_form.hpp"
@@ -41,66 +43,125 @@ struct RenderFlags {
   io::SerialOptions serial;
 };
 
+constexpr const char* kOutputGroup = "Output";
+constexpr const char* kPictureGroup = "Picture";
+constexpr const char* kLatticeGroup = "Lattices";
+
+// --baud's default as it behaves: each device's own line rate.
+std::string profileBaudText() {
+  std::vector<std::string> rates;
+  for (const devices::DeviceEntry& entry : devices::deviceTable()) {
+    const devices::Device device = entry.make({});
+    if (device.line) rates.push_back(fmt::format("{} {}", entry.name, device.line->baud));
+  }
+  return fmt::format("the device profile's rate: {}", fmt::join(rates, ", "));
+}
+
+// A flag that would do nothing in this combination is refused with the reason.
+void refuseUnless(const CLI::App& cmd, std::initializer_list<const char*> flags, bool applies, const std::string& why) {
+  if (applies) return;
+  for (const char* flag : flags)
+    if (cmd.count(flag) > 0) throw Error(ErrorKind::Usage, fmt::format("{} {}", flag, why));
+}
+
 void defineFlags(CLI::App& cmd, RenderFlags& f) {
   RenderJob& j = f.job;
   std::vector<std::string> devices = {"png"};
   for (const std::string& name : devices::deviceNames()) devices.push_back(name);
   cmd.add_option("scene", j.scene, "Scene file (TOML, see docs/scene-format.md)")->required();
+  // Help groups follow docs/cli.md's list for `lattice render`; a flag added
+  // without a group is listed under "Options".
   cmd.add_option("-o,--output", j.picture,
-                 "PNG to write (atomically): the truecolour picture, or the device emulator's view of the stream");
+                 "PNG to write (atomically): the truecolour picture, or the device emulator's view of the stream")
+      ->group(kOutputGroup);
   cmd.add_option("--device", f.device, fmt::format("png (truecolour) or a device: {}", fmt::join(devices, ", ")))
       ->check(CLI::IsMember(devices))
-      ->capture_default_str();
-  cmd.add_option("--stream", j.stream, "Devices: write the command stream to this file, or - for stdout");
+      ->capture_default_str()
+      ->group(kOutputGroup);
+  cmd.add_option("--stream", j.stream, "Devices: write the command stream to this file, or - for stdout")
+      ->group(kOutputGroup);
   cmd.add_option("--set", j.settings,
                  "Devices: override a profile assumption, key=value (repeatable), e.g. --set planes=4; "
-                 "docs/tek4125.md and docs/tek4027.md list the keys");
+                 "docs/tek4125.md and docs/tek4027.md list the keys")
+      ->group(kOutputGroup);
   cmd.add_option("--apollo-profile", f.apolloProfile, "apollo: dn660 (8 planes), dn660-4 (4 planes) or dn580")
       ->check(CLI::IsMember(apollo::apolloProfileNames()))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->group(kOutputGroup);
   cmd.add_option("--width", j.width, "Image width in pixels (default: the scene's, fitted to the device)")
-      ->check(CLI::Range(1, 16384));
+      ->check(CLI::Range(1, 16384))
+      ->group(kPictureGroup);
   cmd.add_option("--height", j.height, "Image height in pixels (default: the scene's, fitted to the device)")
-      ->check(CLI::Range(1, 16384));
+      ->check(CLI::Range(1, 16384))
+      ->group(kPictureGroup);
   cmd.add_option("--threads", j.threads, "Threads for rendering and rasterizing (default: all cores); same image")
-      ->check(CLI::Range(1, 256));
+      ->check(CLI::Range(1, 256))
+      ->group(kPictureGroup);
   cmd.add_option("--arith", j.arithmetic,
                  fmt::format("Arithmetic of the whole per-pixel path: {} (fixed: Q31.32 integers, no FPU; "
                              "docs/fixed-point.md)",
                              arithmeticNames()))
       ->check([](const std::string& name) { return isArithmeticName(name) ? "" : "choose " + arithmeticNames(); })
-      ->capture_default_str();
-  cmd.add_flag("--full", j.fullRayTrace, "Full ray trace: every lattice replaced by its exact CSG object");
-  cmd.add_flag("--no-lattice-shadows", f.noLatticeShadows, "Lattices cast no shadows, as particles (thesis plate 3)");
+      ->capture_default_str()
+      ->group(kPictureGroup);
+  cmd.add_flag("--full", j.fullRayTrace, "Full ray trace: every lattice replaced by its exact CSG object")->group(kLatticeGroup);
+  cmd.add_flag("--no-lattice-shadows", f.noLatticeShadows, "Lattices cast no shadows, as particles (thesis plate 3)")
+      ->group(kLatticeGroup);
   cmd.add_option("--lht-precision", f.lhtPrecision,
                  fmt::format("LHT entry precision of every lattice, overriding the scene's `precision`: {} "
                              "(docs/lattices.md, \"Entry precision\")",
-                             lht::lhtPrecisionChoices()));
+                             lht::lhtPrecisionChoices()))
+      ->group(kLatticeGroup);
   cmd.add_option("--lht-form", f.lhtForm,
                  fmt::format("LHT form of every lattice, overriding the scene's `form`: {} (docs/lattices.md, \"The "
                              "compressed LHT\", \"The LHT built on demand\")",
-                             lht::lhtFormChoices()));
+                             lht::lhtFormChoices()))
+      ->group(kLatticeGroup);
   cmd.add_option("--lattice-lookup", f.lookup,
                  fmt::format("How lattice leaves read their table, overriding the scene's `lookup`: {} (thesis: "
                              "nearest lattice points, one pair; blend: the 16 pairs around the ray, weighted; "
                              "docs/lattices.md, \"Look-ups\")",
-                             lht::latticeLookupChoices()));
+                             lht::latticeLookupChoices()))
+      ->group(kLatticeGroup);
   cmd.add_option("--lht-cache", f.lhtCache,
                  "With --lht-form on-demand: the most memory its stored hits take, 48 bytes each (8MiB, 65536K; "
                  "default 64MiB; misses go to a bitmap apart); beyond it new pairs are traced again rather than "
-                 "stored (docs/lattices.md)");
+                 "stored (docs/lattices.md)")
+      ->group(kLatticeGroup);
   cmd.add_flag("--lht-stats", j.lhtStats,
                "After rendering, print per lattice: look-ups, hits, misses, distinct (p_i, p_o) asked, entries "
-               "referenced (share of N_iz) and look-ups per entry (docs/lattices.md); off, nothing is counted");
+               "referenced (share of N_iz) and look-ups per entry (docs/lattices.md); off, nothing is counted")
+      ->group(kLatticeGroup);
   cmd.add_option("--memory-budget", f.memoryBudget,
                  "Keep peak resident memory within SIZE (8MiB, 8192K, 8388608): picks the quantizer mode and the "
-                 "entry form of lattices rasterized now, or exits 8 saying why not (docs/memory.md)");
-  addPipelineOptions(&cmd, f.pipeline);
-  addSerialOptions(&cmd, f.serial, /*portRequired=*/false);
+                 "entry form of lattices rasterized now, or exits 8 saying why not (docs/memory.md)")
+      ->group("Memory");
+  addPipelineOptions(&cmd, f.pipeline, "Quantizer (devices)");
+  addSerialOptions(&cmd, f.serial, /*portRequired=*/false, profileBaudText());
 }
 
 // The parsed flags as a job; bad combinations fail here, before the scene.
 RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
+  const bool png = f.device == "png";
+  const std::string deviceChoices = fmt::format("{}", fmt::join(devices::deviceNames(), ", "));
+  refuseUnless(cmd, {"--stream", "--port"}, !png,
+               fmt::format("takes a device's command stream, and a truecolour render has none: add --device ({})",
+                           deviceChoices));
+  refuseUnless(cmd, {"--colors", "--dither", "--split", "--refine", "--mode", "--sample", "--histogram"}, !png,
+               fmt::format("sets the quantizer of a device's colours, and a truecolour PNG is not quantized: add "
+                           "--device ({}), or quantize the PNG afterwards with `lattice quantize`",
+                           deviceChoices));
+  refuseUnless(cmd, {"--set"}, !png,
+               fmt::format("overrides a device profile, and none was chosen: add --device ({})", deviceChoices));
+  refuseUnless(cmd, {"--apollo-profile"}, f.device == "apollo",
+               fmt::format("chooses the simulated Apollo's profile: add --device apollo, or drop it for {}",
+                           png ? "a truecolour PNG" : f.device));
+  refuseUnless(cmd, {"--baud", "--flow", "--data-bits", "--parity", "--stop-bits", "--stall-timeout", "--pace"},
+               cmd.count("--port") > 0, "sets the serial line of --port, and none was given: add --port PORT, or drop it");
+  if (cmd.count("--lht-cache") > 0 && f.lhtForm != "on-demand")
+    fmt::print(stderr,
+               "lattice render: warning: --lht-cache bounds only tables built on demand; it applies to no lattice "
+               "unless --lht-form on-demand is given or the scene sets form = \"on-demand\"\n");
   RenderJob job = f.job;
   if (f.device != "png") job.device = f.device;
   if (f.device == "apollo") job.settings.insert(job.settings.begin(), "profile=" + f.apolloProfile);
@@ -115,6 +176,11 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
   job.pipeline = toPipelineOptions(f.pipeline, cmd);
   job.quiet = f.pipeline.quiet;
   if (cmd.count("--port") > 0) {
+    if (f.serial.port.rfind("virtual:", 0) == 0)
+      throw Error(ErrorKind::Usage,
+                  fmt::format("--port {}: a virtual terminal is `lattice send`'s; write the stream with --stream "
+                              "FILE, then run lattice send FILE --port {}",
+                              f.serial.port, f.serial.port));
     job.port = f.serial;
     job.baudFromProfile = cmd.count("--baud") == 0;
   }
@@ -176,10 +242,11 @@ void addRender(CLI::App& root) {
     RenderJob job = jobFrom(*flags, *cmd);
     job.events = sayRenderEvent;
     const RenderResult r = renderScene(job);
-    fmt::print(stderr, "lattice render: {}: {}x{}, {:.2f} s{}, {} rays ({} arithmetic, {} threads){}\n", job.scene,
+    fmt::print(stderr, "lattice render: {}: {}x{}, {:.2f} s{}, {} rays ({} arithmetic, {} thread{}){}\n", job.scene,
                r.width, r.height, r.seconds,
                r.traceSeconds > 0 ? fmt::format(" (trace {:.4f} s)", r.traceSeconds) : std::string(), r.rays,
-               job.arithmetic, r.threads, job.picture.empty() ? "" : fmt::format(", picture {}", job.picture));
+               job.arithmetic, r.threads, r.threads == 1 ? "" : "s",
+               job.picture.empty() ? "" : fmt::format(", picture {}", job.picture));
   });
 }
 

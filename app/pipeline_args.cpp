@@ -3,12 +3,14 @@
 #include <fmt/format.h>
 
 #include <map>
+#include <vector>
 
 #include "foundation/error.hpp"
 
 namespace lattice::app {
 
-void addPipelineOptions(CLI::App* cmd, PipelineArgs& args) {
+void addPipelineOptions(CLI::App* cmd, PipelineArgs& args, const std::string& group) {
+  const std::size_t before = cmd->get_options().size();
   cmd->add_option("-k,--colors", args.colors,
                   "Palette size K, 1..256 (fewer if the image has fewer colours or the device shows fewer)")
       ->capture_default_str()
@@ -33,7 +35,9 @@ void addPipelineOptions(CLI::App* cmd, PipelineArgs& args) {
                   "6144 colours: the firmware's form, docs/firmware.md); the same palette either way")
       ->check(CLI::IsMember({"full", "small"}))
       ->capture_default_str();
-  cmd->add_flag("-q,--quiet", args.quiet, "no progress bars");
+  const std::vector<CLI::Option*> options = cmd->get_options();
+  for (std::size_t i = before; i < options.size(); ++i) options[i]->group(group);
+  cmd->add_flag("-q,--quiet", args.quiet, "no progress bars")->group("Report");
 }
 
 quantize::PipelineOptions toPipelineOptions(const PipelineArgs& args, const CLI::App& cmd) {

@@ -21,7 +21,9 @@ struct PipelineArgs {
   bool quiet = false;
 };
 
-void addPipelineOptions(CLI::App* cmd, PipelineArgs& args);
+// `group`: the help group the quantizer flags are listed under (--quiet is
+// listed under "Report" either way).
+void addPipelineOptions(CLI::App* cmd, PipelineArgs& args, const std::string& group = "Quantizer");
 // Throws lattice::Error(Usage) for combinations CLI11 cannot check alone.
 quantize::PipelineOptions toPipelineOptions(const PipelineArgs& args, const CLI::App& cmd);
 

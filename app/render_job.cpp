@@ -9,6 +9,7 @@
 #include <memory>
 #include <utility>
 
+#include "app/output_check.hpp"
 #include "app/render_budget.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/arithmetics.hpp"
@@ -25,15 +26,6 @@
 
 namespace lattice::app {
 namespace {
-
-void requireDirectoryFor(const std::string& path, const char* flag) {
-  const std::filesystem::path parent = std::filesystem::absolute(path).parent_path();
-  std::error_code ec;
-  if (!std::filesystem::is_directory(parent, ec))
-    throw Error(ErrorKind::Output, fmt::format("{} {}: the directory {} does not exist; create it or choose another "
-                                               "path",
-                                               flag, path, parent.string()));
-}
 
 // The picture size: what the job asks for, else the scene's own, shrunk
 // (keeping its shape) to fit the device's screen (a SizeFitted event).
@@ -203,8 +195,9 @@ void checkRenderJob(const RenderJob& job) {
       throw Error(ErrorKind::Usage, "give either --stream or --port, not both (record a stream with --stream, then "
                                     "`lattice send` it)");
   }
-  if (!job.picture.empty()) requireDirectoryFor(job.picture, "-o");
-  if (!job.stream.empty() && job.stream != "-") requireDirectoryFor(job.stream, "--stream");
+  // Read-only files were refused (or allowed by --force) with the flags.
+  checkOutputPath(job.picture, "-o", /*force=*/true);
+  checkOutputPath(job.stream, "--stream", /*force=*/true);
 }
 
 RenderResult renderScene(const RenderJob& job) {

@@ -1,17 +1,22 @@
 #include "app/serial_args.hpp"
 
 #include <string>
+#include <vector>
 
 namespace lattice::app {
 
-void addSerialOptions(CLI::App* cmd, io::SerialOptions& options, bool portRequired) {
+void addSerialOptions(CLI::App* cmd, io::SerialOptions& options, bool portRequired, const std::string& baudDefault) {
+  const std::size_t before = cmd->get_options().size();
   auto* port = cmd->add_option("--port", options.port,
                                "Serial port: a device such as /dev/ttyUSB0, or `auto` for the only USB-serial "
                                "adapter (`lattice ports` lists them)");
   if (portRequired) port->required();
-  cmd->add_option("--baud", options.baud, "Line speed; match the terminal's setup (9600, 19200, 38400...)")
-      ->capture_default_str()
-      ->check(CLI::Range(50, 4000000));
+  auto* baud = cmd->add_option("--baud", options.baud, "Line speed; match the terminal's setup (9600, 19200, 38400...)")
+                   ->check(CLI::Range(50, 4000000));
+  if (baudDefault.empty())
+    baud->capture_default_str();
+  else
+    baud->description(baud->get_description() + " [default: " + baudDefault + "]");
   cmd->add_option_function<std::string>(
          "--flow", [&options](const std::string& text) { options.flow = io::parseFlowControl(text); },
          "Flow control: xonxoff (DC1/DC3, the Tektronix default), rtscts (hardware) or none [xonxoff]")
@@ -32,6 +37,8 @@ void addSerialOptions(CLI::App* cmd, io::SerialOptions& options, bool portRequir
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--pace", options.pace,
                 "Limit the rate to the baud rate ourselves, for lines that do not (a pty, a network bridge)");
+  const std::vector<CLI::Option*> added = cmd->get_options();
+  for (std::size_t i = before; i < added.size(); ++i) added[i]->group("Serial line");
 }
 
 }  // namespace lattice::app

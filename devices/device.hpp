@@ -65,6 +65,18 @@ struct Device {
     std::function<void(int fd, double timeoutSeconds)> await;
   };
   std::optional<ReplyPacing> replies;
+
+  // Optional: whether a stream's first bytes (at most kRecogniseBytes, fewer
+  // when the stream is shorter, never empty) look like this device's stream.
+  // `lattice emulate` checks it before decoding, so that a PNG or a scene
+  // file is named for what it is instead of decoded into noise. It should
+  // accept streams of other programs the emulator reads too (gnuplot's,
+  // PGPLOT's), so it judges the shape of the bytes, not our driver's habits.
+  // A device without one accepts any stream.
+  std::function<bool(std::span<const std::uint8_t> head)> recognise;
 };
+
+// How much of a stream Device::recognise is shown.
+inline constexpr std::size_t kRecogniseBytes = 4096;
 
 }  // namespace lattice::devices

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <iterator>
+
 #include "devices/apollo_sim/apollo_driver.hpp"
 #include "devices/apollo_sim/apollo_profile.hpp"
 #include "devices/apollo_sim/gpr_journal.hpp"
@@ -53,6 +56,11 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   d.emulatorMemory = 4 * static_cast<std::uint64_t>(profile.width) * static_cast<std::uint64_t>(profile.height);
   d.profileText = fmt::format("profile={}\nmodel={}\nwidth={}\nheight={}\nplanes={}\n", profile.name, profile.model,
                               profile.width, profile.height, profile.planes);
+  // The journal's header (gpr_journal.hpp).
+  d.recognise = [](std::span<const std::uint8_t> head) {
+    return head.size() >= sizeof kGprJournalHeader &&
+           std::equal(std::begin(kGprJournalHeader), std::end(kGprJournalHeader), head.begin());
+  };
   return d;
 }
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "devices/stream_shape.hpp"
 #include "devices/tek4027/tek4027_decoder.hpp"
 #include "devices/tek4027/tek4027_driver.hpp"
 #include "devices/tek4027/tek4027_encoder.hpp"
@@ -59,6 +60,19 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   d.emulatorMemory = 3 * pixels(profile.width, profile.height);  // the screen, and its RGB copy for the PNG
   d.line = profile.line;
   d.profileText = describe(profile);
+  // 7-bit text with a command: the command character `!` and a three-letter
+  // name (`!WOR`, `!GRA`, `!MAP`); no escape sequences, which are the 4100
+  // series' (the 4027 takes ESC only as an ordinary control character).
+  d.recognise = [](std::span<const std::uint8_t> head) {
+    if (!devices::mostlySevenBit(head)) return false;
+    bool command = false;
+    for (std::size_t i = 0; i < head.size(); ++i) {
+      if (head[i] == 0x1B) return false;
+      const auto upper = [&](std::size_t at) { return at < head.size() && head[at] >= 'A' && head[at] <= 'Z'; };
+      command = command || (head[i] == '!' && upper(i + 1) && upper(i + 2) && upper(i + 3));
+    }
+    return command;
+  };
   // `lattice send --device tek4027` waits where the stream asks (the same
   // requests the driver waits on over a live line).
   d.replies = devices::Device::ReplyPacing{

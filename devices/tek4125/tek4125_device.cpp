@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "devices/stream_shape.hpp"
 #include "devices/tek4125/tek4125_decoder.hpp"
 #include "devices/tek4125/tek4125_driver.hpp"
 #include "devices/tek4125/tek4125_writer.hpp"
@@ -52,6 +53,18 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   d.emulatorMemory = 3 * static_cast<std::uint64_t>(profile.width) * static_cast<std::uint64_t>(profile.height);
   d.line = profile.line();
   d.profileText = describe(profile);
+  // 7-bit bytes with a 4100-series command (ESC and a letter: `ESC L F`,
+  // `ESC % ! 0`) or the 4010 graph mode (GS) that gnuplot's and PGPLOT's
+  // streams use; a scene, a text or an image has neither.
+  d.recognise = [](std::span<const std::uint8_t> head) {
+    if (!devices::mostlySevenBit(head)) return false;
+    for (std::size_t i = 0; i < head.size(); ++i) {
+      if (head[i] == 0x1D) return true;
+      if (head[i] == 0x1B && i + 1 < head.size() && ((head[i + 1] >= 'A' && head[i + 1] <= 'Z') || head[i + 1] == '%'))
+        return true;
+    }
+    return false;
+  };
   return d;
 }
 

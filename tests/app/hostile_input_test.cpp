@@ -18,7 +18,7 @@ TEST_CASE("lattice emulate /dev/zero stops at the stream-size limit with exit 3"
   const lattice::testing::TempDir scratch("emulate-zero");
   for (const char* device : {"tek4125", "tek4027"}) {
     const std::string out = scratch / "zero.png";
-    const auto run = runLattice(fmt::format("emulate --device {} /dev/zero -o '{}'", device, out));
+    const auto run = runLattice(fmt::format("emulate --device {} --raw /dev/zero -o '{}'", device, out));
     INFO(device << ": " << run.stderrText);
     CHECK(run.exitCode == 3);
     CHECK_THAT(run.stderrText, Catch::Contains("/dev/zero") && Catch::Contains("268435456 bytes") &&

@@ -1,0 +1,17 @@
+#pragma once
+// The man page and the bash completion, generated from the CLI11 tree that
+// `--help` prints, so neither can list a command or flag the program does
+// not have (tests/app/help_export_test.cpp compares the page with --help).
+// The build writes both with `lattice --generate-man FILE` and
+// `lattice --generate-bash-completion FILE` (hidden flags, read before the
+// command line is parsed) and `cmake --install` installs them.
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace lattice::app {
+
+std::string manPage(const CLI::App& root, const std::string& version);
+std::string bashCompletion(const CLI::App& root);
+
+}  // namespace lattice::app

@@ -1,0 +1,67 @@
+#include "app/output_check.hpp"
+
+#include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+#include "foundation/error.hpp"
+
+namespace lattice::app {
+
+void checkOutputPath(const std::string& path, const std::string& flag, bool force) {
+  if (path.empty() || path == "-") return;
+  const std::filesystem::path parent = std::filesystem::absolute(path).parent_path();
+  std::error_code ec;
+  if (!std::filesystem::is_directory(parent, ec))
+    throw Error(ErrorKind::Output, fmt::format("{} {}: the directory {} does not exist; create it or choose another path",
+                                               flag, path, parent.string()));
+  struct stat info {};
+  if (::stat(path.c_str(), &info) == 0) {
+    if (S_ISDIR(info.st_mode))
+      throw Error(ErrorKind::Output,
+                  fmt::format("{} {}: is a directory; give a file name, e.g. {}/out.png", flag, path, path));
+    const bool readOnly = (info.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0 || ::access(path.c_str(), W_OK) != 0;
+    if (readOnly && !force)
+      throw Error(ErrorKind::Output, fmt::format("{} {}: the file is read-only; add --force to replace it, or "
+                                                 "choose another path",
+                                                 flag, path));
+  }
+  // The outputs are written as a temporary beside the file, then renamed:
+  // the same operation, tried now.
+  std::string probe = (parent / ".lattice-write-test-XXXXXX").string();
+  std::vector<char> name(probe.begin(), probe.end());
+  name.push_back('\0');
+  const int fd = ::mkstemp(name.data());
+  if (fd < 0)
+    throw Error(ErrorKind::Output, fmt::format("{} {}: cannot write in {}: {}; choose a directory you can write to",
+                                               flag, path, parent.string(), std::strerror(errno)));
+  ::close(fd);
+  ::unlink(name.data());
+}
+
+void guardOutputs(CLI::App& root) {
+  for (CLI::App* command : root.get_subcommands([](const CLI::App*) { return true; })) {
+    guardOutputs(*command);
+    std::vector<CLI::Option*> outputs;
+    for (const char* name : {"--output", "--stream"})
+      if (CLI::Option* option = command->get_option_no_throw(name)) outputs.push_back(option);
+    if (outputs.empty()) continue;
+    CLI::Option* force = command->get_option_no_throw("--force");
+    if (force == nullptr)
+      force = command->add_flag("--force")
+                  ->description("Replace output files even if they are read-only")
+                  ->group(outputs[0]->get_group());
+    command->parse_complete_callback([outputs, force] {
+      for (const CLI::Option* option : outputs)
+        for (const std::string& path : option->results()) checkOutputPath(path, option->get_name(), force->count() > 0);
+    });
+  }
+}
+
+}  // namespace lattice::app
