@@ -16,7 +16,7 @@
 #include "app/commands.hpp"
 #include "app/help_export.hpp"
 #include "app/output_check.hpp"
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "foundation/error.hpp"
 
 int main(int argc, char** argv) {

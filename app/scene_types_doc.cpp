@@ -6,7 +6,7 @@
 #include <algorithm>
 
 #include "foundation/error.hpp"
-#include "lht/lattice_scene.hpp"
+#include "loader/lattice_scene_loader.hpp"
 
 namespace lattice::app {
 namespace {

@@ -1,5 +1,5 @@
 // docs/scene-format.md's table of object types is the loader's own (issue
-// 28): regenerated here from the node table (render/node_types.cpp and the
+// 28): regenerated here from the node table (loader/node_types.cpp and the
 // lattice module's types) and compared with the doc, so a type or key added
 // in code and not in the doc fails this test. LATTICE_REGENERATE_GOLDENS=1
 // rewrites the doc's table instead (scripts/regenerate-goldens.sh).
@@ -11,7 +11,7 @@
 #include <string>
 
 #include "app/scene_types_doc.hpp"
-#include "foundation/atomic_file.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "tests/support/golden.hpp"
 
 namespace {
