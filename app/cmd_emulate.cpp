@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/stream_points.hpp"
 #include "devices/device_table.hpp"
 #include "devices/work_budget.hpp"
 #include "io/png.hpp"
@@ -26,6 +27,7 @@ struct EmulateOptions {
   std::vector<std::string> settings;
   bool report = false;
   bool strict = false;
+  std::string at;  // --at: screens part-way (app/stream_points.hpp)
 };
 
 void runEmulate(const EmulateOptions& o) {
@@ -38,7 +40,10 @@ void runEmulate(const EmulateOptions& o) {
   std::FILE* in = o.input == "-" ? stdin : std::fopen(o.input.c_str(), "rb");
   if (!in) throw Error(ErrorKind::Input, fmt::format("{}: cannot open the stream: {}", o.input, std::strerror(errno)));
   try {
-    lattice::decodeStream(*decoder, in, o.input);
+    if (o.at.empty()) lattice::decodeStream(*decoder, in, o.input);
+    else
+      for (const std::string& path : lattice::app::decodeWithSnapshots(*decoder, in, o.input, o.at, o.output))
+        fmt::print(stderr, "lattice emulate: wrote {}\n", path);
   } catch (...) {
     if (in != stdin) std::fclose(in);
     throw;
@@ -71,6 +76,9 @@ void addEmulate(CLI::App& root) {
   cmd->add_option("--set", o->settings, "Override a profile assumption, key=value (repeatable), e.g. --set planes=4");
   cmd->add_flag("--report", o->report, "Print what was decoded: bytes, commands, unknown commands by name");
   cmd->add_flag("--strict", o->strict, "Exit 3 if the stream holds unknown or malformed commands");
+  cmd->add_option("--at", o->at,
+                  "Also write the screen part-way, at percentages of the stream or byte offsets (10%,25%,50% or "
+                  "4096,20000): OUT-at25pct.png, OUT-at4096B.png beside OUT.png");
   cmd->footer(
       "The emulator never stops on bad bytes: unknown commands and garbage are skipped (resynchronising at the\n"
       "next command) and counted. Streams over 256 MiB, or asking for more than 2^30 pixels of drawing, are\n"

@@ -13,6 +13,7 @@
 #include "app/pipeline_args.hpp"
 #include "app/render_job.hpp"
 #include "app/serial_args.hpp"
+#include "app/wire_args.hpp"
 #include "devices/apollo_sim/apollo_profile.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/arithmetics.hpp"
@@ -35,6 +36,7 @@ struct RenderFlags {
   std::string memoryBudget;  // as typed
   PipelineArgs pipeline;
   io::SerialOptions serial;
+  WireArgs wire;
 };
 
 void defineFlags(CLI::App& cmd, RenderFlags& f) {
@@ -93,6 +95,7 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
                  "entry form of lattices rasterized now, or exits 8 saying why not (docs/memory.md)");
   addPipelineOptions(&cmd, f.pipeline);
   addSerialOptions(&cmd, f.serial, /*portRequired=*/false);
+  addWireOptions(&cmd, f.wire);
 }
 
 // The parsed flags as a job; bad combinations fail here, before the scene.
@@ -114,6 +117,7 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
     job.port = f.serial;
     job.baudFromProfile = cmd.count("--baud") == 0;
   }
+  applyWireArgs(f.wire, cmd, f.serial.baud, job);
   checkRenderJob(job);
   return job;
 }

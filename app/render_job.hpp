@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "app/wire_budget.hpp"
 #include "devices/device.hpp"
 #include "io/serial_options.hpp"
 #include "lht/lattice_lookup.hpp"
@@ -49,6 +50,8 @@ struct RenderJob {
   bool histogramChosenByUser = false;          // and the histogram form (--histogram)
   quantize::PipelineOptions pipeline;
   bool quiet = false;  // no progress bars
+  double rdLambda = 0;               // rate-distortion runs (quantize/rate_distortion_runs.hpp); 0: lossless
+  std::optional<WireBudget> wire;    // choose colours, dithering and lambda to fit (app/wire_budget.hpp)
 };
 
 struct RenderResult {
@@ -60,6 +63,7 @@ struct RenderResult {
   unsigned threads = 0;
   std::optional<devices::DriverStats> stream;  // a device's stream
   std::string destination;                     // where the stream went, in words
+  std::optional<WireSearch> wire;              // what a wire budget chose (its picture left out)
 };
 
 // Refuses contradictory or missing outputs (Error(Usage)/Error(Output)):

@@ -17,6 +17,7 @@
 #include "foundation/byte_sink.hpp"
 #include "foundation/line_timing.hpp"
 #include "foundation/scanline.hpp"
+#include "quantize/rate_distortion_runs.hpp"
 
 namespace lattice::devices {
 
@@ -65,6 +66,11 @@ struct Device {
     std::function<void(int fd, double timeoutSeconds)> await;
   };
   std::optional<ReplyPacing> replies;
+
+  // Optional: what a run of one colour costs in this device's encoding, for
+  // rate-distortion runs (quantize/rate_distortion_runs.hpp); a device without
+  // one cannot take --rd-lambda or a wire budget's lambda.
+  quantize::RunCostFactory runCost;
 };
 
 }  // namespace lattice::devices

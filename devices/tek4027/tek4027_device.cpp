@@ -6,6 +6,7 @@
 #include "devices/tek4027/tek4027_driver.hpp"
 #include "devices/tek4027/tek4027_encoder.hpp"
 #include "devices/tek4027/tek4027_pacing.hpp"
+#include "devices/tek4027/tek4027_run_cost.hpp"
 
 namespace lattice::tek4027 {
 namespace {
@@ -59,6 +60,7 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   d.emulatorMemory = 3 * pixels(profile.width, profile.height);  // the screen, and its RGB copy for the PNG
   d.line = profile.line;
   d.profileText = describe(profile);
+  d.runCost = [](const IndexedImage& picture) { return tek4027RunCost(picture); };
   // `lattice send --device tek4027` waits where the stream asks (the same
   // requests the driver waits on over a live line).
   d.replies = devices::Device::ReplyPacing{

@@ -4,6 +4,7 @@
 
 #include "devices/tek4125/tek4125_decoder.hpp"
 #include "devices/tek4125/tek4125_driver.hpp"
+#include "devices/tek4125/tek4125_run_cost.hpp"
 #include "devices/tek4125/tek4125_writer.hpp"
 
 namespace lattice::tek4125 {
@@ -52,6 +53,7 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   d.emulatorMemory = 3 * static_cast<std::uint64_t>(profile.width) * static_cast<std::uint64_t>(profile.height);
   d.line = profile.line();
   d.profileText = describe(profile);
+  d.runCost = [profile](const IndexedImage& picture) { return tek4125RunCost(profile, picture); };
   return d;
 }
 
