@@ -13,6 +13,7 @@
 
 #include "app/commands.hpp"
 #include "app/stream_check.hpp"
+#include "app/stream_points.hpp"
 #include "devices/device_table.hpp"
 #include "devices/work_budget.hpp"
 #include "io/png.hpp"
@@ -28,6 +29,7 @@ struct EmulateOptions {
   bool report = false;
   bool strict = false;
   bool raw = false;
+  std::string at;  // --at: screens part-way (app/stream_points.hpp)
 };
 
 void runEmulate(const EmulateOptions& o) {
@@ -42,7 +44,10 @@ void runEmulate(const EmulateOptions& o) {
   std::FILE* in = o.input == "-" ? stdin : std::fopen(o.input.c_str(), "rb");
   if (!in) throw Error(ErrorKind::Input, fmt::format("{}: cannot open the stream: {}", o.input, std::strerror(errno)));
   try {
-    lattice::decodeStream(*decoder, in, o.input);
+    if (o.at.empty()) lattice::decodeStream(*decoder, in, o.input);
+    else
+      for (const std::string& path : lattice::app::decodeWithSnapshots(*decoder, in, o.input, o.at, o.output))
+        fmt::print(stderr, "lattice emulate: wrote {}\n", path);
   } catch (...) {
     if (in != stdin) std::fclose(in);
     throw;
@@ -78,6 +83,9 @@ void addEmulate(CLI::App& root) {
   cmd->add_flag("--raw", o->raw,
                 "Decode the bytes even if they do not look like the device's stream (without it, a PNG, a scene, "
                 "an empty file or another device's stream is refused with exit 3)");
+  cmd->add_option("--at", o->at,
+                  "Also write the screen part-way, at percentages of the stream or byte offsets (10%,25%,50% or "
+                  "4096,20000): OUT-at25pct.png, OUT-at4096B.png beside OUT.png");
   cmd->footer(
       "The stream is checked first: a file that does not look like the device's stream (a PNG, a scene, an\n"
       "empty file, another device's stream) is refused with exit 3 saying what it is; --raw decodes it anyway.\n"

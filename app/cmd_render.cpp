@@ -16,6 +16,7 @@
 #include "app/pipeline_args.hpp"
 #include "app/render_job.hpp"
 #include "app/serial_args.hpp"
+#include "app/wire_args.hpp"
 #include "devices/apollo_sim/apollo_profile.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/arithmetics.hpp"
@@ -41,6 +42,7 @@ struct RenderFlags {
   std::string memoryBudget;  // as typed
   PipelineArgs pipeline;
   io::SerialOptions serial;
+  WireArgs wire;
 };
 
 constexpr const char* kOutputGroup = "Output";
@@ -138,6 +140,7 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
       ->group("Memory");
   addPipelineOptions(&cmd, f.pipeline, "Quantizer (devices)");
   addSerialOptions(&cmd, f.serial, /*portRequired=*/false, profileBaudText());
+  addWireOptions(&cmd, f.wire);
 }
 
 // The parsed flags as a job; bad combinations fail here, before the scene.
@@ -184,6 +187,7 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
     job.port = f.serial;
     job.baudFromProfile = cmd.count("--baud") == 0;
   }
+  applyWireArgs(f.wire, cmd, f.serial.baud, job);
   checkRenderJob(job);
   return job;
 }

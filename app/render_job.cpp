@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <utility>
 
@@ -22,6 +23,7 @@
 #include "io/tee_sink.hpp"
 #include "loader/lattice_scene_loader.hpp"
 #include "lht/leaf/lookup_stats.hpp"
+#include "quantize/rate_distortion_runs.hpp"
 #include "render/renderer.hpp"
 
 namespace lattice::app {
@@ -97,9 +99,8 @@ std::unique_ptr<ByteSink> openTransport(const RenderJob& job, const devices::Dev
 
 // Renders into the device's driver row by row; the bytes go to the transport
 // and, when a picture is asked for, through the emulator on their way.
-template <typename T>
-devices::DriverStats renderToDevice(Renderer<T>& renderer, const RenderJob& job, const devices::Device& device,
-                                    const quantize::PipelineOptions& pipeline, std::string& where) {
+devices::DriverStats renderToDevice(const std::function<void(IndexedSink&)>& source, const RenderJob& job,
+                                    const devices::Device& device, std::string& where) {
   int replyFd = -1;
   std::unique_ptr<ByteSink> transport = openTransport(job, device, where, replyFd);
   std::unique_ptr<StreamDecoder> emulator;
@@ -109,7 +110,16 @@ devices::DriverStats renderToDevice(Renderer<T>& renderer, const RenderJob& job,
   });
   auto driver = device.makeDriver(tee);
   if (replyFd >= 0) driver->answerOn(replyFd, job.port->stallTimeoutSeconds);
-  quantize::runPipeline(renderer, driver->sink(), pipeline);
+  if (job.rdLambda > 0 && !device.runCost)
+    throw Error(ErrorKind::Usage, fmt::format("--rd-lambda: {} has no run costs; rate-distortion runs apply to "
+                                              "devices that send runs (tek4125, tek4027)",
+                                              device.name));
+  if (job.rdLambda > 0 && !job.wire) {
+    quantize::RateDistortionSink runs(driver->sink(), device.runCost, job.rdLambda);
+    source(runs);
+  } else {
+    source(driver->sink());
+  }
   tee.close();  // renames the stream file into place, or drains the serial line
   const devices::DriverStats stats = driver->stats();
   raise(job.events, StreamSent{device.name, device.title,
@@ -124,6 +134,22 @@ devices::DriverStats renderToDevice(Renderer<T>& renderer, const RenderJob& job,
                               report.unknownCommands, report.malformed, report.summary()));
   }
   return stats;
+}
+
+// The truecolour picture once, then the search of app/wire_budget.hpp.
+template <typename T>
+WireSearch renderWithinWireBudget(Renderer<T>& renderer, const RenderJob& job, const devices::Device& device,
+                                  const quantize::PipelineOptions& pipeline) {
+  RgbImage truecolour;
+  {
+    Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
+    progress.setEnabled(progress.enabled() && !job.quiet);
+    truecolour = renderImage(renderer, &progress);
+    progress.finish();
+  }
+  WireSearch search = searchWireBudget(truecolour, device, *job.wire, pipeline.quantize, !job.quiet);
+  fmt::print(stderr, "lattice render: wire budget: {}\n", describeWireChoice(search));
+  return search;
 }
 
 // Takes the loaded scene: its node tree is released once the renderer holds
@@ -159,9 +185,16 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job) {
   }
 
   RenderResult result;
-  if (device)
-    result.stream = renderToDevice(renderer, job, *device, pipeline, result.destination);
-  else
+  if (device && job.wire) {
+    WireSearch search = renderWithinWireBudget(renderer, job, *device, pipeline);
+    result.stream = renderToDevice([&](IndexedSink& s) { sendPicture(search.picture, s); }, job, *device,
+                                   result.destination);
+    search.picture = {};
+    result.wire = std::move(search);
+  } else if (device) {
+    result.stream = renderToDevice([&](IndexedSink& s) { quantize::runPipeline(renderer, s, pipeline); }, job,
+                                   *device, result.destination);
+  } else
     result.traceSeconds = renderTruecolour(renderer, job);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.width = renderer.width();
@@ -169,6 +202,12 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job) {
   result.rays = renderer.raysTraced();
   result.threads = renderer.threads();
   if (budget) checkPeakAgainst(budget->budget, job.events);
+  if (result.wire && !result.wire->choice.fits)
+    throw Error(ErrorKind::Budget,
+                fmt::format("no setting fits {} bytes: the smallest stream is {} bytes ({:.1f} s at {} baud), written; "
+                            "allow more time, or add --wire-shrink to send a smaller picture",
+                            result.wire->limit, result.wire->choice.bytes, result.wire->choice.seconds,
+                            result.wire->baud));
   return result;
 }
 
@@ -177,6 +216,9 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job) {
 void checkRenderJob(const RenderJob& job) {
   if (!isArithmeticName(job.arithmetic)) throwUnknownArithmetic(job.arithmetic);
   if (job.device.empty()) {
+    if (job.wire || job.rdLambda > 0)
+      throw Error(ErrorKind::Usage, "--wire-seconds, --wire-bytes and --rd-lambda shape a device's stream; choose one "
+                                    "with --device");
     if (job.picture.empty()) throw Error(ErrorKind::Usage, "a truecolour render writes a PNG: give -o OUT.png");
     if (!job.stream.empty() || job.port)
       throw Error(ErrorKind::Usage,
@@ -186,6 +228,8 @@ void checkRenderJob(const RenderJob& job) {
       throw Error(ErrorKind::Usage, "--set overrides a device profile; use it with --device");
   } else {
     devices::deviceEntry(job.device);  // an unknown name fails now
+    if (job.wire && !job.wire->bytes && !job.wire->seconds)
+      throw Error(ErrorKind::Usage, "a wire budget needs --wire-seconds S or --wire-bytes N");
     if (job.picture.empty() && job.stream.empty() && !job.port)
       throw Error(ErrorKind::Usage,
                   fmt::format("--device {} needs somewhere to send the stream: --stream FILE, --stream -, --port "

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "app/render_events.hpp"
+#include "app/wire_budget.hpp"
 #include "devices/device.hpp"
 #include "io/serial_options.hpp"
 #include "lht/leaf/lookup_mode.hpp"
@@ -51,6 +52,8 @@ struct RenderJob {
   quantize::PipelineOptions pipeline;
   bool quiet = false;  // no progress bars
   RenderEvents events;  // told what happened along the way (app/render_events.hpp); empty: nobody
+  double rdLambda = 0;               // rate-distortion runs (quantize/rate_distortion_runs.hpp); 0: lossless
+  std::optional<WireBudget> wire;    // choose colours, dithering and lambda to fit (app/wire_budget.hpp)
 };
 
 struct RenderResult {
@@ -62,6 +65,7 @@ struct RenderResult {
   unsigned threads = 0;
   std::optional<devices::DriverStats> stream;  // a device's stream
   std::string destination;                     // where the stream went, in words
+  std::optional<WireSearch> wire;              // what a wire budget chose (its picture left out)
 };
 
 // Refuses contradictory or missing outputs (Error(Usage)/Error(Output)):

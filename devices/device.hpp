@@ -17,6 +17,7 @@
 #include "foundation/byte_sink.hpp"
 #include "foundation/line_timing.hpp"
 #include "foundation/scanline.hpp"
+#include "quantize/rate_distortion_runs.hpp"
 
 namespace lattice::devices {
 
@@ -74,6 +75,10 @@ struct Device {
   // PGPLOT's), so it judges the shape of the bytes, not our driver's habits.
   // A device without one accepts any stream.
   std::function<bool(std::span<const std::uint8_t> head)> recognise;
+  // Optional: what a run of one colour costs in this device's encoding, for
+  // rate-distortion runs (quantize/rate_distortion_runs.hpp); a device without
+  // one cannot take --rd-lambda or a wire budget's lambda.
+  quantize::RunCostFactory runCost;
 };
 
 // How much of a stream Device::recognise is shown.

@@ -7,6 +7,7 @@
 #include "devices/tek4027/tek4027_driver.hpp"
 #include "devices/tek4027/tek4027_encoder.hpp"
 #include "devices/tek4027/tek4027_pacing.hpp"
+#include "devices/tek4027/tek4027_run_cost.hpp"
 
 namespace lattice::tek4027 {
 namespace {
@@ -73,6 +74,7 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
     }
     return command;
   };
+  d.runCost = [](const IndexedImage& picture) { return tek4027RunCost(picture); };
   // `lattice send --device tek4027` waits where the stream asks (the same
   // requests the driver waits on over a live line).
   d.replies = devices::Device::ReplyPacing{

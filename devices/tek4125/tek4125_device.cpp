@@ -5,6 +5,7 @@
 #include "devices/stream_shape.hpp"
 #include "devices/tek4125/tek4125_decoder.hpp"
 #include "devices/tek4125/tek4125_driver.hpp"
+#include "devices/tek4125/tek4125_run_cost.hpp"
 #include "devices/tek4125/tek4125_writer.hpp"
 
 namespace lattice::tek4125 {
@@ -65,6 +66,7 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
     }
     return false;
   };
+  d.runCost = [profile](const IndexedImage& picture) { return tek4125RunCost(profile, picture); };
   return d;
 }
 

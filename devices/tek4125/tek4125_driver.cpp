@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "devices/tek4125/tek4125_progressive.hpp"
 #include "devices/tek4125/tek4125_rows.hpp"
 #include "devices/tek4125/tek4125_writer.hpp"
 #include "foundation/error.hpp"
@@ -159,16 +160,19 @@ void Tek4125Driver::encode(const Tek4125DriverOptions& options, ByteSink& sink, 
   }
 
   Tek4125RowPlanner planner(out, layout, options);
-  std::vector<int> row(static_cast<std::size_t>(width));
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x)
-      row[static_cast<std::size_t>(x)] = pixels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                                                 static_cast<std::size_t>(x)] +
-                                         reserved;
-    planner.row(y, row);
+  if (!profile_.progressive) {
+    std::vector<int> row(static_cast<std::size_t>(width));
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x)
+        row[static_cast<std::size_t>(x)] = pixels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                                                   static_cast<std::size_t>(x)] +
+                                           reserved;
+      planner.row(y, row);
+    }
   }
   planner.finish();
-  const Tek4125RowStats& r = planner.stats();
+  const Tek4125RowStats r =
+      profile_.progressive ? drawProgressive(out, layout, options, pixels_, frame_.palette, reserved) : planner.stats();
   stats.rasterWrites = r.rasterWrites;
   stats.runLengthWrites = r.runLengthWrites;
   stats.rectangleFills += r.rectangleFills;

@@ -11,7 +11,7 @@ namespace {
 
 constexpr const char* kKeys =
     "profile, width, height, planes, palette-bits, reserved, baud, data-bits, parity, stop-bits, xon-xoff, "
-    "power-up-map, strategy, rr-origin, rh-origin, surface-planes";
+    "power-up-map, strategy, rr-origin, rh-origin, surface-planes, progressive";
 
 void requireRange(const char* key, int value, int lo, int hi) {
   if (value < lo || value > hi)
@@ -67,6 +67,7 @@ void applyOverride(Tek4125Profile& profile, std::string_view keyValue) {
   else if (key == "data-bits") p.dataBits = parseIntSetting(kContext, kv);
   else if (key == "stop-bits") p.stopBits = parseIntSetting(kContext, kv);
   else if (key == "xon-xoff") p.xonXoff = parseSwitchSetting(kContext, kv);
+  else if (key == "progressive") p.progressive = parseSwitchSetting(kContext, kv);
   else if (key == "parity") {
     if (kv.value == "none") p.parity = false;
     else if (kv.value == "even" || kv.value == "odd") p.parity = true;  // only its bit time matters here
@@ -86,10 +87,11 @@ std::string describe(const Tek4125Profile& p) {
   return fmt::format(
       "profile={}\nwidth={}\nheight={}\nplanes={}\npalette-bits={}\nreserved={}\nbaud={}\ndata-bits={}\n"
       "parity={}\nstop-bits={}\nxon-xoff={}\npower-up-map={}\nstrategy={}\nrr-origin={}\nrh-origin={}\n"
-      "surface-planes={}\n",
+      "surface-planes={}\nprogressive={}\n",
       p.forms, p.width, p.height, p.planes, p.paletteBits, p.reserved, p.baud, p.dataBits, p.parity ? "even" : "none",
       p.stopBits, p.xonXoff ? "on" : "off", p.powerUpMap == Tek4125PowerUpMap::Pgplot ? "pgplot" : "ral-cgm",
-      p.strategy, p.rrFromViewport ? "viewport" : "screen", p.rhFromScreen ? "screen" : "viewport", p.surfacePlanes);
+      p.strategy, p.rrFromViewport ? "viewport" : "screen", p.rhFromScreen ? "screen" : "viewport", p.surfacePlanes,
+      p.progressive ? "on" : "off");
 }
 
 }  // namespace lattice::tek4125

@@ -31,6 +31,7 @@ struct Tek4125Profile {
   bool xonXoff = true;       // DC1/DC3 flagging, the usual setting at these rates
   std::string forms = "strict";  // the form set the driver may use (tek4125_forms.hpp)
   std::string strategy = "shortest";  // how the driver chooses among those forms (tek4125_strategy.hpp)
+  bool progressive = false;  // progressive=on: coarse covers first, rows interlaced (tek4125_progressive.hpp)
   // Readings no source settles, as the emulator applies them (the driver
   // ignores these). A strict stream must draw the same under every one.
   Tek4125PowerUpMap powerUpMap = Tek4125PowerUpMap::Pgplot;
@@ -51,7 +52,7 @@ struct Tek4125Profile {
 // planes, palette-bits, reserved, baud, data-bits, parity (none|even|odd),
 // stop-bits, xon-xoff (on|off), power-up-map (pgplot|ral-cgm), strategy
 // (shortest|plain|skip|rectangles|spans|runs), rr-origin (screen|viewport),
-// rh-origin (viewport|screen), surface-planes (0..planes)).
+// rh-origin (viewport|screen), surface-planes (0..planes), progressive (on|off)).
 // Unknown keys and bad values throw lattice::Error(Usage) listing the keys.
 void applyOverride(Tek4125Profile& profile, std::string_view keyValue);
 void applyOverrides(Tek4125Profile& profile, const std::vector<std::string>& keyValues);

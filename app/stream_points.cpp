@@ -1,0 +1,78 @@
+#include "app/stream_points.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+
+#include "devices/work_budget.hpp"
+#include "foundation/error.hpp"
+#include "io/png.hpp"
+
+namespace lattice::app {
+
+std::vector<StreamPoint> parseStreamPoints(const std::string& text, std::uint64_t total) {
+  std::vector<StreamPoint> points;
+  std::size_t from = 0;
+  while (from <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', from), text.size());
+    const std::string item = text.substr(from, comma - from);
+    const bool percent = !item.empty() && item.back() == '%';
+    const std::string number = percent ? item.substr(0, item.size() - 1) : item;
+    double value = -1;
+    const auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
+    if (number.empty() || ec != std::errc() || end != number.data() + number.size() || value < 0 ||
+        (percent && value > 100) || (!percent && value != std::floor(value)))
+      throw Error(ErrorKind::Usage, fmt::format("--at {}: \"{}\" is neither a percentage of the stream (0%..100%) "
+                                                "nor a whole byte offset; e.g. --at 10%,25%,50% or --at 4096,20000",
+                                                text, item));
+    if (percent)
+      points.push_back({static_cast<std::uint64_t>(std::llround(value / 100.0 * double(total))),
+                        fmt::format("{:g}pct", value)});
+    else
+      points.push_back({std::min(total, static_cast<std::uint64_t>(value)), fmt::format("{:.0f}B", value)});
+    from = comma + 1;
+  }
+  std::stable_sort(points.begin(), points.end(),
+                   [](const StreamPoint& a, const StreamPoint& b) { return a.offset < b.offset; });
+  return points;
+}
+
+std::string pointPngPath(const std::string& output, const std::string& tag) {
+  const std::filesystem::path path(output);
+  std::filesystem::path named = path;
+  named.replace_filename(path.stem().string() + "-at" + tag + (path.has_extension() ? path.extension().string() : ".png"));
+  return named.string();
+}
+
+std::vector<std::string> decodeWithSnapshots(StreamDecoder& decoder, std::FILE* in, const std::string& name,
+                                             const std::string& points, const std::string& output) {
+  std::vector<std::uint8_t> stream;
+  std::vector<std::uint8_t> buffer(1 << 16);
+  while (true) {
+    const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), in);
+    stream.insert(stream.end(), buffer.begin(), buffer.begin() + static_cast<long>(n));
+    if (stream.size() > kMaxStreamBytes)
+      throw Error(ErrorKind::Input, fmt::format("{}: the stream is longer than the emulator's limit of {} bytes "
+                                                "(kMaxStreamBytes, docs/limits.md)",
+                                                name, kMaxStreamBytes));
+    if (n < buffer.size()) break;
+  }
+  if (std::ferror(in) != 0) throw Error(ErrorKind::Input, fmt::format("{}: read error", name));
+  std::vector<std::string> written;
+  std::uint64_t fed = 0;
+  for (const StreamPoint& p : parseStreamPoints(points, stream.size())) {
+    decoder.feed(std::span<const std::uint8_t>(stream).subspan(fed, p.offset - fed));
+    fed = p.offset;
+    written.push_back(pointPngPath(output, p.tag));
+    io::writePng(written.back(), decoder.image());
+  }
+  decoder.feed(std::span<const std::uint8_t>(stream).subspan(fed));
+  decoder.finish();
+  checkPixelWork(decoder.report(), name);
+  return written;
+}
+
+}  // namespace lattice::app

@@ -1,0 +1,42 @@
+#include "app/wire_args.hpp"
+
+#include "foundation/resident_memory.hpp"
+#include "foundation/error.hpp"
+
+namespace lattice::app {
+
+void addWireOptions(CLI::App* cmd, WireArgs& args) {
+  const char* group = "Wire budget";
+  cmd->add_option("--rd-lambda", args.lambda,
+                  "Devices: rate-distortion runs, squared 8-bit RGB error a byte is worth (0: lossless, the "
+                  "stream as always; 1000s give fewer, longer runs; docs/wire.md)")
+      ->check(CLI::Range(0.0, 1e12))
+      ->group(group);
+  cmd->add_option("--wire-seconds", args.seconds,
+                  "Devices: send the most accurate picture whose stream takes at most S seconds at --baud (default: "
+                  "the profile's); searches palette size, dithering and --rd-lambda with the real encoder; exits 8 "
+                  "with the smallest stream if nothing fits")
+      ->check(CLI::Range(0.001, 1e9))
+      ->group(group);
+  cmd->add_option("--wire-bytes", args.bytes, "Devices: as --wire-seconds, a budget of N bytes (57600, 56K)")
+      ->group(group);
+  cmd->add_flag("--wire-shrink", args.shrink,
+                "With a wire budget: when nothing fits, send a smaller picture (each side x0.8 until it fits)")
+      ->group(group);
+}
+
+void applyWireArgs(const WireArgs& args, const CLI::App& cmd, int baud, RenderJob& job) {
+  job.rdLambda = args.lambda;
+  const bool seconds = cmd.count("--wire-seconds") > 0, bytes = cmd.count("--wire-bytes") > 0;
+  if (args.shrink && !seconds && !bytes)
+    throw Error(ErrorKind::Usage, "--wire-shrink applies to a wire budget: add --wire-seconds S or --wire-bytes N");
+  if (!seconds && !bytes) return;
+  WireBudget budget;
+  if (seconds) budget.seconds = args.seconds;
+  if (bytes) budget.bytes = parseByteCount(args.bytes, "--wire-bytes");
+  if (cmd.count("--baud") > 0) budget.baud = baud;
+  budget.shrink = args.shrink;
+  job.wire = budget;
+}
+
+}  // namespace lattice::app

@@ -1,0 +1,26 @@
+#pragma once
+// The flags of `lattice render` that shape a device's stream for the wire:
+// --rd-lambda (rate-distortion runs), --wire-seconds / --wire-bytes (a
+// budget the search of app/wire_budget.hpp fits) and --wire-shrink. The
+// budget's baud is --baud when given (the serial flags' own), else the
+// device profile's.
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+#include "app/render_job.hpp"
+
+namespace lattice::app {
+
+struct WireArgs {
+  double lambda = 0;
+  double seconds = 0;
+  std::string bytes;  // as typed: 57600, 56K
+  bool shrink = false;
+};
+
+void addWireOptions(CLI::App* cmd, WireArgs& args);
+// Fills job.rdLambda and job.wire; `baud` is the serial flags' --baud.
+void applyWireArgs(const WireArgs& args, const CLI::App& cmd, int baud, RenderJob& job);
+
+}  // namespace lattice::app

@@ -1,0 +1,16 @@
+#pragma once
+// What a run of one colour costs in a 4125 stream, for rate-distortion runs
+// (quantize/rate_distortion_runs.hpp). Method: the row planner's own
+// estimates (tek4125_rows.cpp): a run of the picture's most frequent colour
+// is skipped (free); any other is the cheaper of its RL run codes (split at
+// the form set's longest code, plus the repeated `ESC RL count` of a capped
+// RL) and, where the form set allows RP at this depth, its raster bits.
+// Span headers and rectangles are left out: they are shared by many runs.
+#include "devices/tek4125/tek4125_profile.hpp"
+#include "quantize/rate_distortion_runs.hpp"
+
+namespace lattice::tek4125 {
+
+quantize::RunCost tek4125RunCost(const Tek4125Profile& profile, const IndexedImage& picture);
+
+}  // namespace lattice::tek4125

@@ -1,0 +1,129 @@
+// The wire budget (app/wire_budget.hpp), `lattice render --wire-bytes`,
+// and the points of `lattice emulate --at` (app/stream_points.hpp).
+#include <catch2/catch.hpp>
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "app/stream_points.hpp"
+#include "app/wire_budget.hpp"
+#include "devices/device_table.hpp"
+#include "foundation/byte_sink.hpp"
+#include "foundation/error.hpp"
+#include "io/png.hpp"
+#include "tests/support/example_scene.hpp"
+#include "tests/support/run_lattice.hpp"
+#include "tests/support/temp_dir.hpp"
+
+using namespace lattice;
+
+namespace {
+
+RgbImage truecolour(const char* scene, int width, int height) {
+  Renderer<double> renderer = testing::makeTestRenderer(testing::loadExampleScene(scene), width, height);
+  return renderImage(renderer);
+}
+
+std::uint64_t encodedBytes(const devices::Device& device, const IndexedImage& picture) {
+  CountingSink counter;
+  auto driver = device.makeDriver(counter);
+  app::sendPicture(picture, driver->sink());
+  return counter.bytesWritten();
+}
+
+}  // namespace
+
+TEST_CASE("wire budget: the chosen picture's real stream fits, and a looser budget is no less accurate") {
+  const RgbImage reference = truecolour("torus-floor.toml", 96, 72);
+  for (const char* device : {"tek4125", "tek4027"}) {
+    INFO(device);
+    const devices::Device d = devices::makeDevice(device, {});
+    double lastPsnr = 0;
+    std::uint64_t lastBytes = 0;
+    for (std::uint64_t limit : {std::uint64_t(2500), std::uint64_t(5000), std::uint64_t(20000)}) {
+      app::WireBudget budget;
+      budget.bytes = limit;
+      const app::WireSearch s = app::searchWireBudget(reference, d, budget, {}, false);
+      INFO(limit << " bytes: " << app::describeWireChoice(s));
+      if (!s.choice.fits) {
+        CHECK(lastBytes == 0);  // only the tightest may fail, and then no looser one has come yet
+        continue;
+      }
+      CHECK(s.choice.bytes <= limit);
+      CHECK(encodedBytes(d, s.picture) == s.choice.bytes);  // the figure is the real encoder's
+      CHECK(s.choice.psnr >= lastPsnr);
+      CHECK(s.choice.ssim > 0.0);
+      CHECK(std::abs(s.choice.seconds - double(s.choice.bytes) * 10.0 / s.baud) < 1e-9);
+      lastPsnr = s.choice.psnr;
+      lastBytes = s.choice.bytes;
+    }
+    CHECK(lastBytes > 0);
+  }
+}
+
+TEST_CASE("wire budget: nothing fits, the smallest stream is reported; --wire-shrink makes it fit") {
+  const RgbImage reference = truecolour("sphere-hole.toml", 64, 64);
+  const devices::Device d = devices::makeDevice("tek4125", {});
+  app::WireBudget budget;
+  budget.seconds = 0.05;  // 192 bytes at 38400 baud
+  const app::WireSearch none = app::searchWireBudget(reference, d, budget, {}, false);
+  CHECK_FALSE(none.choice.fits);
+  CHECK(none.limit == 192);
+  CHECK(none.choice.bytes > 192);
+  CHECK(encodedBytes(d, none.picture) == none.choice.bytes);
+  budget.seconds = 0.2;  // 768 bytes
+  budget.shrink = true;
+  const app::WireSearch shrunk = app::searchWireBudget(reference, d, budget, {}, false);
+  INFO(app::describeWireChoice(shrunk));
+  CHECK(shrunk.choice.fits);
+  CHECK(shrunk.choice.width < 64);
+  CHECK(shrunk.picture.width == shrunk.choice.width);
+  CHECK(shrunk.choice.bytes <= 768);
+}
+
+TEST_CASE("emulate --at: percentages and byte offsets, in stream order, bad items refused") {
+  const auto points = app::parseStreamPoints("50%,100,10%", 1000);
+  REQUIRE(points.size() == 3);
+  CHECK(points[0].offset == 100);
+  CHECK(points[1].offset == 100);
+  CHECK(points[2].offset == 500);
+  CHECK(points[2].tag == "50pct");
+  CHECK(app::parseStreamPoints("5000", 1000)[0].offset == 1000);  // past the end: the whole stream
+  for (const char* bad : {"", "x", "110%", "-5", "1.5", "10%,,20%"})
+    CHECK_THROWS_AS(app::parseStreamPoints(bad, 1000), Error);
+  CHECK(app::pointPngPath("dir/screen.png", "25pct") == "dir/screen-at25pct.png");
+}
+
+TEST_CASE("lattice render --wire-bytes and lattice emulate --at, end to end") {
+  testing::TempDir dir("wire");
+  const std::string scene = testing::sourcePath("scenes/sphere-hole.toml").string();
+  const auto stream = dir.path() / "s.tek", picture = dir.path() / "s.png";
+  const testing::CommandRun fit = testing::runLattice(
+      fmt::format("render {} --device tek4125 --width 64 --height 64 --wire-bytes 4000 --quiet --stream {} -o {}",
+                  scene, stream.string(), picture.string()));
+  INFO(fit.stderrText);
+  CHECK(fit.exitCode == 0);
+  CHECK(std::filesystem::file_size(stream) <= 4000);
+  CHECK(fit.stderrText.find("wire budget:") != std::string::npos);
+
+  const testing::CommandRun tight = testing::runLattice(
+      fmt::format("render {} --device tek4125 --width 64 --height 64 --wire-bytes 100 --quiet --stream {}", scene,
+                  stream.string()));
+  INFO(tight.stderrText);
+  CHECK(tight.exitCode == 8);
+  CHECK(tight.stderrText.find("no setting fits 100 bytes") != std::string::npos);
+  CHECK(std::filesystem::file_size(stream) > 100);  // the smallest stream, written
+
+  const auto screen = dir.path() / "e.png";
+  const testing::CommandRun at = testing::runLattice(fmt::format(
+      "emulate --device tek4125 {} -o {} --at 25%,50%,0", stream.string(), screen.string()));
+  INFO(at.stderrText);
+  CHECK(at.exitCode == 0);
+  for (const char* tag : {"25pct", "50pct", "0B"})
+    CHECK(std::filesystem::exists(dir.path() / fmt::format("e-at{}.png", tag)));
+  // At byte 0 nothing is drawn yet; the whole stream's screen is e.png.
+  const RgbImage empty = io::readPng(dir.path() / "e-at0B.png");
+  const RgbImage whole = io::readPng(screen);
+  CHECK(empty.rgb != whole.rgb);
+}
