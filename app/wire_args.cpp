@@ -1,6 +1,6 @@
 #include "app/wire_args.hpp"
 
-#include "foundation/resident_memory.hpp"
+#include "foundation/system/resident_memory.hpp"
 #include "foundation/error.hpp"
 
 namespace lattice::app {

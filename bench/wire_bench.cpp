@@ -29,7 +29,7 @@
 #include "foundation/rgb_image_source.hpp"
 #include "io/image_metrics.hpp"
 #include "io/ssim.hpp"
-#include "lht/lattice_scene.hpp"
+#include "loader/lattice_scene_loader.hpp"
 #include "quantize/rate_distortion_runs.hpp"
 #include "quantize/run_pipeline.hpp"
 #include "render/renderer.hpp"
