@@ -9,7 +9,13 @@
 # make); -ffunction-sections/-fdata-sections with --gc-sections keep only
 # what the image reaches (the core's file and thread code never links).
 set(CMAKE_SYSTEM_NAME Generic)
-set(CMAKE_SYSTEM_PROCESSOR cortex-m3)
+# LATTICE_FIRMWARE_CPU: the board's core (firmware/boards.tsv; an M4 runs
+# M3 code too, and its own build may use UMAAL and the DSP instructions).
+if(NOT LATTICE_FIRMWARE_CPU)
+  set(LATTICE_FIRMWARE_CPU cortex-m3)
+endif()
+list(APPEND CMAKE_TRY_COMPILE_PLATFORM_VARIABLES LATTICE_FIRMWARE_CPU)
+set(CMAKE_SYSTEM_PROCESSOR ${LATTICE_FIRMWARE_CPU})
 set(CMAKE_C_COMPILER arm-none-eabi-gcc)
 set(CMAKE_CXX_COMPILER arm-none-eabi-g++)
 set(CMAKE_ASM_COMPILER arm-none-eabi-gcc)
@@ -18,7 +24,7 @@ set(CMAKE_SIZE arm-none-eabi-size CACHE FILEPATH "size")
 # A bare-metal compiler cannot link a test program without a linker script.
 set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
 
-set(LATTICE_CPU_FLAGS "-mcpu=cortex-m3 -mthumb -mfloat-abi=soft")
+set(LATTICE_CPU_FLAGS "-mcpu=${LATTICE_FIRMWARE_CPU} -mthumb -mfloat-abi=soft")
 set(CMAKE_C_FLAGS_INIT "${LATTICE_CPU_FLAGS} -ffunction-sections -fdata-sections")
 set(CMAKE_CXX_FLAGS_INIT "${LATTICE_CPU_FLAGS} -ffunction-sections -fdata-sections")
 # Full newlib, not nano.specs: Debian's libstdc++_nano is built without

@@ -42,20 +42,20 @@ int run() {
   uart.close();
   const std::uint64_t ticks = clockTicks();
   const MemoryMarks m = memoryMarks();
-  hostReport(fmt::format("firmware: {} {}x{} fixed-point, {} stream bytes on UART0, {} colours of {} distinct, "
+  hostReport(fmt::format("firmware: {} {}x{} fixed-point on {}, {} stream bytes on its UART, {} colours of {} distinct, "
                          "{} rays\n",
-                         baked.name, baked.width, baked.height, uart.bytesWritten(), report.paletteSize,
+                         baked.name, baked.width, baked.height, LATTICE_BOARD_NAME, uart.bytesWritten(), report.paletteSize,
                          report.distinctColors, renderer.raysTraced()));
-  hostReport(fmt::format("firmware: RAM peak {} B of 262144 (data {} + bss {} + heap {} of {} + stack {} of {})\n",
-                         m.total(), m.data, m.bss, m.heapPeak, m.heapLimit, m.stackPeak, m.stackSize));
+  hostReport(fmt::format("firmware: RAM peak {} B of {} (data {} + bss {} + heap {} of {} + stack {} of {})\n",
+                         m.total(), LATTICE_BOARD_BUDGET, m.data, m.bss, m.heapPeak, m.heapLimit, m.stackPeak, m.stackSize));
   if (m.stackPeak >= m.stackSize) {
     // The painted stack is used up to its limit: it may have run into the heap.
     hostReport(fmt::format("firmware: the stack reached its limit ({} B): it may have overflowed\n", m.stackSize));
     return static_cast<int>(ErrorKind::Internal);
   }
   // Under `qemu -icount shift=0` this is the instruction count (firmware/virtual_clock.hpp).
-  hostReport(fmt::format("firmware: virtual time {} ns ({} SysTick ticks of {} ns)\n", ticks * kTickNanoseconds,
-                         ticks, kTickNanoseconds));
+  hostReport(fmt::format("firmware: virtual time {} ns ({} SysTick ticks at {} Hz)\n", tickNanoseconds(ticks),
+                         ticks, kClockHz));
   return 0;
 }
 

@@ -33,4 +33,10 @@ void UartSink::write(std::span<const std::uint8_t> bytes) {
   written_ += bytes.size();
 }
 
+// The CMSDK UART has no "transmission complete" flag: TX not full is the end.
+void UartSink::close() {
+  while (uart().state & kTxFull) {
+  }
+}
+
 }  // namespace lattice::firmware

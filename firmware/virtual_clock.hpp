@@ -6,13 +6,17 @@
 // is virtual: with `-icount shift=0` each guest instruction advances it by
 // exactly 1 ns (QEMU's -icount documentation), so ticks times the tick's
 // length in ns is the number of instructions executed - the count
-// bench/firmware.sh reports. QEMU's mps2-an385 clocks the CPU at 25 MHz
-// (hw/arm/mps2.c, SYSCLK_FRQ), 40 ns a tick.
+// bench/firmware.sh reports. The processor clock is the board's
+// (firmware/boards.tsv, LATTICE_BOARD_HZ): QEMU's mps2-an385 runs at 25 MHz
+// (hw/arm/mps2.c, SYSCLK_FRQ; 40 ns a tick), its netduinoplus2 at 168 MHz
+// (hw/arm/netduinoplus2.c; 5.95 ns a tick, so the count is good to 6).
 #include <cstdint>
 
 namespace lattice::firmware {
 
-inline constexpr std::uint64_t kTickNanoseconds = 40;
+inline constexpr std::uint64_t kClockHz = LATTICE_BOARD_HZ;
+// Ticks to ns, exact for whole-ns ticks (good to 2^64 / 10^9 ticks, 584 years at 1 GHz).
+constexpr std::uint64_t tickNanoseconds(std::uint64_t ticks) { return ticks * 1000000000u / kClockHz; }
 
 void startClock();
 std::uint64_t clockTicks();

@@ -16,17 +16,20 @@
 #include <cstdint>
 #include <limits>
 
-#include "foundation/int128.hpp"
-
 namespace lattice {
 
 // 128-bit intermediates: GCC's __int128 where the target has it (__extension__
 // keeps -Wpedantic quiet); on 32-bit targets (the firmware) the portable class
 // of foundation/int128.hpp, which gives the same results bit for bit.
-#if defined(__SIZEOF_INT128__)
+// LATTICE_PORTABLE_INT128 forces the portable class on a 64-bit host too, so
+// the firmware's arithmetic can be profiled there (docs/firmware.md, Profile).
+#if defined(__SIZEOF_INT128__) && !defined(LATTICE_PORTABLE_INT128)
 __extension__ typedef __int128 Int128;
 __extension__ typedef unsigned __int128 UInt128;
 #else
+}  // namespace lattice
+#include "foundation/int128.hpp"  // only here: the host's objects never depend on it
+namespace lattice {
 using Int128 = Wide128<true>;
 using UInt128 = Wide128<false>;
 #endif
@@ -114,13 +117,20 @@ constexpr Fixed<F> abs(Fixed<F> x) {
   return x < Fixed<F>() ? -x : x;
 }
 
+// Bits in n (0 for 0), from count-leading-zeros of its halves (one CLZ
+// instruction on ARMv7-M, where a loop took a 128-bit shift a bit).
+constexpr int bitLength(UInt128 n) {
+  const auto high = static_cast<std::uint64_t>(n >> 64), low = static_cast<std::uint64_t>(n);
+  if (high != 0) return 128 - __builtin_clzll(high);
+  return low != 0 ? 64 - __builtin_clzll(low) : 0;
+}
+
 // floor(sqrt(n)) of a 128-bit integer by Newton iteration from a power of
-// two at or above the root (Newton then descends monotonically).
+// two at or above the root (Newton then descends monotonically, so the seed
+// changes the number of steps, never the result).
 constexpr UInt128 isqrt(UInt128 n) {
   if (n == 0) return 0;
-  int bits = 0;
-  for (UInt128 t = n; t != 0; t >>= 1) ++bits;
-  UInt128 r = static_cast<UInt128>(1) << ((bits + 1) / 2);
+  UInt128 r = static_cast<UInt128>(1) << ((bitLength(n) + 1) / 2);
   while (true) {
     UInt128 next = (r + n / r) >> 1;
     if (next >= r) break;

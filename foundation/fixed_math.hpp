@@ -31,8 +31,7 @@ template <int F>
 constexpr Fixed<F> log2(Fixed<F> x) {
   using Raw = typename Fixed<F>::Raw;
   if (x.raw() <= 0) return std::numeric_limits<Fixed<F>>::lowest();
-  int top = 63;
-  while (((static_cast<std::uint64_t>(x.raw()) >> top) & 1u) == 0) --top;
+  const int top = 63 - __builtin_clzll(static_cast<std::uint64_t>(x.raw()));  // the leading one
   // Mantissa in [1, 2) as Q62.
   UInt128 m = top <= 62 ? static_cast<UInt128>(x.raw()) << (62 - top) : static_cast<UInt128>(x.raw()) >> (top - 62);
   Raw fraction = 0;

@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # The firmware end to end (docs/firmware.md): bake a scene with the host
-# `lattice`, build the Cortex-M3 image for it, run it under QEMU's
-# mps2-an385 board with UART0 to a file, and decode that stream with our Tek
-# 4125 emulator to a PNG.
-#   scripts/firmware.sh SCENE [--size WxH] [--set key=value ...] [--out DIR] [--icount] [--ram board]
+# `lattice`, build the image for a board of firmware/boards.tsv, run it under
+# that board's QEMU machine with its serial port to a file, compare the
+# stream with the host's `lattice render --arith fixed` (it prints
+# "identical" or the first differing byte, and fails on a difference), and
+# decode it with our Tek 4125 emulator to a PNG.
+#   scripts/firmware.sh SCENE [--board NAME] [--size WxH] [--set key=value ...] [--out DIR] [--icount] [--ram board]
+# --board: mps2-an385 (the default; Cortex-M3) or netduinoplus2 (STM32F405).
 # Writes DIR/NAME.tek (the UART bytes), DIR/NAME.png, DIR/NAME.report (the
 # firmware's own report: stream bytes, palette, RAM high-water marks) and,
 # with --icount, the report's virtual time is the instruction count (QEMU
-# -icount shift=0; bench/firmware.sh). --ram board links with the board's
-# 4 MiB of RAM instead of the 256 KiB budget, to measure what does not fit.
+# -icount shift=0; bench/firmware.sh). --ram board links with all the RAM
+# QEMU maps instead of the part's, to measure what does not fit.
 # DIR defaults to out/firmware.
 # Tunables (environment): LATTICE_EXE (host binary, default build/app/lattice),
 # FIRMWARE_BUILD (default build-firmware), FIRMWARE_TIMEOUT (seconds of QEMU,
@@ -17,11 +20,12 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-usage() { sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit "${1:-0}"; }
-scene="" size="64x64" out="out/firmware" icount=0 ram=budget sets=()
+usage() { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit "${1:-0}"; }
+scene="" board=mps2-an385 size="64x64" out="out/firmware" icount=0 ram=budget sets=()
 while (($#)); do
   case $1 in
     --size) size=$2; shift 2 ;;
+    --board) board=$2; shift 2 ;;
     --set) sets+=(--set "$2"); shift 2 ;;
     --out) out=$2; shift 2 ;;
     --icount) icount=1; shift ;;
@@ -33,6 +37,11 @@ while (($#)); do
 done
 [[ -n $scene ]] || { echo "firmware.sh: give a scene file (see --help)" >&2; exit 2; }
 [[ -f $scene ]] || { echo "firmware.sh: $scene: no such scene file" >&2; exit 2; }
+
+# The board's row of firmware/boards.tsv: name, QEMU machine, CPU, ...
+row=$(awk -v b="$board" '$1 == b && $1 !~ /^#/' firmware/boards.tsv)
+[[ -n $row ]] || { echo "firmware.sh: --board $board is not in firmware/boards.tsv ($(awk '$1 !~ /^#/ {printf "%s ", $1}' firmware/boards.tsv))" >&2; exit 2; }
+read -r _ machine cpu _ <<<"$row"
 
 for tool in arm-none-eabi-g++ qemu-system-arm; do
   if ! command -v "$tool" >/dev/null; then
@@ -46,6 +55,7 @@ lattice=${LATTICE_EXE:-build/app/lattice}
 name="$(basename "$scene" .toml)-$size"
 for kv in "${sets[@]}"; do [[ $kv == --set ]] || name+="-${kv//[^A-Za-z0-9]/}"; done
 build=${FIRMWARE_BUILD:-build-firmware}
+[[ $board == mps2-an385 ]] || build+="-$board"
 [[ $ram == budget || $ram == board ]] || { echo "firmware.sh: --ram is budget or board" >&2; exit 2; }
 [[ $ram == budget ]] || build+="-$ram"
 build=$(realpath -m "$build")
@@ -62,14 +72,23 @@ command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -
 exec 9>"$build/.lock"
 flock 9
 cmake -S firmware -B "$build" -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/arm-cortex-m3.cmake" \
-  -DLATTICE_SCENES_DIR="$build/scenes" -DLATTICE_FIRMWARE_RAM="$ram" -DLATTICE_WERROR=ON "${launcher[@]}" >/dev/null
-cmake --build "$build" --target "firmware-$name" -j "$(nproc)" >"$build/$name.log" 2>&1 ||
-  { cat "$build/$name.log" >&2; exit 1; }
+  -DLATTICE_SCENES_DIR="$build/scenes" -DLATTICE_BOARD="$board" -DLATTICE_FIRMWARE_CPU="$cpu" -DLATTICE_FIRMWARE_RAM="$ram" -DLATTICE_WERROR=ON "${launcher[@]}" >/dev/null
+if ! cmake --build "$build" --target "firmware-$name" -j "$(nproc)" >"$build/$name.log" 2>&1; then
+  cat "$build/$name.log" >&2
+  if grep -qE "will not fit|overflowed|exceeded" "$build/$name.log" && [[ -f $build/firmware-$name.map ]]; then
+    # What does not fit: the largest input sections of the failed link.
+    echo "firmware.sh: the image does not fit $board; its largest input sections:" >&2
+    awk 'NF >= 3 && $1 ~ /^\./ && $2 ~ /^0x/ && $3 ~ /^0x/ {print strtonum($3), $1, $4}
+         NF == 3 && $1 ~ /^0x/ && $2 ~ /^0x/ && prev ~ /^ \./ {split(prev, p, " "); print strtonum($2), p[1], $3}
+         {prev = $0}' "$build/firmware-$name.map" | sort -rn | head -12 >&2
+  fi
+  exit 1
+fi
 flock -u 9
 elf="$build/firmware-$name.elf"
 arm-none-eabi-size -A "$elf" | awk '$1 ~ /^\.(text|ARM\.extab|ARM\.exidx|eh_frame|data|bss)$/ {print}' >"$out/$name.sizes"
 
-qemu=(qemu-system-arm -M mps2-an385 -nographic -monitor none -semihosting-config enable=on,target=native
+qemu=(qemu-system-arm -M "$machine" -nographic -monitor none -semihosting-config enable=on,target=native
       -serial "file:$out/$name.tek" -kernel "$elf")
 status=0
 if ((icount)); then
@@ -86,3 +105,17 @@ if ((status != 0)); then
 fi
 "$lattice" emulate --device tek4125 "${sets[@]}" "$out/$name.tek" -o "$out/$name.png"
 echo "firmware.sh: $out/$name.tek ($(stat -c %s "$out/$name.tek") bytes), $out/$name.png"
+# The host's stream with the same flags: the firmware's must be the same bytes.
+w=${size%x*} h=${size#*x}
+"$lattice" render "$scene" --arith fixed --device tek4125 --width "$w" --height "$h" --histogram small --threads 1 \
+  "${sets[@]}" -q --stream "$out/$name.host.tek"
+if cmp -s "$out/$name.tek" "$out/$name.host.tek"; then
+  echo "firmware.sh: identical: the $board stream equals the host's ($(stat -c %s "$out/$name.tek") bytes)" |
+    tee "$out/$name.compare"
+else
+  first=$(cmp "$out/$name.tek" "$out/$name.host.tek" 2>&1 | head -1 || true)
+  byte=$(cmp -l "$out/$name.tek" "$out/$name.host.tek" 2>/dev/null | head -1 || true)
+  echo "firmware.sh: DIFFERENT: the $board stream is not the host's: $first${byte:+ (offset, firmware, host in octal: $byte)}" |
+    tee "$out/$name.compare" >&2
+  exit 1
+fi

@@ -37,12 +37,6 @@ int topBit(Raw v) {  // floor(log2 |v|), v != 0
   return 63 - __builtin_clzll(u);
 }
 
-int bitLength(UInt128 v) {  // bits needed for v (0 for 0)
-  const std::uint64_t high = static_cast<std::uint64_t>(v >> 64), low = static_cast<std::uint64_t>(v);
-  if (high != 0) return 128 - __builtin_clzll(high);
-  return low != 0 ? 64 - __builtin_clzll(low) : 0;
-}
-
 Int128 roundShiftRight(Int128 v, int s) {  // v / 2^s rounded to nearest, s >= 1
   if (s >= 127) return 0;
   const Int128 half = static_cast<Int128>(1) << (s - 1);

@@ -1,9 +1,11 @@
 // The firmware end to end (docs/firmware.md): two example scenes, one with a
 // lattice, baked, built for the Cortex-M3 and run under QEMU's mps2-an385
-// by scripts/firmware.sh. Asserted: the firmware exits 0; its UART stream is
+// by scripts/firmware.sh, and the lattice one again on the STM32F405 of
+// QEMU's netduinoplus2 (its USART1, the part's 128 KiB). Asserted: the firmware exits 0; its UART stream is
 // byte for byte what the host writes with `lattice render --arith fixed
 // --device tek4125` at the same size with the same (small) histogram; the
-// report's RAM high-water mark is within the 256 KiB budget; the decoded
+// report's RAM high-water mark is within the board's budget (256 KiB, or
+// the STM32F405's 128 KiB); the decoded
 // picture equals its golden (tests/golden/firmware/). Where the ARM
 // toolchain or QEMU is missing the cases pass with a warning saying so.
 // The ARM image is built in the source tree's build-firmware/ whichever host
@@ -12,6 +14,7 @@
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -51,16 +54,17 @@ std::string readText(const fs::path& path) {
   return s.str();
 }
 
-void runScene(const std::string& scene) {
+void runScene(const std::string& scene, const std::string& board = "mps2-an385", std::uint64_t budget = 262144) {
   if (!firmwareToolsPresent()) return;
   const std::string stem = fs::path(scene).stem().string();
-  const fs::path out = fs::path(LATTICE_BINARY_DIR) / "firmware-test" / stem;
+  const fs::path out = fs::path(LATTICE_BINARY_DIR) / "firmware-test" / board / stem;
   fs::create_directories(out);
   const std::string name = stem + "-64x64";
 
   const std::string command =
-      fmt::format("cd {} && LATTICE_EXE={} bash scripts/firmware.sh {} --size 64x64 --out {} >{}/run.log 2>&1",
-                  LATTICE_SOURCE_DIR, lattice::testing::latticeBinary().string(), scene, out.string(), out.string());
+      fmt::format("cd {} && LATTICE_EXE={} bash scripts/firmware.sh {} --board {} --size 64x64 --out {} >{}/run.log 2>&1",
+                  LATTICE_SOURCE_DIR, lattice::testing::latticeBinary().string(), scene, board, out.string(),
+                  out.string());
   const int status = std::system(command.c_str());
   INFO(readText(out / "run.log"));
   REQUIRE(status == 0);
@@ -79,11 +83,13 @@ void runScene(const std::string& scene) {
   CHECK(mcu.size() == ours.size());
   CHECK(mcu == ours);
 
-  // The firmware's own report: RAM peak within the budget.
+  // The firmware's own report: the board it ran on, RAM peak within its budget.
   const std::string report = readText(out / (name + ".report"));
+  CHECK(report.find("fixed-point on " + board) != std::string::npos);
   std::smatch m;
-  REQUIRE(std::regex_search(report, m, std::regex(R"(RAM peak (\d+) B of 262144)")));
-  CHECK(std::stoul(m[1]) <= 262144u);
+  REQUIRE(std::regex_search(report, m, std::regex(R"(RAM peak (\d+) B of (\d+))")));
+  CHECK(std::stoull(m[2]) == budget);
+  CHECK(std::stoull(m[1]) <= budget);
 
   // The picture the stream draws, cut out of the screen, is the golden.
   const tek4125::Tek4125Profile profile;
@@ -109,4 +115,8 @@ TEST_CASE("sphere-hole on the emulated Cortex-M3 streams the host's bytes", "[fi
 
 TEST_CASE("the lattice hook on the emulated Cortex-M3 streams the host's bytes", "[firmware]") {
   runScene("scenes/hook.toml");
+}
+
+TEST_CASE("the lattice hook on the emulated STM32F405 (netduinoplus2) streams the host's bytes", "[firmware]") {
+  runScene("scenes/hook.toml", "netduinoplus2", 131072);
 }

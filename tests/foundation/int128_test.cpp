@@ -76,3 +76,30 @@ TEST_CASE("portable Int128: shifts and conversions agree with __int128") {
   REQUIRE(bits(WU(std::int64_t{-5})) == static_cast<U>(S{-5}));  // sign-extended, like the built-in
   REQUIRE(bits(W(std::uint64_t{UINT64_MAX})) == static_cast<U>(UINT64_MAX));
 }
+
+// The long-division path (a divisor that fits in 64 bits, a dividend that
+// does not): Fixed32's quotients (|a| << 32 over a 63-bit divisor) and the
+// square roots' n / r. Divisors with the top bit set or clear, one or two
+// 32-bit digits, and dividends just below a multiple of the divisor, where a
+// quotient digit's estimate needs its corrections.
+TEST_CASE("portable Int128: division by a 64-bit divisor agrees with __int128") {
+  std::mt19937_64 rng(29);
+  for (int i = 0; i < 200000; ++i) {
+    const int dLength = static_cast<int>(rng() % 64) + 1;
+    std::uint64_t d = rng() >> (64 - dLength);
+    if (d == 0) d = 1;
+    U n;
+    switch (i % 4) {
+      case 0: n = static_cast<U>(rng()) << 64 | rng(); break;
+      case 1: n = (static_cast<U>(rng() >> 1) << 32);  break;  // a Fixed32 dividend
+      case 2: n = static_cast<U>(d) * (static_cast<U>(rng()) << (rng() % 64)) - 1; break;  // just below a multiple
+      default: n = (static_cast<U>(d) << 64) - 1 - (rng() % 3); break;  // the largest quotients
+    }
+    INFO("n=" << static_cast<double>(n) << " d=" << d);
+    REQUIRE(bits(wideU(n) / WU(d)) == n / d);
+    REQUIRE(bits(wideU(n) % WU(d)) == n % d);
+    const S sn = static_cast<S>(n >> 1), sd = (rng() & 1) ? -static_cast<S>(d) : static_cast<S>(d);
+    REQUIRE(bits(wide(sn) / wide(sd)) == static_cast<U>(sn / sd));
+    REQUIRE(bits(wide(-sn) % wide(sd)) == static_cast<U>(-sn % sd));
+  }
+}
