@@ -7,13 +7,13 @@
 # libc and libm whole and the dynamic loader touches their relocation pages,
 # about 5 MiB resident before main() runs, while a static executable carries
 # only the code it calls. Debian ships no static libfmt or libtoml++, so both
-# are used in their header-only forms (each library supports that officially);
+# are compiled by us from their headers (deps/);
 # libpng and zlib come from their -dev packages' .a files; libusb is left out
 # (its libudev has no static library), so `send --wait` is unavailable there.
 option(LATTICE_STATIC "Link lattice statically (low-memory 'firmware' build; no libusb)" OFF)
 
 # LATTICE_STATIC_CXX (the ordinary build's default) links only the C++ side
-# into `lattice`: libstdc++ statically, fmt and toml++ header-only, while
+# into `lattice`: libstdc++ statically, fmt and toml++ from deps/, while
 # glibc, libgcc_s, libpng and libusb stay shared. (libgcc_s stays shared
 # because glibc's pthread_once unwinds through it: with a static copy of the
 # unwinder beside it, an exception leaving std::call_once aborts.) libstdc++.so alone is 1.7 MiB
@@ -34,21 +34,31 @@ option(LATTICE_STATIC_CXX "Link lattice's C++ runtime, fmt and toml++ statically
 if(LATTICE_SANITIZE OR LATTICE_FUZZ)
   set(LATTICE_STATIC_CXX OFF CACHE BOOL "" FORCE)
 endif()
-set(LATTICE_HEADER_ONLY_LIBS OFF)
-if(LATTICE_STATIC OR LATTICE_STATIC_CXX)
-  set(LATTICE_HEADER_ONLY_LIBS ON)
-endif()
-
 find_package(fmt REQUIRED)
 find_package(tomlplusplus REQUIRED)
+
+# fmt and toml++ are compiled once, by us, from Debian's headers (deps/): every
+# other translation unit sees only their declarations. Debian ships both only
+# as shared libraries, which would bring the shared libstdc++ back into
+# `lattice`; their header-only forms, used here until issue 27, compiled the
+# formatting engine and the TOML parser again in every object that reached
+# them, most of the build's time (docs/benchmarks.md, "Build time").
+add_library(lattice_fmt_headers INTERFACE)
+get_target_property(_fmt_includes fmt::fmt INTERFACE_INCLUDE_DIRECTORIES)
+target_include_directories(lattice_fmt_headers SYSTEM INTERFACE ${_fmt_includes})
+add_library(lattice_toml_headers INTERFACE)
+get_target_property(_toml_includes tomlplusplus::tomlplusplus INTERFACE_INCLUDE_DIRECTORIES)
+target_include_directories(lattice_toml_headers SYSTEM INTERFACE ${_toml_includes})
+target_compile_definitions(lattice_toml_headers INTERFACE TOML_HEADER_ONLY=0)
 
 add_library(lattice_fmt INTERFACE)
 add_library(lattice_toml INTERFACE)
 add_library(lattice_png INTERFACE)
+target_link_libraries(lattice_fmt INTERFACE lattice_fmt_runtime)
+target_link_libraries(lattice_toml INTERFACE lattice_toml_runtime)
 
 if(LATTICE_STATIC)
   set(LATTICE_WITH_LIBUSB OFF CACHE BOOL "" FORCE)
-  target_link_libraries(lattice_fmt INTERFACE fmt::fmt-header-only)
   find_library(LATTICE_PNG_STATIC NAMES libpng16.a libpng.a REQUIRED)
   find_library(LATTICE_Z_STATIC NAMES libz.a REQUIRED)
   find_path(LATTICE_PNG_INCLUDE png.h REQUIRED)
@@ -56,23 +66,5 @@ if(LATTICE_STATIC)
   target_link_libraries(lattice_png INTERFACE ${LATTICE_PNG_STATIC} ${LATTICE_Z_STATIC} m)
 else()
   find_package(PNG REQUIRED)
-  if(LATTICE_HEADER_ONLY_LIBS)
-    target_link_libraries(lattice_fmt INTERFACE fmt::fmt-header-only)
-  else()
-    target_link_libraries(lattice_fmt INTERFACE fmt::fmt)
-  endif()
   target_link_libraries(lattice_png INTERFACE PNG::PNG)
-endif()
-
-# toml++ header-only in the static builds (LATTICE_STATIC, LATTICE_STATIC_CXX), and in the fuzzing build so the TOML
-# parser itself is instrumented (coverage feedback and sanitizer checks reach
-# inside it, where the shared library would be a black box).
-if(LATTICE_HEADER_ONLY_LIBS OR LATTICE_FUZZ)
-  # The package's own target forces the shared library (TOML_HEADER_ONLY=0);
-  # the headers alone, with the implementation inlined, need only the path.
-  get_target_property(_toml_includes tomlplusplus::tomlplusplus INTERFACE_INCLUDE_DIRECTORIES)
-  target_include_directories(lattice_toml SYSTEM INTERFACE ${_toml_includes})
-  target_compile_definitions(lattice_toml INTERFACE TOML_HEADER_ONLY=1)
-else()
-  target_link_libraries(lattice_toml INTERFACE tomlplusplus::tomlplusplus)
 endif()
