@@ -18,7 +18,8 @@ constexpr PaletteIndex kDark = 0, kLit = 1;
 enum class EscAction { Leave, Stay, Control, Page, Size, Beam, Osc, Known };
 
 EscAction escAction(std::uint8_t b) {
-  if (b == kLf || b == kCr || b == 0x1B || b == 0x7E) return EscAction::Stay;  // ignored, still escaped
+  // Ignored, still escaped (xterm's Tesctable: LF, CR, ESC, '~' and the high half).
+  if (b == kLf || b == kCr || b == 0x1B || b == 0x7E || b >= 0x80) return EscAction::Stay;
   if (b == kBel || b == kBs || b == kHt || b == kVt || (b >= 0x1C && b <= 0x1F)) return EscAction::Control;
   if (b == 0x0C) return EscAction::Page;
   if (b == 0x03 || b == 0x05 || b == 0x0E || b == 0x0F || b == 0x17 || b == 0x18 || b == 0x1A) return EscAction::Known;
@@ -27,19 +28,6 @@ EscAction escAction(std::uint8_t b) {
   if ((b >= 0x60 && b <= 0x64) || (b >= 0x67 && b <= 0x6C) || (b >= 0x6F && b <= 0x74) || b == 0x77)
     return EscAction::Beam;
   return EscAction::Leave;
-}
-
-const char* escName(std::uint8_t b) {
-  switch (b) {
-    case 0x03: return "ESC ETX (VT mode)";
-    case 0x05: return "ESC ENQ (status)";
-    case 0x0E: return "ESC SO (APL)";
-    case 0x0F: return "ESC SI (ASCII)";
-    case 0x17: return "ESC ETB (copy)";
-    case 0x18: return "ESC CAN (bypass)";
-    case 0x1A: return "ESC SUB (GIN)";
-    default: return "ESC";
-  }
 }
 
 }  // namespace
@@ -61,11 +49,6 @@ void Tek4014Decoder::finish() {
   address_.start();
   escape_ = Escape::None;
   inText_ = false;
-}
-
-void Tek4014Decoder::known(const char* name) {
-  (void)name;
-  ++report_.commands;
 }
 
 void Tek4014Decoder::unknown(const std::string& name) {
@@ -165,7 +148,7 @@ void Tek4014Decoder::escaped(std::uint8_t b) {
       return;
     case EscAction::Size:
       escape_ = Escape::None;
-      known("character size");
+      ++report_.commands;  // character size: no text is drawn here
       return;
     case EscAction::Beam: {
       escape_ = Escape::None;
@@ -182,7 +165,7 @@ void Tek4014Decoder::escaped(std::uint8_t b) {
     case EscAction::Known:
       escape_ = Escape::None;
       if (b == 0x18 || b == 0x1A) bypass_ = true;  // bypass, and GIN's bypass until the answer
-      known(escName(b));
+      ++report_.commands;
       return;
     case EscAction::Leave:
       escape_ = Escape::None;

@@ -62,7 +62,6 @@ class Tek4014Decoder final : public StreamDecoder {
   void incremental(std::uint8_t b);
   void enter(Mode mode);
   void abandonAddress();
-  void known(const char* name);
   void unknown(const std::string& name);
   void page();
   void moveOrDraw(int x, int y, bool draw);

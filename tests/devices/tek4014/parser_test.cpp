@@ -70,6 +70,10 @@ TEST_CASE("4014 emulator: point plot, special point plot and incremental plot") 
 TEST_CASE("4014 emulator: ESC FF erases; line styles and other escapes are known") {
   const Tek4014Decoder d = run(std::string("\x1c") + at(5, 6) + "\x1b\x0c");
   CHECK(litCount(d) == 0);
+  // After ESC, LF, CR and the high half are ignored and the escape goes on.
+  const Tek4014Decoder h = run(std::string("\x1c") + at(5, 6) + "\x1b\x85\r\x0c");
+  CHECK(litCount(h) == 0);
+  CHECK(h.report().unknownCommands == 0);
   const Tek4014Decoder e = run("\x1b\x61\x1b\x38\x1b\x05\x1b\x17\x1b\x0e\x1b\x0f");
   CHECK(e.lineStyle() == 1);
   CHECK(e.report().unknownCommands == 0);
