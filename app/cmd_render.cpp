@@ -84,12 +84,8 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
       ->group(kOutputGroup);
   cmd.add_option("--set", j.settings,
                  "Devices: override a profile assumption, key=value (repeatable), e.g. --set planes=4; "
-<<<<<<< HEAD
-                 "docs/tek4125.md and docs/tek4027.md list the keys")
+                 "docs/tek4125.md, docs/tek4027.md and docs/tek4014.md list the keys")
       ->group(kOutputGroup);
-=======
-                 "docs/tek4125.md, docs/tek4027.md and docs/tek4014.md list the keys");
->>>>>>> tek4014
   cmd.add_option("--apollo-profile", f.apolloProfile, "apollo: dn660 (8 planes), dn660-4 (4 planes) or dn580")
       ->check(CLI::IsMember(apollo::apolloProfileNames()))
       ->capture_default_str()
