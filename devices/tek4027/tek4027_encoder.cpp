@@ -214,8 +214,8 @@ class Encoder {
     for (std::size_t i = 2; i < chain.size(); ++i) {
       if ((i - 2) % deltas == 0) {
         w.command("RVE");
-        w.arg(0);
-        w.arg(0);
+        w.arg(0L);
+        w.arg(0L);
       }
       const TermPoint a = term(chain[i - 1]), b = term(chain[i]);
       w.arg(b.x - a.x);
