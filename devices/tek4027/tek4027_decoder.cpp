@@ -253,6 +253,10 @@ bool Tek4027Decoder::vectors(bool relative) {
     y = values[1];
     if (values.size() == 2) plot(x, y);
     first = 2;
+  } else if (profile_.rveFirstMoves) {  // the first pair moves the beam (profile rve-first)
+    x = std::clamp(x + values[0], -kMaxCoordinate, kMaxCoordinate);
+    y = std::clamp(y + values[1], -kMaxCoordinate, kMaxCoordinate);
+    first = 2;
   }
   for (std::size_t i = first; i < values.size(); i += 2) {
     long nx = relative ? x + values[i] : values[i];

@@ -201,15 +201,22 @@ class Encoder {
 
   // First segment absolute (it positions the beam), the rest as deltas:
   // !RVE continues from the beam, so a long chain is several !RVE commands.
+  // Each starts with the pair `0 0`, as the font tool's does: whether the
+  // first pair of !RVE moves the beam or draws is not settled, and a zero
+  // pair moves nowhere or draws the pixel the beam already lit.
   std::string relativeChain(const std::vector<FramePoint>& chain, std::uint64_t& commands) {
     std::string text;
     Tek4027StreamStats scratch;
     CommandWriter w(text, profile_, scratch);
     w.command("VEC");
     for (std::size_t i = 0; i < 2; ++i) point(w, chain[i]);
-    const auto limit = static_cast<std::size_t>(profile_.maxPointsPerCommand);
+    const auto deltas = static_cast<std::size_t>(profile_.maxPointsPerCommand) - 1;  // after the zero pair
     for (std::size_t i = 2; i < chain.size(); ++i) {
-      if ((i - 2) % limit == 0) w.command("RVE");
+      if ((i - 2) % deltas == 0) {
+        w.command("RVE");
+        w.arg(0L);
+        w.arg(0L);
+      }
       const TermPoint a = term(chain[i - 1]), b = term(chain[i]);
       w.arg(b.x - a.x);
       w.arg(b.y - a.y);

@@ -48,7 +48,7 @@ namespace {
 constexpr std::string_view kContext = "tek4027 profile";
 constexpr std::string_view kKeys =
     "profile, width, height, baud, data-bits, parity, stop-bits, chars-per-second, command-char, separator, "
-    "terminator, background-pot, max-points, pacing, record-bytes";
+    "terminator, background-pot, max-points, pacing, record-bytes, rve-first";
 
 // The presets: the only place that says which forms a profile permits.
 // Strict: every form has at least one independent source (docs/tek-sources.md).
@@ -105,7 +105,11 @@ void applyOverride(Tek4027Profile& profile, std::string_view keyValue) {
   else if (key == "background-pot") p.backgroundPot = parseIntSetting(kContext, kv);
   else if (key == "max-points") p.maxPointsPerCommand = parseIntSetting(kContext, kv);
   else if (key == "record-bytes") p.recordBytes = parseIntSetting(kContext, kv);
-  else if (key == "pacing") {
+  else if (key == "rve-first") {
+    if (value == "move") p.rveFirstMoves = true;
+    else if (value == "draw") p.rveFirstMoves = false;
+    else throw Error(ErrorKind::Usage, fmt::format("{}: rve-first={} must be move or draw", kContext, value));
+  } else if (key == "pacing") {
     if (value == "none") p.pacing = Tek4027Pacing::None;
     else if (value == "report") p.pacing = Tek4027Pacing::Report;
     else if (value == "auto") p.pacing = Tek4027Pacing::Auto;
@@ -150,10 +154,11 @@ std::string describe(const Tek4027Profile& p) {
       p.relativeVectors ? "yes" : "no", pacingName(p.pacing), p.recordBytes, p.workspaceLines, p.graphicsFirstRow,
       p.graphicsLastRow) + fmt::format(
       "width={}\nheight={}\nbaud={}\ndata-bits={}\nparity={}\nstop-bits={}\nchars-per-second={}\n"
-      "command-char={}\nseparator={}\nterminator={}\nbackground-pot={}\nmax-points={}\n",
+      "command-char={}\nseparator={}\nterminator={}\nbackground-pot={}\nmax-points={}\nrve-first={}\n",
       p.width, p.height, p.line.baud, p.line.dataBits, p.line.parity ? "even" : "none", p.line.stopBits,
       p.terminalCharsPerSecond, static_cast<int>(p.commandChar), p.separator == ' ' ? "space" : "comma",
-      p.terminator == ';' ? "semicolon" : "cr", p.backgroundPot, p.maxPointsPerCommand);
+      p.terminator == ';' ? "semicolon" : "cr", p.backgroundPot, p.maxPointsPerCommand,
+      p.rveFirstMoves ? "move" : "draw");
 }
 
 }  // namespace lattice::tek4027

@@ -69,6 +69,11 @@ struct Tek4027Profile {
   // buffer limit is not known; 32 points keeps a command under ~260 chars.
   int maxPointsPerCommand = 32;
 
+  // The emulator's reading of `!RVE`'s first pair (the driver ignores it):
+  // a relative move, as in `!VEC` and as the font tool's use reads
+  // (`rve-first=move`), or the first drawn step (`rve-first=draw`).
+  bool rveFirstMoves = true;
+
   // Throws lattice::Error(Usage) naming the bad field and its legal range.
   void validate() const;
 };
@@ -81,7 +86,8 @@ std::vector<std::string> tek4027PresetNames();
 // Apply one "key=value" from `--set` (keys: profile (strict|compact), width,
 // height, baud, data-bits, parity, stop-bits, chars-per-second, command-char
 // (ASCII code), separator (space|comma), terminator (cr|semicolon),
-// background-pot, max-points, pacing (none|report|auto), record-bytes).
+// background-pot, max-points, pacing (none|report|auto), record-bytes,
+// rve-first (move|draw)).
 // Throws lattice::Error(Usage) and leaves the profile unchanged on a bad one.
 // applyOverrides() applies `profile=` first, so the other keys refine it.
 void applyOverride(Tek4027Profile& profile, std::string_view keyValue);

@@ -1,6 +1,7 @@
 #include "devices/tek4125/tek4125_decoder.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 
@@ -404,9 +405,10 @@ void Tek4125Decoder::rasterChar(std::uint8_t c) {
   if (c > 0x5F) return malformed();  // not a 6-bit group character
   rasterBits_ = (rasterBits_ << 6 | (c - 0x20u)) & 0xFFFu;  // at most 8 + 6 - 1 bits are ever held
   rasterHeld_ += 6;
-  while (rasterHeld_ >= bitsPerPixel_ && rasterPixels_ > 0) {
-    rasterHeld_ -= bitsPerPixel_;
-    const int value = static_cast<int>(rasterBits_ >> rasterHeld_) & ((1 << bitsPerPixel_) - 1);
+  const int bits = pixelBits();
+  while (rasterHeld_ >= bits && rasterPixels_ > 0) {
+    rasterHeld_ -= bits;
+    const int value = static_cast<int>(rasterBits_ >> rasterHeld_) & ((1 << bits) - 1);
     writeAtBeam(value, 1);
     --rasterPixels_;
   }
@@ -414,19 +416,21 @@ void Tek4125Decoder::rasterChar(std::uint8_t c) {
   rasterBits_ &= (1u << rasterHeld_) - 1u;
 }
 
-// The beam moves right and wraps to the viewport's next row down (assumed
-// for RP; the RAL GKS driver's RL relies on it, sending a whole raster after
-// one RS). Work is bounded by the viewport: once the beam is below it,
-// nothing more can be drawn.
+// The beam moves right and wraps at the viewport's right edge to the next
+// row up: the RAL GKS driver's GK4TRO sends a whole raster after one RS,
+// bottom row first, so its pictures stand upright only so (raster-rows=down
+// is the other reading). Work is bounded by the viewport: once the beam has
+// left it across the top or bottom, nothing more can be drawn.
 void Tek4125Decoder::writeAtBeam(int index, long count) {
-  while (count > 0 && beamY_ >= vy0_) {
+  const int step = profile_.rasterRowsDown ? -1 : 1;
+  while (count > 0 && (profile_.rasterRowsDown ? beamY_ >= vy0_ : beamY_ <= vy1_)) {
     if (beamX_ > vx1_) {
       beamX_ = vx0_;
-      --beamY_;
+      beamY_ += step;
       continue;
     }
     const long n = std::min<long>(count, vx1_ - beamX_ + 1);
-    if (beamY_ <= vy1_)
+    if (beamY_ >= vy0_ && beamY_ <= vy1_)
       for (long i = 0; i < n; ++i)
         if (beamX_ + i >= vx0_) plot(beamX_ + static_cast<int>(i), beamY_, index);
     beamX_ += static_cast<int>(n);
@@ -434,10 +438,16 @@ void Tek4125Decoder::writeAtBeam(int index, long count) {
   }
 }
 
-// ints_: count, run codes. A run code is length * 2^bits + index, bits as
-// the last RU set (RAL GKS driver, GK4TRO).
+// Bits a pixel: as the last RU set (RAL GKS driver, GK4TRO, where they
+// always equal its surface's planes), or surface 1's planes.
+int Tek4125Decoder::pixelBits() const {
+  return profile_.pixelBitsFromSurface ? std::bit_width(static_cast<unsigned>(mask_)) : bitsPerPixel_;
+}
+
+// ints_: count, run codes. A run code is length * 2^bits + index (RAL GKS
+// driver, GK4TRO).
 void Tek4125Decoder::runLengthWrite() {
-  const int bits = bitsPerPixel_;
+  const int bits = pixelBits();
   for (std::size_t i = 1; i < ints_.size(); ++i) {
     const int code = ints_[i];
     if (code < 0) {
@@ -496,7 +506,7 @@ void Tek4125Decoder::execute() {
       vy0_ = std::clamp(std::min(xyY(0), xyY(1)), 0, profile_.height - 1);
       vy1_ = std::clamp(std::max(xyY(0), xyY(1)), 0, profile_.height - 1);
       beamX_ = vx0_;
-      beamY_ = vy1_;
+      beamY_ = profile_.rasterRowsDown ? vy1_ : vy0_;  // the corner the first row starts at
       break;
     case Action::RH:  // relative to the viewport (zebra dev_4107.c), or as the profile reads it
       beamX_ = (profile_.rhFromScreen ? 0 : vx0_) + xy(0);

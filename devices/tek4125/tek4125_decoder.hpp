@@ -64,7 +64,8 @@ class Tek4125Decoder final : public StreamDecoder {
   void line(int x0, int y0, int x1, int y1, int index);  // terminal coordinates
   void fillPanel();
   void rasterChar(std::uint8_t c);
-  void writeAtBeam(int index, long count);  // raster pixels: right, wrapping down the viewport
+  void writeAtBeam(int index, long count);  // raster pixels: right, wrapping up (or down) the viewport
+  int pixelBits() const;  // bits a pixel in RP and RL, as the profile's pixel-bits reads them
   void runLengthWrite();
   void setColor(int index, int c1, int c2, int c3);
   int pixelX(int x) const;

@@ -110,10 +110,10 @@ void Tek4125Driver::encode(const Tek4125DriverOptions& options, ByteSink& sink, 
     out.command("KI");
     out.integer(1);
   }
-  if (forms.defineSurfaces) {  // one surface holding every plane: no index is masked
+  if (forms.defineSurfaces) {  // one surface of as many planes as RU writes bits: as every source pairs them
     out.command("RD");
     out.integer(1);
-    out.integer(profile_.planes);
+    out.integer(layout.bits);
   }
   out.command("TM");  // colour map in RGB, opaque, normal
   for (int i = 0; i < 3; ++i) out.integer(1);

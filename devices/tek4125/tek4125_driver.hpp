@@ -9,7 +9,7 @@
 // into the sink: no candidate stream is ever held whole). What the stream may contain is
 // the profile's form set (tek4125_forms.hpp, strict by default):
 //
-//   ESC %!0, LV0; strict: KI1, RD 1 <planes>; TM111; strict: TB <colour 0>;
+//   ESC %!0, LV0; strict: KI1, RD 1 <bits>; TM111; strict: TB <colour 0>;
 //   TG (one entry a command in strict, the whole palette in one in compact);
 //   ESC FF; RU 1 11 <bits>; RS (the whole screen in strict, the picture in
 //   compact); one RR painting the picture in the background colour when the

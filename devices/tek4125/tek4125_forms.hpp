@@ -5,7 +5,8 @@
 // form, the independent programs that send it and so the confidence.
 //
 //   strict   only forms at least one independent driver sends, and nothing
-//            that depends on an unsettled reading: surfaces defined (RD),
+//            that depends on an unsettled reading: surfaces defined (RD,
+//            as many planes as RU then writes bits a pixel),
 //            the background set (TB) and painted, a pixel viewport that
 //            covers the whole screen (so RH and RR coordinates mean the
 //            same under either reading of RR), full five-byte xy, one
@@ -27,7 +28,7 @@ namespace lattice::tek4125 {
 
 struct Tek4125Forms {
   std::string name;
-  bool defineSurfaces = false;      // ESC RD 1 <planes>: every plane in surface 1
+  bool defineSurfaces = false;      // ESC RD 1 <bits>: surface 1 with as many planes as RU writes bits
   bool explicitBackground = false;  // TB with colour 0, then one RR over the picture in index 0
   bool screenViewport = false;      // RS covers the screen, not just the picture
   bool fullXy = false;              // every xy in five bytes (no registers relied on)

@@ -11,7 +11,7 @@ namespace {
 
 constexpr const char* kKeys =
     "profile, width, height, planes, palette-bits, reserved, baud, data-bits, parity, stop-bits, xon-xoff, "
-    "power-up-map, strategy, rr-origin, rh-origin, surface-planes, progressive";
+    "power-up-map, strategy, rr-origin, rh-origin, surface-planes, pixel-bits, raster-rows, progressive";
 
 void requireRange(const char* key, int value, int lo, int hi) {
   if (value < lo || value > hi)
@@ -54,6 +54,8 @@ void applyOverride(Tek4125Profile& profile, std::string_view keyValue) {
   else if (key == "rr-origin") p.rrFromViewport = originSetting(kv, "screen", "viewport");
   else if (key == "rh-origin") p.rhFromScreen = originSetting(kv, "viewport", "screen");
   else if (key == "surface-planes") p.surfacePlanes = parseIntSetting(kContext, kv);
+  else if (key == "pixel-bits") p.pixelBitsFromSurface = originSetting(kv, "ru", "surface");
+  else if (key == "raster-rows") p.rasterRowsDown = originSetting(kv, "up", "down");
   else if (key == "power-up-map") {
     if (kv.value == "pgplot") p.powerUpMap = Tek4125PowerUpMap::Pgplot;
     else if (kv.value == "ral-cgm") p.powerUpMap = Tek4125PowerUpMap::RalCgm;
@@ -87,11 +89,11 @@ std::string describe(const Tek4125Profile& p) {
   return fmt::format(
       "profile={}\nwidth={}\nheight={}\nplanes={}\npalette-bits={}\nreserved={}\nbaud={}\ndata-bits={}\n"
       "parity={}\nstop-bits={}\nxon-xoff={}\npower-up-map={}\nstrategy={}\nrr-origin={}\nrh-origin={}\n"
-      "surface-planes={}\nprogressive={}\n",
+      "surface-planes={}\npixel-bits={}\nraster-rows={}\nprogressive={}\n",
       p.forms, p.width, p.height, p.planes, p.paletteBits, p.reserved, p.baud, p.dataBits, p.parity ? "even" : "none",
       p.stopBits, p.xonXoff ? "on" : "off", p.powerUpMap == Tek4125PowerUpMap::Pgplot ? "pgplot" : "ral-cgm",
       p.strategy, p.rrFromViewport ? "viewport" : "screen", p.rhFromScreen ? "screen" : "viewport", p.surfacePlanes,
-      p.progressive ? "on" : "off");
+      p.pixelBitsFromSurface ? "surface" : "ru", p.rasterRowsDown ? "down" : "up", p.progressive ? "on" : "off");
 }
 
 }  // namespace lattice::tek4125

@@ -38,6 +38,14 @@ struct Tek4125Profile {
   bool rrFromViewport = false;  // rr-origin=screen|viewport: RR corners relative to the pixel viewport
   bool rhFromScreen = false;    // rh-origin=viewport|screen: RH relative to the screen, not the viewport
   int surfacePlanes = 0;        // surface-planes=N: planes of surface 1 before any RD (0 = all)
+  // pixel-bits=ru|surface: RP and RL pack pixels by the bits RU set, or by
+  // surface 1's planes (no source writes fewer bits than its surface has).
+  bool pixelBitsFromSurface = false;
+  // raster-rows=up|down: after RS the beam starts at the viewport's
+  // lower-left corner and a wrap moves it a row up (what the RAL GKS
+  // driver's bottom-row-first RL rasters need), or at the upper-left
+  // corner, wrapping a row down.
+  bool rasterRowsDown = false;
 
   int colorMapSize() const { return 1 << planes; }
   // Colours a picture may use: the map minus reserved entries.
@@ -52,7 +60,8 @@ struct Tek4125Profile {
 // planes, palette-bits, reserved, baud, data-bits, parity (none|even|odd),
 // stop-bits, xon-xoff (on|off), power-up-map (pgplot|ral-cgm), strategy
 // (shortest|plain|skip|rectangles|spans|runs), rr-origin (screen|viewport),
-// rh-origin (viewport|screen), surface-planes (0..planes), progressive (on|off)).
+// rh-origin (viewport|screen), surface-planes (0..planes), pixel-bits
+// (ru|surface), raster-rows (up|down), progressive (on|off)).
 // Unknown keys and bad values throw lattice::Error(Usage) listing the keys.
 void applyOverride(Tek4125Profile& profile, std::string_view keyValue);
 void applyOverrides(Tek4125Profile& profile, const std::vector<std::string>& keyValues);

@@ -22,30 +22,42 @@ int px(const Tek4125Decoder& d, int x, int y) { return d.image().at(x, d.image()
 
 }  // namespace
 
-TEST_CASE("RL run codes write length * 2^bits + index at the beam and wrap at the viewport edge") {
-  // GK4TRO: RU -1 11 <planes>, RS upper-left then lower-right, then RL
-  // arrays of run codes, one row after another with no RH.
+TEST_CASE("RL rasters sent as the GKS driver sends them, bottom row first after one RS, stand upright") {
+  // GK4TRO: RU -1 11 <planes>, RS upper-left then lower-right, then the
+  // raster's rows from the bottom one up ("starting at base and working
+  // upwards"), each row's runs as RL codes length * 2^bits + index, no RH.
   Stream s;
   s.cmd("RU").i(-1).i(11).i(4);
   s.cmd("RS").full(100, 209).full(109, 200);  // 10 x 10, corners in GKS's order
-  s.cmd("RL").i(3).i(4 * 16 + 2).i(6 * 16 + 5).i(10 * 16 + 7);  // row 1: 4 of 2, 6 of 5; row 2: 10 of 7
-  s.cmd("RL").i(1).i(15 * 16 + 3);                               // rows 3 and 4 (5 of it)
-  const auto d = run(s.bytes);
-  CHECK(d.report().malformed == 0);
-  CHECK(d.report().unknownCommands == 0);
-  CHECK(px(d, 100, 209) == 2);
-  CHECK(px(d, 103, 209) == 2);
-  CHECK(px(d, 104, 209) == 5);
-  CHECK(px(d, 109, 209) == 5);
-  CHECK(px(d, 100, 208) == 7);
-  CHECK(px(d, 109, 208) == 7);
-  CHECK(px(d, 109, 207) == 3);
-  CHECK(px(d, 104, 206) == 3);
-  CHECK(px(d, 105, 206) == 0);
-  CHECK(px(d, 110, 209) == 0);  // nothing beyond the viewport
+  // Image row r (0 = top): 4 pixels of index r + 1, then 6 of index 15 - r.
+  for (int r = 9; r >= 0; --r) s.cmd("RL").i(2).i(4 * 16 + (r + 1)).i(6 * 16 + (15 - r));
+  s.cmd("RL").i(1).i(15 * 16 + 3);  // 15 pixels: past the top row's end
+  Tek4125Profile down;
+  applyOverride(down, "raster-rows=down");
+  const auto up = run(s.bytes), flipped = run(s.bytes, down);
+  for (const Tek4125Decoder* d : {&up, &flipped}) {
+    CHECK(d->report().malformed == 0);
+    CHECK(d->report().unknownCommands == 0);
+  }
+  // raster-rows=up (the default): the first row sent is the bottom one.
+  for (int r = 0; r < 10; ++r) {
+    INFO("image row " << r);
+    CHECK(px(up, 100, 209 - r) == r + 1);
+    CHECK(px(up, 103, 209 - r) == r + 1);
+    CHECK(px(up, 104, 209 - r) == 15 - r);
+    CHECK(px(up, 109, 209 - r) == 15 - r);
+    // raster-rows=down: the old assumption shows the picture upside down.
+    CHECK(px(flipped, 100, 200 + r) == r + 1);
+    CHECK(px(flipped, 109, 200 + r) == 15 - r);
+  }
+  // The last code ran off the viewport's top (up) or bottom (down): nothing
+  // is drawn outside it, and the picture's rows stay as they were.
+  CHECK(px(up, 100, 210) == 0);
+  CHECK(px(flipped, 100, 199) == 0);
+  CHECK(px(up, 110, 209) == 0);  // nothing right of the viewport
 }
 
-TEST_CASE("RL at 8 bits wraps a run across the viewport's edge") {
+TEST_CASE("RL at 8 bits wraps a run across the viewport's edge, a row up or (raster-rows=down) a row down") {
   Stream s;
   s.cmd("RU").i(1).i(11).i(8);
   s.cmd("RS").full(0, 0).full(1279, 1023);
@@ -53,12 +65,36 @@ TEST_CASE("RL at 8 bits wraps a run across the viewport's edge") {
   s.cmd("RL").i(2).i(12 * 256 + 200).i(255 * 256 + 9);
   s.cmd("RH").full(0, 0);
   s.cmd("RL").i(1).i(65535);  // the largest code: 255 pixels of index 255
-  const auto d = run(s.bytes);
+  Tek4125Profile down;
+  applyOverride(down, "raster-rows=down");
+  const auto up = run(s.bytes), d = run(s.bytes, down);
+  CHECK(up.report().malformed == 0);
   CHECK(d.report().malformed == 0);
+  CHECK(px(up, 1279, 500) == 200);
+  CHECK(px(up, 1, 501) == 200);  // wrapped to the viewport's left edge, a row up
+  CHECK(px(up, 2, 501) == 9);
+  CHECK(px(up, 1, 499) == 0);
   CHECK(px(d, 1279, 500) == 200);
-  CHECK(px(d, 1, 499) == 200);  // wrapped to the viewport's left edge, a row down
+  CHECK(px(d, 1, 499) == 200);  // the other reading: a row down
   CHECK(px(d, 2, 499) == 9);
+  CHECK(px(up, 254, 0) == 255);
   CHECK(px(d, 254, 0) == 255);
+}
+
+TEST_CASE("RL codes split by RU's bits, or (pixel-bits=surface) by surface 1's planes") {
+  // No source writes fewer bits than its surface has planes (zebra: RU 0 11 4
+  // on 4 planes; the GKS driver: RD 1 N, RU -1 11 N): RD 1 8 then RU 4 bits.
+  Stream s;
+  s.cmd("RD").i(1).i(8).cmd("RU").i(1).i(11).i(4);
+  s.cmd("RS").full(0, 0).full(1279, 1023).cmd("RH").full(0, 0);
+  s.cmd("RL").i(1).i(2 * 256 + 7);  // 32 pixels at 4 bits, 2 at 8
+  Tek4125Profile surface;
+  applyOverride(surface, "pixel-bits=surface");
+  const auto ru = run(s.bytes), planes = run(s.bytes, surface);
+  CHECK(px(ru, 31, 0) == 7);
+  CHECK(px(ru, 32, 0) == 0);
+  CHECK(px(planes, 1, 0) == 7);
+  CHECK(px(planes, 2, 0) == 0);
 }
 
 TEST_CASE("after KI1 a raw DEL is dropped and ESC ? stands for it inside a parameter") {
