@@ -2,7 +2,8 @@
 # Installs the Debian packages Lattice builds and tests with, only those
 # missing, so it is safe to run again and again. gnuplot-nox: the Tek 4125
 # emulator's tests decode the streams its tek410x and tek40xx terminals
-# write. `--bench` adds the peers the benchmarks compare against (POV-Ray,
+# write; libsixel-bin (sixel2png, img2sixel), xterm, xvfb and x11-apps (xwd)
+# are the peers the sixel tests draw on (tests/support/xterm_capture.hpp). `--bench` adds the peers the benchmarks compare against (POV-Ray,
 # Embree, pngquant, GNU time); `--fuzz` adds clang 14, its runtime libraries
 # (libFuzzer, ASan, UBSan: libclang-rt-14-dev) and llvm-14 (llvm-symbolizer),
 # for scripts/fuzz.sh and the sanitizer build (scripts/test.sh asks for it);
@@ -12,7 +13,8 @@
 set -euo pipefail
 
 packages=(cmake g++ make pkg-config git catch2 libglm-dev libpng-dev libusb-1.0-0-dev
-          libtomlplusplus-dev libcli11-dev libfmt-dev gnuplot-nox)
+          libtomlplusplus-dev libcli11-dev libfmt-dev gnuplot-nox
+          libsixel-bin xterm xvfb x11-apps)
 for option in "$@"; do
   case $option in
     --bench) packages+=(povray libembree-dev pngquant time python3) ;;
