@@ -21,6 +21,7 @@ void lhtReader(std::span<const std::uint8_t> bytes);    // .lht bytes -> LhtFile
 void tek4125Decoder(std::span<const std::uint8_t> bytes);  // Tek 4100 command stream -> screen
 void tek4027Decoder(std::span<const std::uint8_t> bytes);  // Tek 4027 command stream -> screen
 void pngReader(std::span<const std::uint8_t> bytes);       // PNG file -> RgbImage
+void sixelDecoder(std::span<const std::uint8_t> bytes);    // DEC sixel stream -> screen
 
 struct Target {
   std::string_view name;  // the harness is fuzz_<name>; regressions live in fuzz/regressions/<name>/
