@@ -13,6 +13,7 @@
 #include "app/pipeline_args.hpp"
 #include "app/render_job.hpp"
 #include "app/serial_args.hpp"
+#include "app/terminal_stream.hpp"
 #include "devices/apollo_sim/apollo_profile.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/arithmetics.hpp"
@@ -47,7 +48,9 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
   cmd.add_option("--device", f.device, fmt::format("png (truecolour) or a device: {}", fmt::join(devices, ", ")))
       ->check(CLI::IsMember(devices))
       ->capture_default_str();
-  cmd.add_option("--stream", j.stream, "Devices: write the command stream to this file, or - for stdout");
+  cmd.add_option("--stream", j.stream,
+                 "Devices: write the command stream to this file, or - for stdout (sixel: stdout when it is a "
+                 "terminal and no other destination is named)");
   cmd.add_option("--set", j.settings,
                  "Devices: override a profile assumption, key=value (repeatable), e.g. --set planes=4; "
                  "docs/tek4125.md and docs/tek4027.md list the keys");
@@ -114,6 +117,7 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
     job.port = f.serial;
     job.baudFromProfile = cmd.count("--baud") == 0;
   }
+  streamToTerminalByDefault(job);  // sixel on a terminal: the picture goes there
   checkRenderJob(job);
   return job;
 }
@@ -130,7 +134,8 @@ void addRender(CLI::App& root) {
       "  lattice render scenes/torus-floor.toml -o torus.png\n"
       "  lattice render scenes/fuzzy-sphere-1000.toml --device tek4125 --stream fuzzy.tek -o fuzzy-tek.png\n"
       "  lattice render scenes/sphere-hole.toml --device tek4027 --port auto --baud 4800\n"
-      "  lattice render scenes/thistle.toml --device apollo --apollo-profile dn660-4 -o thistle.png");
+      "  lattice render scenes/thistle.toml --device apollo --apollo-profile dn660-4 -o thistle.png\n"
+      "  lattice render scenes/fuzzy-sphere-1000.toml --device sixel --set registers=256   (in xterm -ti vt340)");
   auto flags = std::make_shared<RenderFlags>();
   defineFlags(*cmd, *flags);
   cmd->callback([flags, cmd] {
