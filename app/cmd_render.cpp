@@ -17,6 +17,7 @@
 #include "app/render_job.hpp"
 #include "app/serial_args.hpp"
 #include "app/wire_args.hpp"
+#include "app/terminal_stream.hpp"
 #include "devices/apollo_sim/apollo_profile.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/arithmetics.hpp"
@@ -80,7 +81,9 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
       ->check(CLI::IsMember(devices))
       ->capture_default_str()
       ->group(kOutputGroup);
-  cmd.add_option("--stream", j.stream, "Devices: write the command stream to this file, or - for stdout")
+  cmd.add_option("--stream", j.stream,
+                 "Devices: write the command stream to this file, or - for stdout (sixel: stdout when it is a "
+                 "terminal and no other destination is named)")
       ->group(kOutputGroup);
   cmd.add_option("--set", j.settings,
                  "Devices: override a profile assumption, key=value (repeatable), e.g. --set planes=4; "
@@ -188,6 +191,7 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
     job.baudFromProfile = cmd.count("--baud") == 0;
   }
   applyWireArgs(f.wire, cmd, f.serial.baud, job);
+  streamToTerminalByDefault(job);  // sixel on a terminal: the picture goes there
   checkRenderJob(job);
   return job;
 }
@@ -239,7 +243,8 @@ void addRender(CLI::App& root) {
       "  lattice render scenes/torus-floor.toml -o torus.png\n"
       "  lattice render scenes/fuzzy-sphere-1000.toml --device tek4125 --stream fuzzy.tek -o fuzzy-tek.png\n"
       "  lattice render scenes/sphere-hole.toml --device tek4027 --port auto --baud 4800\n"
-      "  lattice render scenes/thistle.toml --device apollo --apollo-profile dn660-4 -o thistle.png");
+      "  lattice render scenes/thistle.toml --device apollo --apollo-profile dn660-4 -o thistle.png\n"
+      "  lattice render scenes/fuzzy-sphere-1000.toml --device sixel --set registers=256   (in xterm -ti vt340)");
   auto flags = std::make_shared<RenderFlags>();
   defineFlags(*cmd, *flags);
   cmd->callback([flags, cmd] {

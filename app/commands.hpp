@@ -18,12 +18,13 @@ void addQuantize(CLI::App& root);
 void addRasterize(CLI::App& root);
 void addRender(CLI::App& root);
 void addSend(CLI::App& root);
+void addShow(CLI::App& root);
 void addTable1(CLI::App& root);
 
 using CommandAdder = void (*)(CLI::App& root);
 
 // In the order `lattice --help` lists them.
 inline constexpr CommandAdder kCommands[] = {addBake,     addDiff,   addEmulate, addExport, addLhtInfo, addPorts,
-                                             addQuantize, addRasterize, addRender, addSend,   addTable1};
+                                             addQuantize, addRasterize, addRender, addSend, addShow, addTable1};
 
 }  // namespace lattice::app

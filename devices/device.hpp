@@ -56,6 +56,10 @@ struct Device {
   // Optional.
   std::optional<LineFormat> line;  // the serial line it expects; none for a workstation display
   std::string profileText;         // its profile, one key=value per line
+  // Its stream draws on the terminal the user types in (sixel): `lattice
+  // render` sends it to standard output when that is a terminal and no
+  // other destination is named.
+  bool showsOnTerminal = false;
 
   // Optional: how a sender of a stored stream keeps pace with a terminal that
   // answers requests (the 4027's `!REP` pacing). `points` gives the offsets

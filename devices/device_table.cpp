@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include "devices/apollo_sim/apollo_device.hpp"
+#include "devices/sixel/sixel_device.hpp"
 #include "devices/tek4014/tek4014_device.hpp"
 #include "devices/tek4027/tek4027_device.hpp"
 #include "devices/tek4125/tek4125_device.hpp"
@@ -19,6 +20,8 @@ const DeviceEntry kDevices[] = {
      &tek4014::makeDevice},
     {"apollo", "simulated Apollo DN660/DN580: its GPR calls as a journal (--set profile=dn660|dn660-4|dn580)",
      &apollo::makeDevice},
+    {"sixel", "DEC sixel graphics for a VT340, xterm -ti vt340, mlterm, foot, WezTerm (--set registers=256)",
+     &sixel::makeDevice},
 };
 
 }  // namespace

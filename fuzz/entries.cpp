@@ -8,7 +8,8 @@
 //   (1..8 bytes), so chunk boundaries fall everywhere across a run without
 //   spending input bytes on them; a seed is still a valid stream. The next
 //   two bits of the length choose the Tek 4125 emulator's unsettled readings
-//   (RR from the viewport, RH from the screen: tek4125_profile.hpp).
+//   (RR from the viewport, RH from the screen: tek4125_profile.hpp); for the
+//   sixel emulator the next bit chooses 16 or 256 registers.
 // * The .lht entry parses the bytes as they are and again with the trailing
 //   FNV-1a checksum recomputed, so mutations also reach the checks behind it
 //   (a random flip almost never survives a 64-bit checksum). A table that
@@ -28,6 +29,7 @@
 #include <fstream>
 #include <string>
 
+#include "devices/sixel/sixel_decoder.hpp"
 #include "devices/tek4014/tek4014_decoder.hpp"
 #include "devices/tek4027/tek4027_decoder.hpp"
 #include "devices/tek4125/tek4125_decoder.hpp"
@@ -134,13 +136,22 @@ void pngReader(std::span<const std::uint8_t> bytes) {
   }
 }
 
+void sixelDecoder(std::span<const std::uint8_t> bytes) {
+  // The next bit of the length picks 16 or 256 registers, so register wrap-around is reached both ways.
+  sixel::SixelProfile profile;
+  profile.registers = (bytes.size() / 8) % 2 == 1 ? 256 : 16;
+  sixel::SixelDecoder decoder{profile};
+  decode(decoder, bytes);
+}
+
 const std::vector<Target>& targets() {
   static const std::vector<Target> list{{"scene", sceneLoader},
                                         {"lht", lhtReader},
                                         {"tek4125", tek4125Decoder},
                                         {"tek4027", tek4027Decoder},
                                         {"tek4014", tek4014Decoder},
-                                        {"png", pngReader}};
+                                        {"png", pngReader},
+                                        {"sixel", sixelDecoder}};
   return list;
 }
 

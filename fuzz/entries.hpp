@@ -22,6 +22,7 @@ void tek4125Decoder(std::span<const std::uint8_t> bytes);  // Tek 4100 command s
 void tek4027Decoder(std::span<const std::uint8_t> bytes);  // Tek 4027 command stream -> screen
 void tek4014Decoder(std::span<const std::uint8_t> bytes);  // Tek 4010/4014 graphics stream -> screen
 void pngReader(std::span<const std::uint8_t> bytes);       // PNG file -> RgbImage
+void sixelDecoder(std::span<const std::uint8_t> bytes);    // DEC sixel stream -> screen
 
 struct Target {
   std::string_view name;  // the harness is fuzz_<name>; regressions live in fuzz/regressions/<name>/

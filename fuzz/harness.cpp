@@ -1,7 +1,7 @@
 // One libFuzzer harness, built once per surface (fuzz/CMakeLists.txt
 // defines LATTICE_FUZZ_ENTRY as the target's entry function in
 // fuzz/entries.hpp): fuzz_scene, fuzz_lht, fuzz_tek4125, fuzz_tek4027,
-// fuzz_png. libFuzzer supplies main(); scripts/fuzz.sh runs them.
+// fuzz_png, fuzz_sixel. libFuzzer supplies main(); scripts/fuzz.sh runs them.
 #include <cstddef>
 #include <cstdint>
 

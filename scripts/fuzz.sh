@@ -5,7 +5,7 @@
 # Builds the libFuzzer harnesses with clang 14, AddressSanitizer and UBSan
 # (-fno-sanitize-recover=all) in build-fuzz/, builds the seed corpora
 # (scripts/fuzz-seeds.sh), then runs each harness (or only TARGET: scene,
-# lht, tek4125, tek4027, tek4014, png) for SECONDS (default 30).
+# lht, tek4125, tek4027, tek4014, png, sixel) for SECONDS (default 30).
 #
 # Method and tunables, per run:
 # * Inputs the run finds go to build-fuzz/corpus/<target>/ (kept between
@@ -27,8 +27,8 @@ cd "$(dirname "$0")/.."
 root=$(pwd)
 seconds=${1:-30}
 only=${2:-}
-all=(scene lht tek4125 tek4027 tek4014 png)
-declare -A max_len=([scene]=8192 [lht]=65536 [tek4125]=16384 [tek4027]=16384 [tek4014]=16384 [png]=16384)
+all=(scene lht tek4125 tek4027 tek4014 png sixel)
+declare -A max_len=([scene]=8192 [lht]=65536 [tek4125]=16384 [tek4027]=16384 [tek4014]=16384 [png]=16384 [sixel]=16384)
 if [[ -n $only && -z ${max_len[$only]:-} ]]; then
   echo "fuzz.sh: unknown target '$only' (known: ${all[*]})" >&2
   exit 2

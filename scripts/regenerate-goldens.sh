@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Rewrites the golden files under tests/golden/ from the current code: all of
-# them, or one test area's (`scripts/regenerate-goldens.sh devices/tek4027`).
+# them, or one test area's (`scripts/regenerate-goldens.sh devices/tek4027`,
+# `scripts/regenerate-goldens.sh devices/sixel` for tests/golden/sixel/).
 # Review the result with `git diff --stat tests/golden` and look at changed
 # PNGs before committing: a golden is only as good as the eyes that checked it.
 set -euo pipefail

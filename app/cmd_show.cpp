@@ -1,0 +1,147 @@
+// `lattice show FILE`: any PNG, or any recorded stream of a device Lattice
+// emulates (tek4125, tek4027, sixel), drawn on the sixel terminal in front of
+// the user. A stream is decoded by our emulator; the picture (scaled down to
+// the terminal's largest sixel picture if it is bigger, nearest pixel) goes
+// through the median cut to the terminal's colour registers and the sixel
+// driver, to standard output or a file.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "devices/device_table.hpp"
+#include "devices/sixel/sixel_driver.hpp"
+#include "devices/work_budget.hpp"
+#include "foundation/system/atomic_file.hpp"
+#include "foundation/error.hpp"
+#include "foundation/rgb_image_source.hpp"
+#include "io/png.hpp"
+#include "io/stdout_sink.hpp"
+#include "quantize/run_pipeline.hpp"
+
+namespace lattice::app {
+namespace {
+
+struct ShowOptions {
+  std::string input;
+  std::string as;      // the input's device; empty: told by its first bytes
+  std::string stream;  // empty or "-": standard output
+  std::vector<std::string> settings;
+};
+
+std::vector<std::uint8_t> readInput(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(ErrorKind::Input, fmt::format("{}: cannot open it to show", path));
+  std::vector<std::uint8_t> bytes;
+  char buffer[65536];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    bytes.insert(bytes.end(), buffer, buffer + in.gcount());
+    if (bytes.size() > kMaxStreamBytes)
+      throw Error(ErrorKind::Input, fmt::format("{}: longer than the {} MiB a stream may be (docs/limits.md)", path,
+                                                kMaxStreamBytes >> 20));
+  }
+  return bytes;
+}
+
+bool isPng(const std::vector<std::uint8_t>& b) {
+  static const std::uint8_t magic[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  return b.size() >= 8 && std::equal(magic, magic + 8, b.begin());
+}
+
+// Which device's stream the bytes are, by how they open: DCS (sixel), the
+// 4027's command character '!', or ESC (the 4100 series' commands).
+std::string guessDevice(const std::vector<std::uint8_t>& b, const std::string& path) {
+  std::size_t i = 0;
+  while (i < b.size() && (b[i] == ' ' || b[i] == '\r' || b[i] == '\n' || b[i] == '\t')) ++i;
+  if (i < b.size() && b[i] == 0x90) return "sixel";
+  if (i + 1 < b.size() && b[i] == 0x1B && b[i + 1] == 'P') return "sixel";
+  if (i < b.size() && b[i] == '!') return "tek4027";
+  if (i < b.size() && b[i] == 0x1B) return "tek4125";
+  throw Error(ErrorKind::Usage, fmt::format("{}: not a PNG, and its first bytes do not say which device's stream it "
+                                            "is; name it with --as tek4125, --as tek4027 or --as sixel",
+                                            path));
+}
+
+// Nearest-pixel reduction to fit width x height, keeping the aspect.
+RgbImage fitWithin(const RgbImage& image, int width, int height) {
+  if (image.width <= width && image.height <= height) return image;
+  const double scale = std::min(double(width) / image.width, double(height) / image.height);
+  RgbImage out(std::max(1, int(image.width * scale)), std::max(1, int(image.height * scale)));
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x) {
+      const int sx = std::min(image.width - 1, int((x + 0.5) / scale));
+      const int sy = std::min(image.height - 1, int((y + 0.5) / scale));
+      std::copy_n(image.pixel(sx, sy), 3, out.pixel(x, y));
+    }
+  return out;
+}
+
+void runShow(const ShowOptions& o) {
+  sixel::SixelProfile profile;
+  sixel::applyOverrides(profile, o.settings);
+  const std::vector<std::uint8_t> bytes = readInput(o.input);
+  RgbImage picture;
+  std::string what;
+  if (o.as.empty() && isPng(bytes)) {
+    picture = io::readPngBytes(bytes, o.input);
+    what = "PNG";
+  } else {
+    const std::string device = o.as.empty() ? guessDevice(bytes, o.input) : o.as;
+    // A sixel stream is read with the most registers any of ours uses, so none wraps around.
+    const std::vector<std::string> readAs = device == "sixel" ? std::vector<std::string>{"registers=256"}
+                                                               : std::vector<std::string>{};
+    std::unique_ptr<StreamDecoder> decoder = devices::makeDevice(device, readAs).makeEmulator();
+    decodeBytes(*decoder, bytes, o.input);
+    const DecodeReport& report = decoder->report();
+    if (report.unknownCommands + report.malformed > 0)
+      fmt::print(stderr, "lattice show: {}: skipped {} unknown and {} malformed commands\n", o.input,
+                 report.unknownCommands, report.malformed);
+    picture = toRgbImage(decoder->image());
+    what = device + " stream";
+  }
+  const RgbImage fitted = fitWithin(picture, profile.width, profile.height);
+  std::unique_ptr<ByteSink> out;
+  if (o.stream.empty() || o.stream == "-") out = std::make_unique<io::StdoutSink>();
+  else out = std::make_unique<AtomicFile>(o.stream);
+  sixel::SixelDriver driver(*out, profile);
+  RgbImageSource source(fitted);
+  quantize::PipelineOptions options;
+  options.progress = false;  // standard error is most likely the terminal being drawn on
+  quantize::runPipeline(source, driver, options);
+  out->close();
+  fmt::print(stderr, "lattice show: {} ({}, {}x{}{}): {} bytes of sixel, {} registers, to {}\n", o.input, what,
+             picture.width, picture.height,
+             fitted.width != picture.width ? fmt::format(" shown at {}x{}", fitted.width, fitted.height) : "",
+             driver.stats().bytes, driver.stats().registers,
+             o.stream.empty() || o.stream == "-" ? "standard output" : o.stream);
+}
+
+}  // namespace
+
+void addShow(CLI::App& root) {
+  auto o = std::make_shared<ShowOptions>();
+  auto* cmd = root.add_subcommand("show", "Show a PNG, or a recorded tek4125, tek4027 or sixel stream, on a sixel "
+                                          "terminal (xterm -ti vt340, mlterm, foot, WezTerm)");
+  cmd->add_option("file", o->input, "A PNG, or a stream file lattice render --stream wrote")->required();
+  cmd->add_option("--as", o->as, "The stream's device, when its first bytes do not tell: tek4125, tek4027, sixel")
+      ->check(CLI::IsMember(devices::deviceNames()));
+  cmd->add_option("--set", o->settings,
+                  "The sixel terminal's profile, key=value (repeatable): registers (16; 256 for xterm with "
+                  "numColorRegisters: 256), width, height (largest picture, 1000x1000), p1, p2 (docs/sixel.md)");
+  cmd->add_option("--stream", o->stream, "Write the sixel stream to this file (atomically) instead of standard output");
+  cmd->footer(
+      "A stream is decoded by Lattice's own emulator of its device, then re-encoded as sixel; a picture larger than\n"
+      "the terminal's largest sixel picture is scaled down (nearest pixel). Examples:\n"
+      "  lattice show torus.png\n"
+      "  lattice show fuzzy.tek --set registers=256        (xterm -ti vt340 -xrm 'XTerm*numColorRegisters: 256')\n"
+      "  lattice show sphere.tek --as tek4027");
+  cmd->callback([o] { runShow(*o); });
+}
+
+}  // namespace lattice::app

@@ -1,0 +1,48 @@
+#include "devices/sixel/sixel_device.hpp"
+
+#include <fmt/format.h>
+
+#include "devices/sixel/sixel_decoder.hpp"
+#include "devices/sixel/sixel_driver.hpp"
+
+namespace lattice::sixel {
+namespace {
+
+class StreamDriver final : public devices::Driver {
+ public:
+  StreamDriver(ByteSink& out, const SixelProfile& profile) : driver_(out, profile) {}
+  IndexedSink& sink() override { return driver_; }
+  devices::DriverStats stats() const override {
+    const SixelStreamStats& s = driver_.stats();
+    return {s.bytes, 0.0,
+            fmt::format("{} registers defined of {}, {} bands, {} colour passes, {} runs", s.registers,
+                        driver_.profile().registers, s.bands, s.band.passes, s.band.runs)};
+  }
+
+ private:
+  SixelDriver driver_;
+};
+
+}  // namespace
+
+devices::Device makeDevice(const std::vector<std::string>& settings) {
+  SixelProfile profile;
+  applyOverrides(profile, settings);
+  devices::Device d;
+  d.name = "sixel";
+  d.title = "DEC sixel terminal (VT340, xterm -ti vt340)";
+  d.width = profile.width;
+  d.height = profile.height;
+  d.makeDriver = [profile](ByteSink& out) { return std::make_unique<StreamDriver>(out, profile); };
+  d.makeEmulator = [profile] { return std::unique_ptr<StreamDecoder>(std::make_unique<SixelDecoder>(profile)); };
+  // One band of indices, the encoder's three per-column arrays and the
+  // band's bytes (at most about 4 a column a register pass, usually far less).
+  d.driverMemory = [](int w, int) { return static_cast<std::uint64_t>(w) * (6 + 3 + 64) + 4096; };
+  // The canvas, its cropped copy and the RGB copy for the PNG.
+  d.emulatorMemory = 5 * static_cast<std::uint64_t>(profile.width) * static_cast<std::uint64_t>(profile.height);
+  d.profileText = describe(profile);
+  d.showsOnTerminal = true;
+  return d;
+}
+
+}  // namespace lattice::sixel
