@@ -175,7 +175,7 @@ TEMPLATE_TEST_CASE("lattice extremes: a lattice of 255 cells per axis", "[extrem
   const LatticeObject capsule = capsuleObject(0.3, 254.0);
   const LatticeBox box({1, 1, 255}, 1.0, 1.0, Vec3d(-0.5, -0.5, -0.5));
   const auto lht = rasterizeInBox(capsule, box);
-  REQUIRE(lht->table.entryCount() > 0);
+  REQUIRE(lht->entryCount() > 0);
   const Mat4d place = placement(0.01);
   std::vector<std::pair<Vec3d, Vec3d>> rays = raysThroughBox(*lht, place, 3000);
   // And the far end: from the corner (0, 0, 250) to (1, 1, 255), and back.
@@ -216,7 +216,7 @@ TEMPLATE_TEST_CASE("lattice extremes: a lattice of one cell", "[extremes]", floa
   // A sphere of radius 0.4 cells at the centre meets all of them.
   const LatticeObject ball = sphereObject(0.4);
   const auto lht = rasterizeInBox(ball, LatticeBox({1, 1, 1}, 1.0, 1.0, Vec3d(-0.5)));
-  REQUIRE(lht->table.entryCount() == 8);  // 4 diagonals, both ways
+  REQUIRE(lht->entryCount() == 8);  // 4 diagonals, both ways
   const Mat4d place = placement(1.0);
   checkAgreement<T>(fmt::format("{} lattice 1x1x1", arithmeticName<T>()),
                     compareWithDoubleLeaf<T>(lht, place, raysThroughBox(*lht, place, 3000), tieCells<T>()), 50);

@@ -19,7 +19,14 @@ using namespace lattice;
 namespace {
 
 // A small fuzzy ball: 200 hairs on a sphere, over a floor.
-const std::string kScene = testing::HairScene{.size = 64, .seed = 3, .fur = true, .floor = true}.toml();
+const std::string kScene = [] {
+  testing::HairScene scene;
+  scene.size = 64;
+  scene.seed = 3;
+  scene.fur = true;
+  scene.floor = true;
+  return scene.toml();
+}();
 
 RgbImage render(const SceneDesc& scene, bool fixedPoint, bool full) {
   RenderSettings settings;

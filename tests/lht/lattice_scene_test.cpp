@@ -41,13 +41,14 @@ TableSettings tablesIn(std::optional<LhtPrecision> form, bool quiet = false) {
 
 // A small fuzzy sphere (thesis sec. 3.4) with a floor, two lights.
 std::string fuzzyScene(int hairs, const std::string& extraLatticeKeys = "") {
-  return testing::HairScene{.size = 72,
-                            .hairs = hairs,
-                            .latticeKeys = extraLatticeKeys.empty() ? "" : extraLatticeKeys + "\n",
-                            .fur = true,
-                            .fillLight = true,
-                            .floor = true}
-      .toml();
+  testing::HairScene scene;
+  scene.size = 72;
+  scene.hairs = hairs;
+  if (!extraLatticeKeys.empty()) scene.latticeKeys = extraLatticeKeys + "\n";
+  scene.fur = true;
+  scene.fillLight = true;
+  scene.floor = true;
+  return scene.toml();
 }
 
 RgbImage render(const SceneDesc& scene, bool full, bool latticeShadows = true) {

@@ -25,7 +25,9 @@ using namespace lattice::lht;
 namespace {
 
 std::string hairScene(const std::string& latticeKeys) {
-  return testing::HairScene{.latticeKeys = latticeKeys}.toml();
+  testing::HairScene scene;
+  scene.latticeKeys = latticeKeys;
+  return scene.toml();
 }
 
 template <typename T>

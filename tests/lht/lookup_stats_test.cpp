@@ -32,7 +32,7 @@ TEST_CASE("lookup stats: a ray through the centre asks two pairs that hit, one a
   CHECK(s.distinctPairs == 2);
   CHECK(s.entriesReferenced == 2);
   CHECK(s.nIzReferenced == 2);  // both points on one face each: eq. 1.3 counts each pair once
-  CHECK(s.entries == lht->table.entryCount());
+  CHECK(s.entries == lht->entryCount());
   CHECK(s.nIz == lht->hits);
   // The same ray again: more look-ups, no new pairs.
   spans.clear();
@@ -53,7 +53,12 @@ TEST_CASE("lookup stats: a ray through the centre asks two pairs that hit, one a
 
 namespace {
 
-const std::string kScene = testing::HairScene{.size = 48, .hairs = 300}.toml();
+const std::string kScene = [] {
+  testing::HairScene scene;
+  scene.size = 48;
+  scene.hairs = 300;
+  return scene.toml();
+}();
 
 struct Counted {
   RgbImage image;
