@@ -63,7 +63,7 @@ void describeCommand(std::string& page, const CLI::App& command, const std::stri
     page += fmt::format(".PP\n\\fI{}:\\fR\n", roff(group));
     for (const CLI::Option* option : byGroup[group]) {
       std::string head = "\\fB" + roff(optionNames(*option)) + "\\fR";
-      if (option->get_type_size() != 0) head += " \\fI" + roff(option->get_type_name()) + "\\fR";
+      if (option->get_type_size() != 0 && !option->get_type_name().empty()) head += " \\fI" + roff(option->get_type_name()) + "\\fR";
       page += ".TP\n" + head + "\n" + roff(option->get_description());
       if (!option->get_default_str().empty()) page += " [default: " + roff(option->get_default_str()) + "]";
       page += "\n";
