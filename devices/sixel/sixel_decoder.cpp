@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "devices/sixel/sixel_forms.hpp"
-#include "devices/tek4027/tek4027_hls.hpp"
+#include "devices/tek_hls.hpp"
 #include "devices/work_budget.hpp"
 
 namespace lattice::sixel {
@@ -221,7 +221,7 @@ void SixelDecoder::defineOrSelect() {
                                                  eightBitOf(static_cast<int>(z))};
   } else if (space == kColourSpaceHls && x <= 360 && y <= 100 && z <= 100) {
     registers_[static_cast<std::size_t>(reg)] =
-        tek4027::tekHlsToRgb({static_cast<int>(x), static_cast<int>(y), static_cast<int>(z)});
+        devices::tekHlsToRgb({static_cast<int>(x), static_cast<int>(y), static_cast<int>(z)});
   } else {
     ++report_.malformed;
     return;

@@ -1,33 +1,14 @@
 #pragma once
-// The 4027 defines paint pots by hue, lightness and saturation. We assume the
-// Tektronix HLS convention (the one the 4100 series documents): hue in degrees
-// 0..359 with BLUE at 0, red at 120, green at 240; lightness and saturation in
-// percent 0..100. It is the textbook HLS double hexcone (Foley & van Dam) with
-// the hue wheel turned by 120 degrees.
-//
-// RGB -> HLS is computed in double precision and each component rounded to
-// the nearest integer (hue modulo 360), because the terminal takes integers.
-// HLS -> RGB (the emulator, and what the terminal would show) rounds each gun
-// to the nearest of 0..255. The round trip is therefore not exact; the bound
-// is measured in tests/devices/tek4027/hls_test.cpp and given in docs/tek4027.md.
-#include "foundation/scanline.hpp"
+// The 4027's paint pots are HLS colours in the Tektronix convention, which the
+// sixel device shares: the conversion lives in devices/tek_hls.hpp, named here
+// for the 4027's code.
+#include "devices/tek_hls.hpp"
 
 namespace lattice::tek4027 {
 
-struct Hls {
-  int hue = 0;         // 0..359, blue = 0
-  int lightness = 0;   // 0..100
-  int saturation = 0;  // 0..100
-  friend bool operator==(const Hls&, const Hls&) = default;
-};
-
-Hls rgbToTekHls(Rgb8 rgb);
-// hue is taken modulo 360 (negative too); lightness and saturation are
-// clamped to 0..100.
-Rgb8 tekHlsToRgb(Hls hls);
-
-// Largest per-channel difference of the round trip rgb -> HLS -> rgb that
-// tests guarantee over the whole 8-bit cube.
-constexpr int kHlsRoundTripMaxDelta = 5;
+using devices::Hls;
+using devices::kHlsRoundTripMaxDelta;
+using devices::rgbToTekHls;
+using devices::tekHlsToRgb;
 
 }  // namespace lattice::tek4027

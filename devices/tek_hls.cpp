@@ -1,9 +1,9 @@
-#include "devices/tek4027/tek4027_hls.hpp"
+#include "devices/tek_hls.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace lattice::tek4027 {
+namespace lattice::devices {
 
 namespace {
 
@@ -60,4 +60,4 @@ Rgb8 tekHlsToRgb(Hls hls) {
   return {gun(hlsGun(m1, m2, hue + 120.0)), gun(hlsGun(m1, m2, hue)), gun(hlsGun(m1, m2, hue - 120.0))};
 }
 
-}  // namespace lattice::tek4027
+}  // namespace lattice::devices
