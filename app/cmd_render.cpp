@@ -221,6 +221,8 @@ void sayRenderEvent(const RenderEvent& event) {
           else
             fmt::print(stderr, "lattice render: {} stream {} bytes -> {} ({}, {})\n", e.device, e.stats.bytes, e.where,
                        e.title, e.stats.detail);
+        } else if constexpr (std::is_same_v<E, WireChosen>) {
+          fmt::print(stderr, "lattice render: wire budget: {}\n", e.description);
         } else {
           static_assert(std::is_same_v<E, LookupsCounted>);
           if (e.lattices.empty()) fmt::print(stderr, "lattice render: lht-stats: no lattice was looked up\n");

@@ -55,7 +55,14 @@ struct LookupsCounted {
   std::vector<lht::LookupSummary> lattices;
 };
 
-using RenderEvent = std::variant<SizeFitted, TableRepacked, MemoryPlanned, PeakMeasured, StreamSent, LookupsCounted>;
+// `--wire-seconds` / `--wire-bytes`: the setting the search chose, in words
+// (app/wire_budget.hpp's describeWireChoice).
+struct WireChosen {
+  std::string description;
+};
+
+using RenderEvent =
+    std::variant<SizeFitted, TableRepacked, MemoryPlanned, PeakMeasured, StreamSent, LookupsCounted, WireChosen>;
 // Where events go; empty: nowhere.
 using RenderEvents = std::function<void(const RenderEvent&)>;
 

@@ -148,7 +148,7 @@ WireSearch renderWithinWireBudget(Renderer<T>& renderer, const RenderJob& job, c
     progress.finish();
   }
   WireSearch search = searchWireBudget(truecolour, device, *job.wire, pipeline.quantize, !job.quiet);
-  fmt::print(stderr, "lattice render: wire budget: {}\n", describeWireChoice(search));
+  raise(job.events, WireChosen{describeWireChoice(search)});
   return search;
 }
 

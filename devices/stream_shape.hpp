@@ -20,4 +20,23 @@ inline bool mostlySevenBit(std::span<const std::uint8_t> bytes) {
   return static_cast<double>(high) <= kMaxEightBitShare * static_cast<double>(bytes.size());
 }
 
+// A sixel picture's introducer: DCS (ESC P, or the 8-bit 0x90), then only
+// parameters (digits and `;`), then `q` (docs/sixel-sources.md). A Tek 4100
+// stream has ESC and letters too, so the 4125's recogniser asks this first.
+inline bool hasSixelIntroducer(std::span<const std::uint8_t> bytes) {
+  for (std::size_t i = 0; i < bytes.size(); ++i) {
+    std::size_t at;
+    if (bytes[i] == 0x90) {
+      at = i + 1;
+    } else if (bytes[i] == 0x1B && i + 1 < bytes.size() && bytes[i + 1] == 'P') {
+      at = i + 2;
+    } else {
+      continue;
+    }
+    while (at < bytes.size() && ((bytes[at] >= '0' && bytes[at] <= '9') || bytes[at] == ';')) ++at;
+    if (at < bytes.size() && bytes[at] == 'q') return true;
+  }
+  return false;
+}
+
 }  // namespace lattice::devices

@@ -4,6 +4,7 @@
 
 #include "devices/sixel/sixel_decoder.hpp"
 #include "devices/sixel/sixel_driver.hpp"
+#include "devices/stream_shape.hpp"
 
 namespace lattice::sixel {
 namespace {
@@ -42,6 +43,8 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   d.emulatorMemory = 5 * static_cast<std::uint64_t>(profile.width) * static_cast<std::uint64_t>(profile.height);
   d.profileText = describe(profile);
   d.showsOnTerminal = true;
+  // A sixel stream is 7-bit text (but for an 8-bit DCS) with a DCS ... q.
+  d.recognise = [](std::span<const std::uint8_t> head) { return devices::hasSixelIntroducer(head); };
   return d;
 }
 

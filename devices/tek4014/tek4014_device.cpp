@@ -4,6 +4,7 @@
 
 #include "devices/tek4014/tek4014_decoder.hpp"
 #include "devices/tek4014/tek4014_driver.hpp"
+#include "devices/stream_shape.hpp"
 
 namespace lattice::tek4014 {
 namespace {
@@ -44,6 +45,16 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   d.emulatorMemory = 4 * static_cast<std::uint64_t>(profile.width()) * static_cast<std::uint64_t>(profile.height());
   d.line = profile.line;
   d.profileText = describe(profile);
+  // 7-bit bytes with the 4014's graph modes (GS: vectors, FS: point plots) or
+  // its erase (ESC FF); a scene, a text or an image has none of them.
+  d.recognise = [](std::span<const std::uint8_t> head) {
+    if (!devices::mostlySevenBit(head)) return false;
+    for (std::size_t i = 0; i < head.size(); ++i) {
+      if (head[i] == 0x1D || head[i] == 0x1C) return true;
+      if (head[i] == 0x1B && i + 1 < head.size() && head[i + 1] == 0x0C) return true;
+    }
+    return false;
+  };
   return d;
 }
 

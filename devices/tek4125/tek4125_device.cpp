@@ -56,9 +56,10 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   d.profileText = describe(profile);
   // 7-bit bytes with a 4100-series command (ESC and a letter: `ESC L F`,
   // `ESC % ! 0`) or the 4010 graph mode (GS) that gnuplot's and PGPLOT's
-  // streams use; a scene, a text or an image has neither.
+  // streams use; a scene, a text or an image has neither (nor a sixel
+  // picture, whose DCS is ESC and a letter too).
   d.recognise = [](std::span<const std::uint8_t> head) {
-    if (!devices::mostlySevenBit(head)) return false;
+    if (!devices::mostlySevenBit(head) || devices::hasSixelIntroducer(head)) return false;
     for (std::size_t i = 0; i < head.size(); ++i) {
       if (head[i] == 0x1D) return true;
       if (head[i] == 0x1B && i + 1 < head.size() && ((head[i + 1] >= 'A' && head[i + 1] <= 'Z') || head[i + 1] == '%'))
