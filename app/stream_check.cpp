@@ -87,7 +87,10 @@ void CheckedDecoder::check() {
   } else if (looks.size() > 7 && looks.compare(looks.size() - 7, 7, " stream") == 0) {
     for (const devices::DeviceEntry& entry : devices::deviceTable()) {
       const devices::Device other = entry.make({});
-      if (other.recognise && other.recognise(head_)) fix = fmt::format("emulate it with --device {}", other.name);
+      if (other.recognise && other.recognise(head_)) {
+        fix = fmt::format("emulate it with --device {}", other.name);
+        break;  // the table's first device that takes it: the 4125 reads 4014 forms too, not the reverse
+      }
     }
   } else {
     fix = fmt::format("give a {} command stream", device_.title);

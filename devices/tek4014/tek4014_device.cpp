@@ -46,9 +46,12 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   d.line = profile.line;
   d.profileText = describe(profile);
   // 7-bit bytes with the 4014's graph modes (GS: vectors, FS: point plots) or
-  // its erase (ESC FF); a scene, a text or an image has none of them.
+  // its erase (ESC FF); a scene, a text or an image has none of them. A 4100
+  // command (ESC and a capital or `%`) says the stream is a 4125's instead.
   d.recognise = [](std::span<const std::uint8_t> head) {
     if (!devices::mostlySevenBit(head)) return false;
+    for (std::size_t i = 0; i + 1 < head.size(); ++i)
+      if (head[i] == 0x1B && ((head[i + 1] >= 'A' && head[i + 1] <= 'Z') || head[i + 1] == '%')) return false;
     for (std::size_t i = 0; i < head.size(); ++i) {
       if (head[i] == 0x1D || head[i] == 0x1C) return true;
       if (head[i] == 0x1B && i + 1 < head.size() && head[i + 1] == 0x0C) return true;

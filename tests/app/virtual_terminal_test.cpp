@@ -45,7 +45,7 @@ TEST_CASE("send to a virtual terminal draws the screen emulate draws", "[serial]
   }
 }
 
-TEST_CASE("-o on send is for a virtual terminal only", "[cli]") {
+TEST_CASE("send -o is for a virtual terminal only", "[cli]") {
   const auto run = runLattice("send /dev/null --port /dev/ttyS99 -o x.png");
   CHECK(run.exitCode == 2);
   CHECK_THAT(run.stderrText, Catch::Contains("use --port virtual:DEVICE"));

@@ -12,7 +12,7 @@ using namespace lattice;
 
 TEST_CASE("the device table names every device and makes each with its screen") {
   const std::vector<std::string> names = devices::deviceNames();
-  CHECK(names == std::vector<std::string>{"tek4125", "tek4027", "tek4014", "apollo"});
+  CHECK(names == std::vector<std::string>{"tek4125", "tek4027", "tek4014", "apollo", "sixel"});
   for (const std::string& name : names) {
     const devices::Device d = devices::makeDevice(name);
     INFO(name);
