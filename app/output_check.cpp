@@ -5,12 +5,11 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <vector>
 
 #include "foundation/error.hpp"
+#include "foundation/system/atomic_file.hpp"
 
 namespace lattice::app {
 
@@ -32,17 +31,17 @@ void checkOutputPath(const std::string& path, const std::string& flag, bool forc
                                                  "choose another path",
                                                  flag, path));
   }
-  // The outputs are written as a temporary beside the file, then renamed:
-  // the same operation, tried now.
-  std::string probe = (parent / ".lattice-write-test-XXXXXX").string();
-  std::vector<char> name(probe.begin(), probe.end());
-  name.push_back('\0');
-  const int fd = ::mkstemp(name.data());
-  if (fd < 0)
+  // The outputs are written as a temporary beside the file, then renamed
+  // (foundation/system/atomic_file.hpp): the same temporary is made now and
+  // discarded. It is registered like every other, so a signal arriving
+  // meanwhile leaves nothing behind (tests/app/killed_writer_test.cpp).
+  try {
+    const AtomicFile probe(path);
+  } catch (const Error&) {
+    const int reason = errno;  // the failed open's, which the error carries too
     throw Error(ErrorKind::Output, fmt::format("{} {}: cannot write in {}: {}; choose a directory you can write to",
-                                               flag, path, parent.string(), std::strerror(errno)));
-  ::close(fd);
-  ::unlink(name.data());
+                                               flag, path, parent.string(), std::strerror(reason)));
+  }
 }
 
 void guardOutputs(CLI::App& root) {
