@@ -8,32 +8,6 @@
 
 namespace {
 
-void printHashed(const lattice::lht::LatticeHashTable& t) {
-  using namespace lattice::lht;
-  fmt::print("layout:        open addressing, linear probing, {} slots\n", t.capacity());
-  fmt::print("load factor:   {:.3f} of the slots used\n", t.loadFactor());
-  fmt::print("table bytes:   {} ({:.2f} bytes/entry, {} bytes per slot)\n", t.bytes(), t.bytesPerEntry(),
-             t.entryStride());
-  const ProbeStats probes = t.probeStats();
-  fmt::print("probes:        a hit reads {:.2f} slots on average, a miss {:.2f}; longest displacement {}\n",
-             probes.meanHitSlots, probes.meanMissSlots, probes.longestProbe);
-  for (std::size_t k = 0; k < probes.displacementHistogram.size(); ++k)
-    if (probes.displacementHistogram[k])
-      fmt::print("  {:>3} past home: {} entries\n", k, probes.displacementHistogram[k]);
-}
-
-void printCompressed(const lattice::lht::CompressedTable& t, std::uint64_t nIz) {
-  using namespace lattice::lht;
-  fmt::print("pair layout:   {} ({} bits)\n",
-             t.layout() == PairLayout::Symmetric ? "symmetric, one bit per unordered pair, two payloads a bit"
-                                                 : "ordered, one bit per ordered pair",
-             t.bitCount());
-  fmt::print("table bytes:   {} ({:.2f} bytes/entry, {:.2f} per N_iz): bitmap {}, rank directory {}, payloads {} "
-             "({} bytes each)\n",
-             t.bytes(), t.bytesPerEntry(), nIz ? double(t.bytes()) / double(nIz) : 0.0, t.bitmapBytes(), t.rankBytes(),
-             t.payloads().size(), payloadBytes(t.precision()));
-}
-
 void runLhtInfo(const std::string& path) {
   using namespace lattice::lht;
   const LhtFile lht = readLhtFile(path);
@@ -41,11 +15,12 @@ void runLhtInfo(const std::string& path) {
   fmt::print("file:          {}\n", path);
   const LhtPrecisionInfo& precision = lhtPrecisionInfo(lht.precision());
   fmt::print("format:        version {}\n", lht.version);
-  fmt::print("form:          {}\n", lht.form() == LhtForm::Compressed
-                                        ? "compressed (no key, no chain: a rank bitmap over the pair space)"
-                                        : lht.version < kLhtVersion
-                                              ? "hashed (read from the chained layout, thesis sec. 2.3; held open-addressed)"
-                                              : "hashed (open-addressed: key, payload)");
+  // A hashed table of versions 1-3 was chained in its file (lht/file/chained_table.hpp).
+  const bool chained = lht.form() == LhtForm::Hashed && lht.version < kLhtVersion;
+  const std::string_view summary = std::visit(
+      [](const auto& t) { return std::decay_t<decltype(formTable(t))>::kFormSummary; }, lht.table);
+  fmt::print("form:          {}\n",
+             chained ? "hashed (read from the chained layout, thesis sec. 2.3; held open-addressed)" : summary);
   fmt::print("precision:     {} ({}-byte entries: {})\n", precision.name, precision.entryBytes, precision.summary);
   fmt::print("lattice:       {} x {} x {} cells, lambda {:g}, f_lat {:g} (cell {:g})\n", c[0], c[1], c[2],
              lht.box.lambda(), lht.box.oversample(), lht.box.cellSize());
@@ -60,10 +35,12 @@ void runLhtInfo(const std::string& path) {
   const std::uint64_t space = points * (points - 1);
   fmt::print("pair space:    {} boundary points, {} ordered pairs; entries fill {:.2f} % of it\n", points, space,
              space ? 100.0 * double(lht.entryCount()) / double(space) : 0.0);
-  if (lht.form() == LhtForm::Compressed)
-    printCompressed(lht.compressed(), lht.hits);
-  else
-    printHashed(lht.hashed());
+  std::visit(
+      [&](const auto& t) {
+        if constexpr (requires { formTable(t).describe(lht.hits); })
+          for (const std::string& line : formTable(t).describe(lht.hits)) fmt::print("{}\n", line);
+      },
+      lht.table);
 }
 
 }  // namespace

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <map>
 #include <vector>
 
 #include "foundation/error.hpp"
@@ -16,10 +15,10 @@ void addPipelineOptions(CLI::App* cmd, PipelineArgs& args, const std::string& gr
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
   cmd->add_option("--dither", args.dither, "none | fs (Floyd-Steinberg, serpentine) | bayer (ordered 8x8)")
-      ->check(CLI::IsMember({"none", "fs", "bayer"}))
+      ->check(CLI::IsMember(nameList(quantize::kDitherNames)))
       ->capture_default_str();
   cmd->add_option("--split", args.split, "median (Heckbert 1982) | variance (minimise squared error)")
-      ->check(CLI::IsMember({"median", "variance"}))
+      ->check(CLI::IsMember(nameList(quantize::kSplitRuleNames)))
       ->capture_default_str();
   cmd->add_option("--refine", args.refine, "k-means refinement iterations after the cut, 0..100")
       ->capture_default_str()
@@ -27,13 +26,13 @@ void addPipelineOptions(CLI::App* cmd, PipelineArgs& args, const std::string& gr
   cmd->add_option("--mode", args.mode,
                   "passes (render twice: least memory) | frame (keep the 18-bit frame: fastest) | sample "
                   "(histogram of a subsampled pre-pass)")
-      ->check(CLI::IsMember({"passes", "frame", "sample"}))
+      ->check(CLI::IsMember(nameList(quantize::kPipelineModeNames)))
       ->capture_default_str();
   cmd->add_option("--sample", args.sample, "sample mode: histogram from every Nth row and column (default 4)");
   cmd->add_option("--histogram", args.histogram,
                   "full (a counter per 18-bit colour, 1 MiB) | small (only the colours present, at most 64 KiB and "
                   "6144 colours: the firmware's form, docs/firmware.md); the same palette either way")
-      ->check(CLI::IsMember({"full", "small"}))
+      ->check(CLI::IsMember(nameList(quantize::kHistogramFormNames)))
       ->capture_default_str();
   const std::vector<CLI::Option*> options = cmd->get_options();
   for (std::size_t i = before; i < options.size(); ++i) options[i]->group(group);
@@ -41,21 +40,16 @@ void addPipelineOptions(CLI::App* cmd, PipelineArgs& args, const std::string& gr
 }
 
 quantize::PipelineOptions toPipelineOptions(const PipelineArgs& args, const CLI::App& cmd) {
-  static const std::map<std::string, quantize::Dither> dithers{
-      {"none", quantize::Dither::None}, {"fs", quantize::Dither::FloydSteinberg}, {"bayer", quantize::Dither::Bayer}};
-  static const std::map<std::string, quantize::SplitRule> splits{{"median", quantize::SplitRule::Median},
-                                                       {"variance", quantize::SplitRule::Variance}};
-  static const std::map<std::string, quantize::PipelineMode> modes{
-      {"passes", quantize::PipelineMode::TwoPass}, {"frame", quantize::PipelineMode::Frame}, {"sample", quantize::PipelineMode::Sample}};
   quantize::PipelineOptions options;
   options.maxColors = args.colors;
-  options.quantize.dither = dithers.at(args.dither);  // values checked by CLI::IsMember
-  options.quantize.split = splits.at(args.split);
+  // Values checked by CLI::IsMember against the same tables.
+  options.quantize.dither = *valueNamed(quantize::kDitherNames, args.dither);
+  options.quantize.split = *valueNamed(quantize::kSplitRuleNames, args.split);
   options.quantize.refineIterations = args.refine;
-  options.quantize.histogram = args.histogram == "small" ? quantize::HistogramForm::Small : quantize::HistogramForm::Full;
+  options.quantize.histogram = *valueNamed(quantize::kHistogramFormNames, args.histogram);
   const bool sampleGiven = cmd.count("--sample") > 0;
   const bool modeGiven = cmd.count("--mode") > 0;
-  options.mode = modes.at(args.mode);
+  options.mode = *valueNamed(quantize::kPipelineModeNames, args.mode);
   if (sampleGiven && !modeGiven) options.mode = quantize::PipelineMode::Sample;
   if (sampleGiven && options.mode != quantize::PipelineMode::Sample)
     throw Error(ErrorKind::Usage, fmt::format("--sample only applies to --mode sample (got --mode {})", args.mode));

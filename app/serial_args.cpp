@@ -20,14 +20,14 @@ void addSerialOptions(CLI::App* cmd, io::SerialOptions& options, bool portRequir
   cmd->add_option_function<std::string>(
          "--flow", [&options](const std::string& text) { options.flow = io::parseFlowControl(text); },
          "Flow control: xonxoff (DC1/DC3, the Tektronix default), rtscts (hardware) or none [xonxoff]")
-      ->check(CLI::IsMember({"xonxoff", "rtscts", "none"}));
+      ->check(CLI::IsMember(nameList(io::kFlowControlNames)));
   cmd->add_option("--data-bits", options.dataBits, "Data bits per character: 7 or 8")
       ->capture_default_str()
       ->check(CLI::IsMember({7, 8}));
   cmd->add_option_function<std::string>(
          "--parity", [&options](const std::string& text) { options.parity = io::parseParity(text); },
          "Parity: none, even or odd [none]")
-      ->check(CLI::IsMember({"none", "even", "odd"}));
+      ->check(CLI::IsMember(nameList(io::kParityNames)));
   cmd->add_option("--stop-bits", options.stopBits, "Stop bits: 1 or 2")
       ->capture_default_str()
       ->check(CLI::IsMember({1, 2}));

@@ -13,6 +13,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace lattice {
 
@@ -36,6 +37,27 @@ std::string namesOf(const Table& table) {
   for (const auto& entry : table) {
     if (!names.empty()) names += ", ";
     names += entryName(entry);
+  }
+  return names;
+}
+
+// Every entry's name, in table order (for CLI11's IsMember check).
+template <class Table>
+std::vector<std::string> nameList(const Table& table) {
+  std::vector<std::string> names;
+  for (const auto& entry : table) names.emplace_back(entryName(entry));
+  return names;
+}
+
+// "a, b or c": the same names as a sentence, for "must be ..." messages.
+template <class Table>
+std::string choicesOf(const Table& table) {
+  std::string names;
+  std::size_t left = std::size(table);
+  for (const auto& entry : table) {
+    if (!names.empty()) names += left == 1 ? " or " : ", ";
+    names += entryName(entry);
+    --left;
   }
   return names;
 }

@@ -29,42 +29,18 @@ void SerialOptions::validate() const {
 }
 
 Parity parseParity(std::string_view text) {
-  if (text == "none") return Parity::None;
-  if (text == "even") return Parity::Even;
-  if (text == "odd") return Parity::Odd;
-  throw Error(ErrorKind::Usage, fmt::format("--parity {}: use none, even or odd", text));
+  if (const auto parity = valueNamed(kParityNames, text)) return *parity;
+  throw Error(ErrorKind::Usage, fmt::format("--parity {}: use {}", text, choicesOf(kParityNames)));
 }
 
 FlowControl parseFlowControl(std::string_view text) {
-  if (text == "none") return FlowControl::None;
-  if (text == "xonxoff") return FlowControl::XonXoff;
-  if (text == "rtscts") return FlowControl::RtsCts;
-  throw Error(ErrorKind::Usage, fmt::format("--flow {}: use xonxoff, rtscts or none", text));
+  if (const auto flow = valueNamed(kFlowControlNames, text)) return *flow;
+  throw Error(ErrorKind::Usage, fmt::format("--flow {}: use {}", text, choicesOf(kFlowControlNames)));
 }
 
-std::string_view toString(Parity parity) {
-  switch (parity) {
-    case Parity::Even:
-      return "even";
-    case Parity::Odd:
-      return "odd";
-    case Parity::None:
-      break;
-  }
-  return "none";
-}
+std::string_view toString(Parity parity) { return nameOfValue(kParityNames, parity, "none"); }
 
-std::string_view toString(FlowControl flow) {
-  switch (flow) {
-    case FlowControl::XonXoff:
-      return "xonxoff";
-    case FlowControl::RtsCts:
-      return "rtscts";
-    case FlowControl::None:
-      break;
-  }
-  return "none";
-}
+std::string_view toString(FlowControl flow) { return nameOfValue(kFlowControlNames, flow, "none"); }
 
 std::string serialFlags(const SerialOptions& options) {
   std::string flags = fmt::format("--port {} --baud {} --flow {}", options.port, options.baud, toString(options.flow));

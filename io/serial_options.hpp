@@ -2,6 +2,7 @@
 // How to reach a terminal over a serial line: the port and its line settings.
 // `lattice send` and `lattice render --port` take the same flags
 // (app/serial_args.hpp) and open the line with openSerialSink().
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -9,11 +10,24 @@
 #include <string_view>
 
 #include "foundation/line_timing.hpp"
+#include "foundation/name_table.hpp"
 
 namespace lattice::io {
 
 enum class Parity { None, Even, Odd };
 enum class FlowControl { None, XonXoff, RtsCts };
+
+// Their flag spellings (`--parity`, `--flow`), in the order help lists them.
+inline constexpr std::array<EnumName<Parity>, 3> kParityNames = {{
+    {Parity::None, "none"},
+    {Parity::Even, "even"},
+    {Parity::Odd, "odd"},
+}};
+inline constexpr std::array<EnumName<FlowControl>, 3> kFlowControlNames = {{
+    {FlowControl::XonXoff, "xonxoff"},
+    {FlowControl::RtsCts, "rtscts"},
+    {FlowControl::None, "none"},
+}};
 
 struct SerialOptions {
   std::string port = "auto";  // a device path, or "auto": the only USB-serial adapter

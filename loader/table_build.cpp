@@ -19,9 +19,11 @@ BuiltTable packTable(const LatticeObject& object, double lambda, double oversamp
                      LhtForm tableForm,
                      const std::function<LhtPrecision(std::uint64_t, std::uint64_t)>& chooseForm,
                      const std::function<std::uint64_t(LhtPrecision)>& hashFor) {
-  if (tableForm == LhtForm::OnDemand)
-    throw Error(ErrorKind::Usage, "an on-demand table is built while rendering, not rasterized; use --form hashed or "
-                                  "compressed");
+  const bool rasterized = withForm(
+      tableForm, [](auto i) { return RasterizedForm<FormAt<decltype(i)::value>>; }, [] { return false; });
+  if (!rasterized)
+    throw Error(ErrorKind::Usage, fmt::format("an {} table is built while rendering, not rasterized; use --form {}",
+                                              lhtFormName(tableForm), lhtFiledFormNames()));
   BuiltTable built;
   LhtFile& lht = built.lht;
   lht.box = LatticeBox(object.bounds, lambda, oversample);
@@ -34,10 +36,13 @@ BuiltTable packTable(const LatticeObject& object, double lambda, double oversamp
   lht.objectHash = hashFor(form);
   lht.pairs = raster.stats.pairs;
   lht.hits = raster.stats.hits;
-  if (tableForm == LhtForm::Compressed)
-    lht.table = CompressedTable(raster.hits, lht.box.cells(), form);
-  else
-    lht.table = LatticeHashTable(raster.hits, form);
+  withForm(
+      tableForm,
+      [&](auto i) {
+        if constexpr (RasterizedForm<FormAt<decltype(i)::value>>)
+          lht.table.emplace<decltype(i)::value>(FormAt<decltype(i)::value>::fromHits(raster.hits, lht.box.cells(), form));
+      },
+      [] {});
   return built;
 }
 

@@ -36,14 +36,7 @@ int colorBudget(const IndexedSink& sink, const PipelineOptions& options) {
 
 }  // namespace
 
-const char* pipelineModeName(PipelineMode mode) {
-  switch (mode) {
-    case PipelineMode::TwoPass: return "passes";
-    case PipelineMode::Frame: return "frame";
-    case PipelineMode::Sample: return "sample";
-  }
-  return "?";
-}
+std::string_view pipelineModeName(PipelineMode mode) { return nameOfValue(kPipelineModeNames, mode, "?"); }
 
 PipelineReport pipelineBuffers(int width, int height, const PipelineOptions& options) {
   const auto w = static_cast<std::size_t>(std::max(width, 0));

@@ -23,6 +23,12 @@
 namespace lattice::quantize {
 
 enum class PipelineMode { TwoPass, Frame, Sample };
+// Their spellings (`--mode`).
+inline constexpr std::array<EnumName<PipelineMode>, 3> kPipelineModeNames = {{
+    {PipelineMode::TwoPass, "passes"},
+    {PipelineMode::Frame, "frame"},
+    {PipelineMode::Sample, "sample"},
+}};
 
 struct PipelineOptions {
   PipelineMode mode = PipelineMode::TwoPass;
@@ -53,6 +59,6 @@ PipelineReport runPipeline(RowSource18& source, IndexedSink& sink, const Pipelin
 // fields of its report, before it runs): what --memory-budget plans with.
 PipelineReport pipelineBuffers(int width, int height, const PipelineOptions& options);
 
-const char* pipelineModeName(PipelineMode mode);
+std::string_view pipelineModeName(PipelineMode mode);
 
 }  // namespace lattice::quantize

@@ -2,8 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <array>
+
 #include "foundation/error.hpp"
 #include "foundation/key_value.hpp"
+#include "foundation/name_table.hpp"
 
 namespace lattice::tek4014 {
 namespace {
@@ -11,14 +14,15 @@ constexpr std::string_view kContext = "tek4014 profile";
 constexpr std::string_view kKeys = "bits, dither, baud";
 }  // namespace
 
-const char* ditherName(Tek4014Dither dither) {
-  switch (dither) {
-    case Tek4014Dither::FloydSteinberg: return "floyd-steinberg";
-    case Tek4014Dither::Ordered: return "ordered";
-    case Tek4014Dither::Threshold: return "threshold";
-  }
-  return "?";
-}
+namespace {
+constexpr std::array<EnumName<Tek4014Dither>, 3> kDitherNames = {{
+    {Tek4014Dither::FloydSteinberg, "floyd-steinberg"},
+    {Tek4014Dither::Ordered, "ordered"},
+    {Tek4014Dither::Threshold, "threshold"},
+}};
+}  // namespace
+
+std::string_view ditherName(Tek4014Dither dither) { return nameOfValue(kDitherNames, dither, "?"); }
 
 void applyOverride(Tek4014Profile& profile, std::string_view keyValue) {
   Tek4014Profile p = profile;  // a rejected override leaves the profile as it was
@@ -29,12 +33,11 @@ void applyOverride(Tek4014Profile& profile, std::string_view keyValue) {
       throw Error(ErrorKind::Usage, fmt::format("{}: bits={} must be 10 (1024x780) or 12 (4096x3120)", kContext,
                                                 kv.value));
   } else if (kv.key == "dither") {
-    if (kv.value == "floyd-steinberg") p.dither = Tek4014Dither::FloydSteinberg;
-    else if (kv.value == "ordered") p.dither = Tek4014Dither::Ordered;
-    else if (kv.value == "threshold") p.dither = Tek4014Dither::Threshold;
-    else
-      throw Error(ErrorKind::Usage, fmt::format("{}: dither={} must be floyd-steinberg, ordered or threshold",
-                                                kContext, kv.value));
+    const auto dither = valueNamed(kDitherNames, kv.value);
+    if (!dither)
+      throw Error(ErrorKind::Usage,
+                  fmt::format("{}: dither={} must be {}", kContext, kv.value, choicesOf(kDitherNames)));
+    p.dither = *dither;
   } else if (kv.key == "baud") {
     p.line.baud = parseIntSetting(kContext, kv);
     if (p.line.baud <= 0)

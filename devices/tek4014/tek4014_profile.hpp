@@ -36,7 +36,7 @@ struct Tek4014Profile {
   int shift() const { return addressBits == 12 ? 0 : 2; }
 };
 
-const char* ditherName(Tek4014Dither dither);
+std::string_view ditherName(Tek4014Dither dither);
 
 // One "key=value" from `--set` (keys: bits (10|12), dither
 // (floyd-steinberg|ordered|threshold), baud). Throws lattice::Error(Usage)

@@ -2,23 +2,34 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <iterator>
 
 #include "devices/tek4027/tek4027_pacing.hpp"
+#include "foundation/name_table.hpp"
 
 namespace lattice::tek4027 {
 
-const char* strategyName(Tek4027Strategy strategy) {
-  switch (strategy) {
-    case Tek4027Strategy::RowOrder: return "row-order";
-    case Tek4027Strategy::ColourOrder: return "colour-order";
-    case Tek4027Strategy::Chained: return "chained";
-    case Tek4027Strategy::ChainedRelative: return "chained-relative";
-    case Tek4027Strategy::Layered: return "layered";
-    case Tek4027Strategy::LayeredChained: return "layered-chained";
-    case Tek4027Strategy::Shortest: return "shortest";
-  }
-  return "?";
+namespace {
+constexpr std::array<EnumName<Tek4027Strategy>, 7> kStrategyNames = {{
+    {Tek4027Strategy::RowOrder, "row-order"},
+    {Tek4027Strategy::ColourOrder, "colour-order"},
+    {Tek4027Strategy::Chained, "chained"},
+    {Tek4027Strategy::ChainedRelative, "chained-relative"},
+    {Tek4027Strategy::Layered, "layered"},
+    {Tek4027Strategy::LayeredChained, "layered-chained"},
+    {Tek4027Strategy::Shortest, "shortest"},
+}};
+constexpr std::array<EnumName<Tek4027Orientation>, 3> kOrientationNames = {{
+    {Tek4027Orientation::Rows, "rows"},
+    {Tek4027Orientation::RowsUp, "rows-up"},
+    {Tek4027Orientation::Columns, "columns"},
+}};
+}  // namespace
+
+std::string_view strategyName(Tek4027Strategy strategy) { return nameOfValue(kStrategyNames, strategy, "?"); }
+std::string_view orientationName(Tek4027Orientation orientation) {
+  return nameOfValue(kOrientationNames, orientation, "?");
 }
 
 int percentFromLevel(std::uint8_t level) { return (level * 100 + 127) / 255; }
@@ -358,15 +369,6 @@ std::string encodeTek4027(const Tek4027Picture& picture, const Tek4027Profile& p
   }
   if (stats != nullptr) *stats = bestStats;
   return paceWithReports(std::move(best), profile);
-}
-
-const char* orientationName(Tek4027Orientation orientation) {
-  switch (orientation) {
-    case Tek4027Orientation::Rows: return "rows";
-    case Tek4027Orientation::RowsUp: return "rows-up";
-    case Tek4027Orientation::Columns: return "columns";
-  }
-  return "?";
 }
 
 }  // namespace lattice::tek4027

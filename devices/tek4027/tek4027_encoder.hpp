@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "devices/tek4027/tek4027_hls.hpp"
 #include "devices/tek4027/tek4027_profile.hpp"
@@ -25,7 +26,7 @@ enum class Tek4027Strategy {
   Shortest,         // all of the above, keep the shortest stream
 };
 
-const char* strategyName(Tek4027Strategy strategy);
+std::string_view strategyName(Tek4027Strategy strategy);
 
 // How the strategies walk the picture: its rows top first (horizontal
 // vectors, each step to the next row one down), its rows bottom first (each
@@ -33,7 +34,7 @@ const char* strategyName(Tek4027Strategy strategy);
 // (vertical vectors, steps `1 0`). All use the same command forms; Shortest
 // tries each.
 enum class Tek4027Orientation { Rows, RowsUp, Columns };
-const char* orientationName(Tek4027Orientation orientation);
+std::string_view orientationName(Tek4027Orientation orientation);
 
 struct Tek4027StreamStats {
   Tek4027Strategy strategy = Tek4027Strategy::Shortest;  // the one actually used

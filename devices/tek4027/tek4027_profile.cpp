@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cctype>
 
 #include "foundation/error.hpp"
 #include "foundation/key_value.hpp"
+#include "foundation/name_table.hpp"
 
 namespace lattice::tek4027 {
 
@@ -67,14 +69,13 @@ Tek4027Profile compactPreset() {
   return p;
 }
 
-const char* pacingName(Tek4027Pacing pacing) {
-  switch (pacing) {
-    case Tek4027Pacing::None: return "none";
-    case Tek4027Pacing::Report: return "report";
-    case Tek4027Pacing::Auto: return "auto";
-  }
-  return "?";
-}
+constexpr std::array<EnumName<Tek4027Pacing>, 3> kPacingNames = {{
+    {Tek4027Pacing::None, "none"},
+    {Tek4027Pacing::Report, "report"},
+    {Tek4027Pacing::Auto, "auto"},
+}};
+
+std::string_view pacingName(Tek4027Pacing pacing) { return nameOfValue(kPacingNames, pacing, "?"); }
 }  // namespace
 
 std::vector<std::string> tek4027PresetNames() { return {"strict", "compact"}; }
@@ -110,10 +111,11 @@ void applyOverride(Tek4027Profile& profile, std::string_view keyValue) {
     else if (value == "draw") p.rveFirstMoves = false;
     else throw Error(ErrorKind::Usage, fmt::format("{}: rve-first={} must be move or draw", kContext, value));
   } else if (key == "pacing") {
-    if (value == "none") p.pacing = Tek4027Pacing::None;
-    else if (value == "report") p.pacing = Tek4027Pacing::Report;
-    else if (value == "auto") p.pacing = Tek4027Pacing::Auto;
-    else throw Error(ErrorKind::Usage, fmt::format("{}: pacing={} must be none, report or auto", kContext, value));
+    const auto pacing = valueNamed(kPacingNames, value);
+    if (!pacing)
+      throw Error(ErrorKind::Usage,
+                  fmt::format("{}: pacing={} must be {}", kContext, value, choicesOf(kPacingNames)));
+    p.pacing = *pacing;
   }
   else if (key == "parity") {
     if (value == "none") p.line.parity = false;

@@ -6,10 +6,12 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "foundation/system/atomic_file.hpp"
 #include "foundation/error.hpp"
+#include "foundation/little_endian.hpp"
 #include "lht/file/chained_table.hpp"
 
 namespace lattice::lht {
@@ -31,9 +33,7 @@ class Writer {
   std::vector<std::uint8_t> out;
 
  private:
-  void uint(std::uint64_t v, int n) {
-    for (int i = 0; i < n; ++i) out.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-  }
+  void uint(std::uint64_t v, int n) { appendLittleEndian(out, v, n); }
 };
 
 // Reads within bounds the caller has already checked.
@@ -41,8 +41,7 @@ class Reader {
  public:
   explicit Reader(std::span<const std::uint8_t> b) : in(b) {}
   std::uint64_t uint(int n) {
-    std::uint64_t v = 0;
-    for (int i = 0; i < n; ++i) v |= std::uint64_t(in[at + i]) << (8 * i);
+    const std::uint64_t v = readLittleEndian(in.data() + at, n);
     at += static_cast<std::size_t>(n);
     return v;
   }
@@ -68,13 +67,16 @@ std::string precisionCodes() {
 }  // namespace
 
 std::vector<std::uint8_t> serializeLht(const LhtFile& lht) {
-  if (lht.form() == LhtForm::OnDemand)
-    throw Error(ErrorKind::Usage, "an on-demand table is built while rendering and never written to a .lht file; "
-                                  "rasterize it as hashed or compressed");
-  const bool compressed = lht.form() == LhtForm::Compressed;
+  const bool hashed = lht.form() == LhtForm::Hashed;
+  const bool inFiles = withForm(
+      lht.form(), [](auto i) { return FormAt<decltype(i)::value>::kInFiles; }, [] { return false; });
+  if (!inFiles)
+    throw Error(ErrorKind::Usage, fmt::format("an {} table is built while rendering and never written to a .lht file; "
+                                              "rasterize it as {}",
+                                              lhtFormName(lht.form()), lhtFiledFormNames()));
   Writer w;
-  w.bytes(kMagic, sizeof kMagic);
-  w.u32(compressed ? kLhtCompressedVersion : kLhtVersion);
+  w.out.assign(std::begin(kMagic), std::end(kMagic));
+  w.u32(hashed ? kLhtVersion : kLhtCompressedVersion);
   for (int a = 0; a < 3; ++a) w.u16(static_cast<std::uint16_t>(lht.box.cells()[a]));
   w.u16(static_cast<std::uint16_t>(lht.precision()));
   w.f64(lht.box.lambda());
@@ -83,23 +85,29 @@ std::vector<std::uint8_t> serializeLht(const LhtFile& lht) {
   w.u64(lht.objectHash);
   w.u64(lht.pairs);
   w.u64(lht.hits);
-  if (compressed) {
-    const CompressedTable& c = lht.compressed();
-    w.u64(c.entryCount());
-    w.u64(c.bitCount());
-    w.u64(c.words().size());
-    w.u16(static_cast<std::uint16_t>(LhtForm::Compressed));
-    w.u16(static_cast<std::uint16_t>(c.layout()));
-    w.u32(0);
-    w.out.reserve(w.out.size() + c.bitmapBytes() + c.payloads().size() + 8);
-    for (std::uint64_t word : c.words()) w.u64(word);
-    w.bytes(c.payloads().data(), c.payloads().size());
-  } else {
+  if (hashed) {
     const LatticeHashTable& t = lht.hashed();
     w.u64(t.entryCount());
     w.u64(t.capacity());
     w.u64(t.capacity());
     w.bytes(t.slotView().data(), t.slotView().size());
+  } else {
+    // Version 3: the form's own numbers and body.
+    std::visit(
+        [&](const auto& alternative) {
+          const auto& table = formTable(alternative);
+          if constexpr (FiledForm<std::decay_t<decltype(table)>>) {
+            const LhtBodyHeader h = table.bodyHeader();
+            w.u64(h.entries);
+            w.u64(h.countA);
+            w.u64(h.countB);
+            w.u16(static_cast<std::uint16_t>(lht.form()));
+            w.u16(h.layout);
+            w.u32(0);
+            table.appendBody(w.out);
+          }
+        },
+        lht.table);
   }
   w.u64(fnv1a64(w.out));
   return std::move(w.out);
@@ -116,39 +124,16 @@ struct LhtHeader {
   std::array<int, 3> cells{};
   LhtPrecision precision = LhtPrecision::Thesis;
   LhtForm form = LhtForm::Hashed;
-  PairLayout layout = PairLayout::Symmetric;
+  std::uint16_t layout = 0;
   std::size_t stride = 0;
   double lambda = 0, oversample = 0;
   Vec3d origin{0.0};
   std::uint64_t objectHash = 0, pairs = 0, hits = 0, entries = 0, buckets = 0, slots = 0;
   std::uint64_t bodyBytes = 0;  // between the header and the checksum
-};
 
-// The compressed body's counts against the file's size (version 3).
-void checkCompressedSizes(LhtHeader& h, std::uint64_t size, const std::string& name) {
-  for (int a = 0; a < 3; ++a)
-    if (h.cells[a] < 1 || h.cells[a] > kMaxCells)
-      throw bad(name, fmt::format("lattice cell count {} along {} is outside 1..{}", h.cells[a], "xyz"[a], kMaxCells));
-  std::uint64_t bits = 0;
-  try {
-    bits = CompressedTable::bitmapBits(h.cells, h.layout);
-  } catch (const Error& e) {
-    throw bad(name, e.what());
-  }
-  const std::uint64_t words = (bits + 63) / 64;
-  if (h.buckets != bits || h.slots != words)
-    throw bad(name, fmt::format("its header gives a bitmap of {} bits in {} words, but a {} x {} x {} lattice's pair "
-                                "space has {} bits in {} words",
-                                h.buckets, h.slots, h.cells[0], h.cells[1], h.cells[2], bits, words));
-  const std::uint64_t room = size - h.headerBytes - 8;
-  const std::uint64_t payload = payloadBytes(h.precision);
-  if (words > room / 8 || h.entries > (room - words * 8) / payload ||
-      words * 8 + h.entries * payload != room)
-    throw bad(name, fmt::format("truncated or padded: {} bytes, but its header describes a {}-word bitmap and {} "
-                                "payloads of {} bytes",
-                                size, words, h.entries, payload));
-  h.bodyBytes = room;
-}
+  // What a version-3 form reads its body with.
+  LhtBodyHeader body() const { return {cells, precision, entries, buckets, slots, layout}; }
+};
 
 // `prefix` holds the first bytes of the file (up to the header's 108 or
 // 116), `size` the file's whole size: enough to refuse junk before reading
@@ -196,15 +181,28 @@ LhtHeader parseHeader(std::span<const std::uint8_t> prefix, std::uint64_t size, 
     const auto formCode = static_cast<std::uint16_t>(r.uint(2));
     const auto layoutCode = static_cast<std::uint16_t>(r.uint(2));
     const auto form = lhtFormFromCode(formCode);
-    if (!form || *form == LhtForm::OnDemand)
-      throw bad(name, fmt::format("unknown LHT form code {} at byte 108 (this program knows 0 hashed, 1 compressed)",
-                                  formCode));
+    if (!form)
+      throw bad(name, fmt::format("unknown LHT form code {} at byte 108 (this program knows {})", formCode,
+                                  lhtFiledFormCodes()));
     if (layoutCode > static_cast<std::uint16_t>(PairLayout::Ordered))
       throw bad(name, fmt::format("unknown pair layout code {} at byte 110 (0 symmetric, 1 ordered)", layoutCode));
     h.form = *form;
-    h.layout = static_cast<PairLayout>(layoutCode);
-    if (h.form == LhtForm::Compressed) {
-      checkCompressedSizes(h, size, name);
+    h.layout = layoutCode;
+    if (h.form != LhtForm::Hashed) {
+      const std::uint64_t room = size - h.headerBytes - 8;
+      try {
+        h.bodyBytes = withForm(
+            h.form,
+            [&](auto i) -> std::uint64_t {
+              if constexpr (FiledForm<FormAt<decltype(i)::value>>)
+                return FormAt<decltype(i)::value>::bodyBytes(h.body(), room);
+              else
+                return 0;
+            },
+            [] { return std::uint64_t{0}; });
+      } catch (const Error& e) {
+        throw bad(name, e.what());
+      }
       return h;
     }
   }
@@ -247,13 +245,14 @@ LhtFile assemble(const LhtHeader& h, std::vector<std::uint8_t> body, const std::
     lht.objectHash = h.objectHash;
     lht.pairs = h.pairs;
     lht.hits = h.hits;
-    if (h.form == LhtForm::Compressed) {
-      std::vector<std::uint64_t> words(h.slots);
-      Reader r(body);
-      for (std::uint64_t& word : words) word = r.uint(8);
-      std::vector<std::uint8_t> payloads(body.begin() + static_cast<std::ptrdiff_t>(r.at), body.end());
-      std::vector<std::uint8_t>().swap(body);
-      lht.table = CompressedTable(h.cells, h.precision, h.layout, std::move(words), std::move(payloads), h.entries);
+    if (h.form != LhtForm::Hashed) {
+      withForm(
+          h.form,
+          [&](auto i) {
+            if constexpr (FiledForm<FormAt<decltype(i)::value>>)
+              lht.table.emplace<decltype(i)::value>(FormAt<decltype(i)::value>::fromBody(h.body(), std::move(body)));
+          },
+          [] {});
     } else {
       lht.table = h.version == kLhtVersion ? LatticeHashTable(h.precision, std::move(body), h.buckets, h.entries)
                                            : readChainedTable(h.precision, body, h.buckets, h.entries);

@@ -38,10 +38,12 @@
 //      112    4  reserved, 0
 //   hashed: fields 92 and 100 and the slots as in version 2, from byte 116
 //   (read, never written: hashed tables are written as version 4).
+//   any other form (lht/table/table_forms.hpp): fields 84, 92, 100 and 110
+//   are its LhtBodyHeader, and its body runs from byte 116 to the checksum.
 //   compressed: field 92 holds the bitmap's bits (which the cells and the
 //   layout decide; a mismatch is refused) and field 100 its 64-bit words;
-//   from byte 116 the words (8 bytes each), then `entries` payloads of
-//   payloadBytes(precision) bytes, then the checksum.
+//   the body is the words (8 bytes each), then `entries` payloads of
+//   payloadBytes(precision) bytes.
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -54,10 +56,7 @@
 
 #include "foundation/fnv1a.hpp"
 #include "lht/grid/lattice_box.hpp"
-#include "lht/table/compressed_table.hpp"
-#include "lht/table/lht_form.hpp"
-#include "lht/table/on_demand_table.hpp"
-#include "lht/table/hash_table.hpp"
+#include "lht/table/table_forms.hpp"
 
 namespace lattice::lht {
 
@@ -66,28 +65,12 @@ inline constexpr std::uint32_t kLhtCompressedVersion = 3;  // compressed tables 
 inline constexpr std::size_t kLhtHeaderBytes = 108;
 inline constexpr std::size_t kLhtHeaderBytesV3 = 116;
 
-// The table in one of its forms. The alternative's index is its LhtForm code
-// (lht/table/lht_form.hpp), so the form is never stored apart from the table it
-// names. A new form is one alternative here, its name in lht_form.cpp, and
-// its body in lht_file.cpp; everything else asks the variant.
-using LhtTable = std::variant<LatticeHashTable, CompressedTable, std::shared_ptr<const OnDemandTable>>;
-static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(LhtForm::Hashed), LhtTable>,
-                             LatticeHashTable>);
-static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(LhtForm::Compressed), LhtTable>,
-                             CompressedTable>);
-static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(LhtForm::OnDemand), LhtTable>,
-                             std::shared_ptr<const OnDemandTable>>);
-
-// The table object behind an alternative (the on-demand one is shared, since
-// it grows while several renders read it).
-template <class Table>
-const Table& formTable(const Table& table) {
-  return table;
-}
-template <class Table>
-const Table& formTable(const std::shared_ptr<const Table>& table) {
-  return *table;
-}
+// The table is one of the forms of lht/table/table_forms.hpp's list; the
+// alternative's index is its LhtForm code, so the form is never stored apart
+// from the table it names. The named forms' positions:
+static_assert(std::is_same_v<FormAt<static_cast<std::size_t>(LhtForm::Hashed)>, LatticeHashTable>);
+static_assert(std::is_same_v<FormAt<static_cast<std::size_t>(LhtForm::Compressed)>, CompressedTable>);
+static_assert(std::is_same_v<FormAt<static_cast<std::size_t>(LhtForm::OnDemand)>, OnDemandTable>);
 
 struct LhtFile {
   std::uint32_t version = kLhtVersion;  // as read; written: kLhtVersion, or kLhtCompressedVersion when compressed

@@ -24,6 +24,7 @@ class BoundaryIndex {
   explicit BoundaryIndex(const std::array<int, 3>& cells);
 
   std::uint32_t count() const { return count_; }
+  std::array<int, 3> cells() const { return {nx_, ny_, nz_}; }
   // The point's number, or kNotOnBoundary for a point inside or outside the box.
   std::uint32_t indexOf(const LatticePoint& p) const {
     const int x = p.x, y = p.y, z = p.z;

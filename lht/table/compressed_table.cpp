@@ -6,6 +6,8 @@
 #include <bit>
 
 #include "foundation/error.hpp"
+#include "foundation/little_endian.hpp"
+#include "lht/grid/lattice_box.hpp"
 
 namespace lattice::lht {
 
@@ -125,6 +127,65 @@ std::optional<LhtHit> CompressedTable::find(const LatticePoint& in, const Lattic
   const std::uint8_t* payload = findPayload(in, out);
   if (!payload) return std::nullopt;
   return toHit(decodePayloadIntegers(payload, precision_));
+}
+
+std::vector<std::string> CompressedTable::describe(std::uint64_t hits) const {
+  return {
+      fmt::format("pair layout:   {} ({} bits)",
+                  layout_ == PairLayout::Symmetric ? "symmetric, one bit per unordered pair, two payloads a bit"
+                                                   : "ordered, one bit per ordered pair",
+                  bits_),
+      fmt::format("table bytes:   {} ({:.2f} bytes/entry, {:.2f} per N_iz): bitmap {}, rank directory {}, payloads {} "
+                  "({} bytes each)",
+                  bytes(), bytesPerEntry(), hits ? double(bytes()) / double(hits) : 0.0, bitmapBytes(), rankBytes(),
+                  payloads_.size(), payloadBytes(precision_)),
+  };
+}
+
+LhtBodyHeader CompressedTable::bodyHeader() const {
+  LhtBodyHeader h;
+  h.cells = index_.cells();
+  h.precision = precision_;
+  h.entries = entries_;
+  h.countA = bits_;
+  h.countB = words_.size();
+  h.layout = static_cast<std::uint16_t>(layout_);
+  return h;
+}
+
+void CompressedTable::appendBody(std::vector<std::uint8_t>& out) const {
+  out.reserve(out.size() + bitmapBytes() + payloads_.size() + 8);
+  for (std::uint64_t word : words_) appendLittleEndian(out, word, 8);
+  out.insert(out.end(), payloads_.begin(), payloads_.end());
+}
+
+std::uint64_t CompressedTable::bodyBytes(const LhtBodyHeader& h, std::uint64_t room) {
+  for (int a = 0; a < 3; ++a)
+    if (h.cells[a] < 1 || h.cells[a] > kMaxCells)
+      throw Error(ErrorKind::Input,
+                  fmt::format("lattice cell count {} along {} is outside 1..{}", h.cells[a], "xyz"[a], kMaxCells));
+  const std::uint64_t bits = bitmapBits(h.cells, static_cast<PairLayout>(h.layout));
+  const std::uint64_t words = (bits + 63) / 64;
+  if (h.countA != bits || h.countB != words)
+    throw Error(ErrorKind::Input,
+                fmt::format("its header gives a bitmap of {} bits in {} words, but a {} x {} x {} lattice's pair "
+                            "space has {} bits in {} words",
+                            h.countA, h.countB, h.cells[0], h.cells[1], h.cells[2], bits, words));
+  const std::uint64_t payload = payloadBytes(h.precision);
+  if (words > room / 8 || h.entries > (room - words * 8) / payload || words * 8 + h.entries * payload != room)
+    throw Error(ErrorKind::Input, fmt::format("truncated or padded: {} bytes for its body, but its header describes a "
+                                              "{}-word bitmap and {} payloads of {} bytes",
+                                              room, words, h.entries, payload));
+  return room;
+}
+
+CompressedTable CompressedTable::fromBody(const LhtBodyHeader& h, std::vector<std::uint8_t> body) {
+  std::vector<std::uint64_t> words(h.countB);
+  for (std::size_t w = 0; w < words.size(); ++w) words[w] = readLittleEndian(body.data() + 8 * w, 8);
+  std::vector<std::uint8_t> payloads(body.begin() + static_cast<std::ptrdiff_t>(8 * words.size()), body.end());
+  std::vector<std::uint8_t>().swap(body);
+  return CompressedTable(h.cells, h.precision, static_cast<PairLayout>(h.layout), std::move(words),
+                         std::move(payloads), h.entries);
 }
 
 }  // namespace lattice::lht

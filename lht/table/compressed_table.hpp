@@ -24,10 +24,13 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "lht/grid/boundary_index.hpp"
 #include "lht/table/entry_codec.hpp"
+#include "lht/table/lht_form.hpp"
 #include "lht/raster/rasterize.hpp"
 
 namespace lattice::lht {
@@ -39,6 +42,24 @@ enum class PairLayout : std::uint16_t {
 
 class CompressedTable {
  public:
+  // Its entry in the form list (lht/table/table_forms.hpp).
+  static constexpr std::string_view kFormName = "compressed";
+  static constexpr std::string_view kFormSummary = "compressed (no key, no chain: a rank bitmap over the pair space)";
+  static constexpr bool kInFiles = true;
+  static CompressedTable fromHits(const RasterHits& hits, const std::array<int, 3>& cells, LhtPrecision precision) {
+    return CompressedTable(hits, cells, precision);
+  }
+  std::vector<std::string> describe(std::uint64_t hits) const;
+
+  // Its .lht body (version 3): countA the bitmap's bits, countB its words,
+  // layout the PairLayout; the body the words (8 bytes each, little-endian),
+  // then the payloads.
+  LhtBodyHeader bodyHeader() const;
+  void appendBody(std::vector<std::uint8_t>& out) const;
+  // The body's bytes (`room` is what the file has for it), or Error(Input).
+  static std::uint64_t bodyBytes(const LhtBodyHeader& header, std::uint64_t room);
+  static CompressedTable fromBody(const LhtBodyHeader& header, std::vector<std::uint8_t> body);
+
   static constexpr std::uint64_t kMaxBitmapBits = std::uint64_t(1) << 34;
   static constexpr std::uint64_t kBlockWords = 8;  // rank directory granularity (512 bits)
 

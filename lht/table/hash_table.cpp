@@ -166,4 +166,19 @@ ProbeStats LatticeHashTable::probeStats() const {
   return stats;
 }
 
+std::vector<std::string> LatticeHashTable::describe(std::uint64_t /*hits*/) const {
+  std::vector<std::string> lines;
+  lines.push_back(fmt::format("layout:        open addressing, linear probing, {} slots", capacity()));
+  lines.push_back(fmt::format("load factor:   {:.3f} of the slots used", loadFactor()));
+  lines.push_back(fmt::format("table bytes:   {} ({:.2f} bytes/entry, {} bytes per slot)", bytes(), bytesPerEntry(),
+                              entryStride()));
+  const ProbeStats probes = probeStats();
+  lines.push_back(fmt::format("probes:        a hit reads {:.2f} slots on average, a miss {:.2f}; longest displacement {}",
+                              probes.meanHitSlots, probes.meanMissSlots, probes.longestProbe));
+  for (std::size_t k = 0; k < probes.displacementHistogram.size(); ++k)
+    if (probes.displacementHistogram[k])
+      lines.push_back(fmt::format("  {:>3} past home: {} entries", k, probes.displacementHistogram[k]));
+  return lines;
+}
+
 }  // namespace lattice::lht

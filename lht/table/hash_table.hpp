@@ -37,8 +37,11 @@
 //   brings a miss to about the same (unordered: (1 + 1/(1-a)^2)/2, 6.1).
 // * The same layout in memory, in a version-4 .lht file and in the
 //   firmware's flash (read in place, docs/firmware.md).
+#include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
+#include <string_view>
 #include <span>
 #include <vector>
 
@@ -59,6 +62,17 @@ struct ProbeStats {
 
 class LatticeHashTable {
  public:
+  // Its entry in the form list (lht/table/table_forms.hpp).
+  static constexpr std::string_view kFormName = "hashed";
+  static constexpr std::string_view kFormSummary = "hashed (open-addressed: key, payload)";
+  static constexpr bool kInFiles = true;  // as version 4 (and 1-3, read): lht/file/lht_file.cpp
+  static LatticeHashTable fromHits(const RasterHits& hits, const std::array<int, 3>& /*cells*/,
+                                   LhtPrecision precision) {
+    return LatticeHashTable(hits, precision);
+  }
+  // `lattice lht-info`'s lines: layout, load, bytes, probe lengths.
+  std::vector<std::string> describe(std::uint64_t hits) const;
+
   static constexpr double kMaxLoad = 0.7;
   static constexpr int kMissSamples = 4096;
   static constexpr std::uint64_t kMaxCapacity = std::uint64_t(1) << 32;  // homeOf's 32-bit product

@@ -2,30 +2,59 @@
 
 #include <fmt/format.h>
 
-#include <array>
-
 #include "foundation/error.hpp"
-#include "foundation/name_table.hpp"
+#include "lht/table/table_forms.hpp"
 
 namespace lattice::lht {
 
 namespace {
 
-constexpr std::array<EnumName<LhtForm>, 3> kForms = {{
-    {LhtForm::Hashed, "hashed"},
-    {LhtForm::Compressed, "compressed"},
-    {LhtForm::OnDemand, "on-demand"},
-}};
+// Whether .lht files hold the form whose code is `code`.
+bool inFiles(std::size_t code) {
+  return withForm(
+      static_cast<LhtForm>(code), [](auto i) { return FormAt<decltype(i)::value>::kInFiles; }, [] { return false; });
+}
 
 }  // namespace
 
-std::string_view lhtFormName(LhtForm form) { return nameOfValue(kForms, form); }
+std::string_view lhtFormName(LhtForm form) {
+  const auto code = static_cast<std::size_t>(form);
+  return code < kLhtFormNames.size() ? kLhtFormNames[code] : std::string_view("unknown");
+}
 
-std::string lhtFormChoices() { return namesOf(kForms); }
+std::string lhtFormChoices() {
+  std::string names;
+  for (std::string_view name : kLhtFormNames) names += fmt::format("{}{}", names.empty() ? "" : ", ", name);
+  return names;
+}
 
-std::optional<LhtForm> lhtFormFromName(std::string_view name) { return valueNamed(kForms, name); }
+std::optional<LhtForm> lhtFormFromName(std::string_view name) {
+  for (std::size_t code = 0; code < kLhtFormNames.size(); ++code)
+    if (kLhtFormNames[code] == name) return static_cast<LhtForm>(code);
+  return std::nullopt;
+}
 
-std::optional<LhtForm> lhtFormFromCode(std::uint16_t code) { return valueWithCode(kForms, code); }
+std::optional<LhtForm> lhtFormFromCode(std::uint16_t code) {
+  if (code < kLhtFormCount && inFiles(code)) return static_cast<LhtForm>(code);
+  return std::nullopt;
+}
+
+std::string lhtFiledFormCodes() {
+  std::string codes;
+  for (std::size_t code = 0; code < kLhtFormCount; ++code)
+    if (inFiles(code)) codes += fmt::format("{}{} {}", codes.empty() ? "" : ", ", code, kLhtFormNames[code]);
+  return codes;
+}
+
+std::string lhtFiledFormNames() {
+  std::vector<std::string_view> names;
+  for (std::size_t code = 0; code < kLhtFormCount; ++code)
+    if (inFiles(code)) names.push_back(kLhtFormNames[code]);
+  std::string text;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    text += fmt::format("{}{}", k == 0 ? "" : k + 1 == names.size() ? " or " : ", ", names[k]);
+  return text;
+}
 
 LhtForm parseLhtForm(std::string_view name, std::string_view what) {
   if (const auto form = lhtFormFromName(name)) return *form;

@@ -11,11 +11,17 @@
 //               time it is asked and its hit or miss kept, within a bound
 //               (thesis sec. 5.2.2; lht/table/on_demand_table.hpp); never a file
 //
-// The values are the codes of a version-3 .lht header (lht/file/lht_file.hpp).
+// The values are the codes of a version-3 .lht header (lht/file/lht_file.hpp)
+// and the forms' positions in the one list of them, LhtTable
+// (lht/table/table_forms.hpp), from which the names come. The enum names the
+// forms that code refers to; a new form needs no name here.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
+
+#include "lht/table/lht_precision.hpp"
 
 namespace lattice::lht {
 
@@ -25,10 +31,25 @@ enum class LhtForm : std::uint16_t {
   OnDemand = 2,  // in memory only: a .lht file never holds this code
 };
 
+// What a version-3 .lht header holds for a form's body (the fields at bytes
+// 84, 92, 100 and 110; lht/file/lht_file.hpp), besides the lattice's cells
+// and the entry precision every form has.
+struct LhtBodyHeader {
+  std::array<int, 3> cells{};
+  LhtPrecision precision = LhtPrecision::Thesis;
+  std::uint64_t entries = 0;
+  std::uint64_t countA = 0;   // byte 92: the form's first count (compressed: bitmap bits)
+  std::uint64_t countB = 0;   // byte 100: its second (compressed: bitmap words)
+  std::uint16_t layout = 0;   // byte 110: its layout code (compressed: PairLayout)
+};
+
 std::string_view lhtFormName(LhtForm form);
 std::string lhtFormChoices();  // "hashed, compressed, on-demand"
 std::optional<LhtForm> lhtFormFromName(std::string_view name);
+// A form .lht files hold (version 3), by its code; none for another.
 std::optional<LhtForm> lhtFormFromCode(std::uint16_t code);
+std::string lhtFiledFormCodes();  // "0 hashed, 1 compressed"
+std::string lhtFiledFormNames();  // "hashed or compressed"
 // Throws lattice::Error(Usage) naming `what` and the valid names.
 LhtForm parseLhtForm(std::string_view name, std::string_view what = "LHT form");
 

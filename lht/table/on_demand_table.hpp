@@ -30,6 +30,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -49,6 +50,12 @@ struct OnDemandCounts {
 
 class OnDemandTable {
  public:
+  // Its entry in the form list (lht/table/table_forms.hpp): built while
+  // rendering, never rasterized, never in a file.
+  static constexpr std::string_view kFormName = "on-demand";
+  static constexpr std::string_view kFormSummary = "on-demand (traced at the first look-up of each pair)";
+  static constexpr bool kInFiles = false;
+
   static constexpr std::size_t kShards = 64;
   static constexpr std::uint64_t kStoredBytes = 48;
   static constexpr std::uint64_t kMaxMissBits = std::uint64_t(1) << 30;
