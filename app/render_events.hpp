@@ -2,7 +2,7 @@
 // What a render did along the way, told to whoever runs it: the render job
 // (app/render_job.hpp) and its memory budget (app/render_budget.hpp) raise
 // these events in the order they happen and never print; `lattice render`
-// (app/cmd_render.cpp) says them on stderr, a test or benchmark may keep or
+// (app/commands/cmd_render.cpp) says them on stderr, a test or benchmark may keep or
 // ignore them. An event is raised when it happens, not returned at the end,
 // so that what was said before an error is still said.
 #include <cstdint>

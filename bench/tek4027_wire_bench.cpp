@@ -44,7 +44,7 @@ constexpr Tek4027Strategy kStrategies[] = {
     Tek4027Strategy::ChainedRelative, Tek4027Strategy::Layered,     Tek4027Strategy::LayeredChained,
     Tek4027Strategy::Shortest};
 
-// The CLI's fitting rule (app/cmd_render.cpp, renderSettings).
+// The CLI's fitting rule (app/commands/cmd_render.cpp, renderSettings).
 std::pair<int, int> fitted(int w, int h, int deviceW, int deviceH) {
   if (w <= deviceW && h <= deviceH) return {w, h};
   const double scale = std::min(double(deviceW) / w, double(deviceH) / h);

@@ -1,7 +1,7 @@
 #pragma once
 // How to reach a terminal over a serial line: the port and its line settings.
 // `lattice send` and `lattice render --port` take the same flags
-// (app/serial_args.hpp) and open the line with openSerialSink().
+// (app/cli/serial_args.hpp) and open the line with openSerialSink().
 #include <array>
 #include <cstdint>
 #include <filesystem>

@@ -46,6 +46,9 @@ declare -A within=(
   [lht/leaf]="lht/file lht/table lht/raster lht/grid"
   [devices/*]="devices"
   [devices]="devices/*"
+  [app/cli]="app"
+  [app/commands]="app/cli app"
+  [app]=""
 )
 
 # The unit a path belongs to, left in $unit: its layer, or layer/sub-folder

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "app/did_you_mean.hpp"
+#include "app/cli/did_you_mean.hpp"
 #include "tests/support/run_lattice.hpp"
 #include "tests/support/temp_dir.hpp"
 

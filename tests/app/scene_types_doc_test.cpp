@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "app/scene_types_doc.hpp"
+#include "app/cli/scene_types_doc.hpp"
 #include "foundation/system/atomic_file.hpp"
 #include "tests/support/golden.hpp"
 

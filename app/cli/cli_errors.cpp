@@ -1,4 +1,4 @@
-#include "app/cli_errors.hpp"
+#include "app/cli/cli_errors.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <optional>
 
-#include "app/did_you_mean.hpp"
+#include "app/cli/did_you_mean.hpp"
 
 namespace lattice::app {
 namespace {

@@ -12,11 +12,11 @@
 #include <variant>
 #include <vector>
 
-#include "app/commands.hpp"
-#include "app/pipeline_args.hpp"
+#include "app/commands/commands.hpp"
+#include "app/cli/pipeline_args.hpp"
 #include "app/render_job.hpp"
-#include "app/serial_args.hpp"
-#include "app/wire_args.hpp"
+#include "app/cli/serial_args.hpp"
+#include "app/cli/wire_args.hpp"
 #include "app/terminal_stream.hpp"
 #include "devices/apollo_sim/apollo_profile.hpp"
 #include "devices/device_table.hpp"

@@ -2,7 +2,7 @@
 // hash, the thesis's N_lp / N_iz, and how well the hash table is packed.
 #include <fmt/format.h>
 
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "lht/grid/boundary_index.hpp"
 #include "lht/file/lht_file.hpp"
 

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "exporter/pov_export.hpp"
 
 namespace {

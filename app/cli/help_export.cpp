@@ -1,4 +1,4 @@
-#include "app/help_export.hpp"
+#include "app/cli/help_export.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -6,7 +6,7 @@
 #include <map>
 #include <vector>
 
-#include "app/cli_errors.hpp"
+#include "app/cli/cli_errors.hpp"
 
 namespace lattice::app {
 namespace {

@@ -1,4 +1,4 @@
-#include "app/wire_args.hpp"
+#include "app/cli/wire_args.hpp"
 
 #include "foundation/system/resident_memory.hpp"
 #include "foundation/error.hpp"

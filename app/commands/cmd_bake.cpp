@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "app/commands.hpp"
-#include "app/pipeline_args.hpp"
+#include "app/commands/commands.hpp"
+#include "app/cli/pipeline_args.hpp"
 #include "app/scene_bake.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/system/atomic_file.hpp"

@@ -1,4 +1,4 @@
-#include "app/scene_types_doc.hpp"
+#include "app/cli/scene_types_doc.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

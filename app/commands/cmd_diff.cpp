@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "io/image_metrics.hpp"
 #include "io/png.hpp"
 #include "foundation/error.hpp"

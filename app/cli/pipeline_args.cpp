@@ -1,4 +1,4 @@
-#include "app/pipeline_args.hpp"
+#include "app/cli/pipeline_args.hpp"
 
 #include <fmt/format.h>
 

@@ -4,7 +4,7 @@
 
 #include <optional>
 
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "foundation/error.hpp"
 #include "loader/table_build.hpp"
 

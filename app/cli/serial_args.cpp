@@ -1,4 +1,4 @@
-#include "app/serial_args.hpp"
+#include "app/cli/serial_args.hpp"
 
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "app/did_you_mean.hpp"
+#include "app/cli/did_you_mean.hpp"
 
 #include <algorithm>
 

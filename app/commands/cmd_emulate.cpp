@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "app/stream_check.hpp"
 #include "app/stream_points.hpp"
 #include "devices/device_table.hpp"

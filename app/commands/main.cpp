@@ -1,4 +1,4 @@
-// The `lattice` command. Subcommands live in app/cmd_*.cpp; exit codes are
+// The `lattice` command. Subcommands live in app/commands/cmd_*.cpp; exit codes are
 // documented in docs/cli.md and defined by lattice::ErrorKind.
 #include <fmt/format.h>
 
@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "app/cli_errors.hpp"
-#include "app/commands.hpp"
-#include "app/help_export.hpp"
+#include "app/cli/cli_errors.hpp"
+#include "app/commands/commands.hpp"
+#include "app/cli/help_export.hpp"
 #include "app/output_check.hpp"
 #include "foundation/system/atomic_file.hpp"
 #include "foundation/error.hpp"
@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
   root.footer("Run `lattice COMMAND --help` for a command's options. Exit codes: docs/cli.md.");
   for (auto adder : lattice::app::kCommands) adder(root);
   lattice::app::guardOutputs(root);
-  // The build's man page and completion (app/help_export.hpp); hidden flags.
+  // The build's man page and completion (app/cli/help_export.hpp); hidden flags.
   if (argc == 3 && (std::string_view(argv[1]) == "--generate-man" ||
                     std::string_view(argv[1]) == "--generate-bash-completion")) {
     try {

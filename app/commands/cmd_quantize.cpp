@@ -7,8 +7,8 @@
 #include <memory>
 #include <string>
 
-#include "app/commands.hpp"
-#include "app/pipeline_args.hpp"
+#include "app/commands/commands.hpp"
+#include "app/cli/pipeline_args.hpp"
 #include "io/png.hpp"
 #include "foundation/indexed_image.hpp"
 #include "foundation/rgb_image_source.hpp"

@@ -2,7 +2,7 @@
 // intersections found) and prints it beside the published numbers.
 #include <fmt/format.h>
 
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "lht/raster/thesis_table1.hpp"
 
 namespace {

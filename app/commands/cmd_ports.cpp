@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "io/port_discovery.hpp"
 #include "io/usb_hotplug.hpp"
 #include "foundation/error.hpp"

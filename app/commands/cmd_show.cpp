@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "devices/device_table.hpp"
 #include "devices/sixel/sixel_driver.hpp"
 #include "devices/work_budget.hpp"

@@ -9,9 +9,9 @@
 #include <string_view>
 #include <vector>
 
-#include "app/commands.hpp"
+#include "app/commands/commands.hpp"
 #include "app/output_check.hpp"
-#include "app/serial_args.hpp"
+#include "app/cli/serial_args.hpp"
 #include "app/virtual_terminal.hpp"
 #include "devices/device_table.hpp"
 #include "devices/work_budget.hpp"

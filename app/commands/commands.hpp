@@ -1,5 +1,5 @@
 #pragma once
-// The `lattice` subcommands: one app/cmd_<name>.cpp each, which defines the
+// The `lattice` subcommands: one app/commands/cmd_<name>.cpp each, which defines the
 // command's flags and calls one library function. main.cpp adds them from
 // the one table below (no registration side effects), so the list of
 // commands is read in one place. A callback reports failure by throwing
