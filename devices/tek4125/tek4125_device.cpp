@@ -68,6 +68,7 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
     return false;
   };
   d.runCost = [profile](const IndexedImage& picture) { return tek4125RunCost(profile, picture); };
+  if (profile.formSet().fullXy) d.wireSettings = {"xy-short=on"};  // compact's short xy already goes further
   return d;
 }
 

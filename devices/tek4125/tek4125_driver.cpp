@@ -76,7 +76,8 @@ int Tek4125Driver::mostFrequentIndex() const {
 }
 
 void Tek4125Driver::encode(const Tek4125DriverOptions& options, ByteSink& sink, Tek4125StreamStats& stats) const {
-  const Tek4125Forms& forms = profile_.formSet();
+  Tek4125Forms forms = profile_.formSet();
+  forms.shortHighXy = forms.fullXy && profile_.xyShort;  // the short forms of compact already go further
   const int reserved = profile_.reserved;
   const int paletteSize = static_cast<int>(frame_.palette.size());
   const int width = frame_.width, height = frame_.height;

@@ -39,6 +39,11 @@ struct Tek4125Forms {
   int maxRunCode = 65535;           // largest RL run code (length * 2^bits + index)
   bool beamContinues = false;       // an RP or RL may follow the other kind without a new RH
   bool rasterOnlyAtFourBits = false;  // RP only at 4 bits a pixel (the one depth a source packs)
+  // With fullXy: an xy of RR or RH after another RR or RH xy leaves out Hi-Y
+  // and Hi-X when unchanged, always sending Extra, Lo-Y and Lo-X (OpenVnmrJ's
+  // tek_coord0, the terminal keeping its registers across pixel commands).
+  // Off in every named set; the profile's xy-short=on turns it on.
+  bool shortHighXy = false;
 };
 
 // The named form sets, strict first (the default).

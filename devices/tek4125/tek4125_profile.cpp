@@ -11,7 +11,7 @@ namespace {
 
 constexpr const char* kKeys =
     "profile, width, height, planes, palette-bits, reserved, baud, data-bits, parity, stop-bits, xon-xoff, "
-    "power-up-map, strategy, rr-origin, rh-origin, surface-planes, pixel-bits, raster-rows, progressive";
+    "power-up-map, strategy, rr-origin, rh-origin, surface-planes, pixel-bits, raster-rows, progressive, xy-short";
 
 void requireRange(const char* key, int value, int lo, int hi) {
   if (value < lo || value > hi)
@@ -70,6 +70,7 @@ void applyOverride(Tek4125Profile& profile, std::string_view keyValue) {
   else if (key == "stop-bits") p.stopBits = parseIntSetting(kContext, kv);
   else if (key == "xon-xoff") p.xonXoff = parseSwitchSetting(kContext, kv);
   else if (key == "progressive") p.progressive = parseSwitchSetting(kContext, kv);
+  else if (key == "xy-short") p.xyShort = parseSwitchSetting(kContext, kv);
   else if (key == "parity") {
     if (kv.value == "none") p.parity = false;
     else if (kv.value == "even" || kv.value == "odd") p.parity = true;  // only its bit time matters here
@@ -89,11 +90,11 @@ std::string describe(const Tek4125Profile& p) {
   return fmt::format(
       "profile={}\nwidth={}\nheight={}\nplanes={}\npalette-bits={}\nreserved={}\nbaud={}\ndata-bits={}\n"
       "parity={}\nstop-bits={}\nxon-xoff={}\npower-up-map={}\nstrategy={}\nrr-origin={}\nrh-origin={}\n"
-      "surface-planes={}\npixel-bits={}\nraster-rows={}\nprogressive={}\n",
+      "surface-planes={}\npixel-bits={}\nraster-rows={}\nprogressive={}\nxy-short={}\n",
       p.forms, p.width, p.height, p.planes, p.paletteBits, p.reserved, p.baud, p.dataBits, p.parity ? "even" : "none",
       p.stopBits, p.xonXoff ? "on" : "off", p.powerUpMap == Tek4125PowerUpMap::Pgplot ? "pgplot" : "ral-cgm",
       p.strategy, p.rrFromViewport ? "viewport" : "screen", p.rhFromScreen ? "screen" : "viewport", p.surfacePlanes,
-      p.pixelBitsFromSurface ? "surface" : "ru", p.rasterRowsDown ? "down" : "up", p.progressive ? "on" : "off");
+      p.pixelBitsFromSurface ? "surface" : "ru", p.rasterRowsDown ? "down" : "up", p.progressive ? "on" : "off", p.xyShort ? "on" : "off");
 }
 
 }  // namespace lattice::tek4125

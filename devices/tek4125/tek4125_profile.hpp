@@ -32,6 +32,10 @@ struct Tek4125Profile {
   std::string forms = "strict";  // the form set the driver may use (tek4125_forms.hpp)
   std::string strategy = "shortest";  // how the driver chooses among those forms (tek4125_strategy.hpp)
   bool progressive = false;  // progressive=on: coarse covers first, rows interlaced (tek4125_progressive.hpp)
+  // xy-short=on: in a five-byte-xy form set (strict), an RR or RH xy after
+  // another leaves out an unchanged Hi-Y and Hi-X, as OpenVnmrJ's tek_coord0
+  // does (one source; off by default, so strict's default bytes stay).
+  bool xyShort = false;
   // Readings no source settles, as the emulator applies them (the driver
   // ignores these). A strict stream must draw the same under every one.
   Tek4125PowerUpMap powerUpMap = Tek4125PowerUpMap::Pgplot;
@@ -61,7 +65,7 @@ struct Tek4125Profile {
 // stop-bits, xon-xoff (on|off), power-up-map (pgplot|ral-cgm), strategy
 // (shortest|plain|skip|rectangles|spans|runs), rr-origin (screen|viewport),
 // rh-origin (viewport|screen), surface-planes (0..planes), pixel-bits
-// (ru|surface), raster-rows (up|down), progressive (on|off)).
+// (ru|surface), raster-rows (up|down), progressive (on|off), xy-short (on|off)).
 // Unknown keys and bad values throw lattice::Error(Usage) listing the keys.
 void applyOverride(Tek4125Profile& profile, std::string_view keyValue);
 void applyOverrides(Tek4125Profile& profile, const std::vector<std::string>& keyValues);
