@@ -60,8 +60,8 @@ RgbImage shrink(const RgbImage& in, int width, int height) {
 class Searcher {
  public:
   Searcher(const devices::Device& device, const quantize::QuantizeOptions& quantizer, std::uint64_t limit,
-           LineFormat line, Progress& progress)
-      : device_(device), quantizer_(quantizer), limit_(limit), line_(line), progress_(progress) {
+           LineFormat line, Progress& progress, bool prune)
+      : device_(device), quantizer_(quantizer), limit_(limit), line_(line), progress_(progress), prune_(prune) {
     CountingSink none;
     maxColors_ = device_.makeDriver(none)->sink().maxColors();
   }
@@ -77,7 +77,7 @@ class Searcher {
         // No picture in this palette, dithered or smoothed by runs, comes nearer
         // the truecolour one than the bound: if that is no better than a fitting
         // choice already found, nothing of this setting can win.
-        if (fits() && paletteBound(reference, lossless.colormap) <= best_->psnr) continue;
+        if (prune_ && fits() && paletteBound(reference, lossless.colormap) <= best_->psnr) continue;
         const double psnr = io::compareRgb(reference, toRgbImage(lossless)).psnr;
         const std::uint64_t bytes = encode(lossless);
         WireChoice c{colors, dither, 0, reference.width, reference.height, bytes, 0, psnr, 0, bytes <= limit_};
@@ -216,6 +216,7 @@ class Searcher {
   std::uint64_t limit_;
   LineFormat line_;
   Progress& progress_;
+  bool prune_ = true;
   int maxColors_ = 256;
   std::optional<WireChoice> best_;
   Palette boundPalette_;
@@ -248,7 +249,7 @@ WireSearch searchWireBudget(const RgbImage& truecolour, const devices::Device& d
     limit = std::min(limit, static_cast<std::uint64_t>(*budget.seconds * line.baud / line.bitsPerCharacter()));
   Progress bar("wire budget", kPaletteSizes.size() * kDithers.size() * 6, "encodings");  // an estimate
   bar.setEnabled(bar.enabled() && progress);
-  Searcher searcher(device, quantizer, limit, line, bar);
+  Searcher searcher(device, quantizer, limit, line, bar, budget.prune);
   RgbImage reference = truecolour;
   searcher.search(reference);
   for (int step = 0; step < kShrinkSteps && budget.shrink && !searcher.fits(); ++step) {

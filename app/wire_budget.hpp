@@ -41,6 +41,7 @@ struct WireBudget {
   std::optional<double> seconds;       // --wire-seconds, at `baud`
   int baud = 0;                        // 0: the device profile's line rate
   bool shrink = false;                 // --wire-shrink: smaller pictures when nothing fits
+  bool prune = true;                   // false: every setting searched (tests check the pruning loses nothing)
 };
 
 struct WireChoice {
