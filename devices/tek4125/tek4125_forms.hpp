@@ -44,6 +44,10 @@ struct Tek4125Forms {
   // tek_coord0, the terminal keeping its registers across pixel commands).
   // Off in every named set; the profile's xy-short=on turns it on.
   bool shortHighXy = false;
+  // RU may write as few bits a pixel as the palette needs (5 to 7 for 17 to
+  // 128 colours) when the profile asks (ru-bits=fit): no source writes a
+  // depth other than 4 or its planes, so compact only.
+  bool fittedDepth = false;
 };
 
 // The named form sets, strict first (the default).

@@ -10,7 +10,7 @@ quantize::RunCost tek4125RunCost(const Tek4125Profile& profile, const IndexedIma
   const Tek4125Forms& forms = profile.formSet();
   const int reserved = profile.reserved;
   // The driver's choices (tek4125_driver.cpp): 4 bits when the colours fit.
-  const int bits = static_cast<int>(picture.colormap.size()) + reserved <= 16 ? 4 : profile.planes;
+  const int bits = profile.pixelBitsFor(static_cast<int>(picture.colormap.size()));
   const bool raster = bits == 4 || !forms.rasterOnlyAtFourBits;
   const bool runLength = forms.runLength;
   const int background = quantize::mostFrequentIndex(picture);

@@ -85,7 +85,8 @@ TEST_CASE("wire budget: a device's wire settings are added unless the user gave 
   CHECK(app::wireSettingsToAdd(strict, {}) == std::vector<std::string>{"xy-short=on"});
   CHECK(app::wireSettingsToAdd(strict, {"xy-short=off"}).empty());
   CHECK(app::wireSettingsToAdd(strict, {"planes=4"}) == std::vector<std::string>{"xy-short=on"});
-  CHECK(app::wireSettingsToAdd(devices::makeDevice("tek4125", {"profile=compact"}), {}).empty());
+  CHECK(app::wireSettingsToAdd(devices::makeDevice("tek4125", {"profile=compact"}), {}) ==
+        std::vector<std::string>{"ru-bits=fit"});
 }
 
 TEST_CASE("wire budget: nothing fits, the smallest stream is reported; --wire-shrink makes it fit") {

@@ -244,3 +244,32 @@ TEST_CASE("xy-short=on: strict's RR and RH xys leave out an unchanged Hi-Y and H
   const IndexedImage img = scene(160, 120, 200);
   CHECK(encode(img, compact) == encode(img, compactOn));
 }
+
+TEST_CASE("ru-bits=fit: compact writes as few bits a pixel as the palette needs, strict ignores it") {
+  for (int colors : {20, 40, 100}) {
+    INFO(colors << " colours");
+    const IndexedImage img = scene(301, 97, colors);
+    Tek4125Profile compact;
+    compact.forms = "compact";
+    Tek4125Profile fit = compact;
+    applyOverride(fit, "ru-bits=fit");
+    const int bits = colors <= 32 ? 5 : colors <= 64 ? 6 : 7;
+    CHECK(fit.pixelBitsFor(colors) == bits);
+    CHECK(compact.pixelBitsFor(colors) == 8);
+    const auto planes = encode(img, compact), fitted = encode(img, fit);
+    INFO(planes.size() << " bytes at 8 bits, " << fitted.size() << " at " << bits);
+    CHECK(fitted.size() < planes.size());
+    const std::vector<Command> cs = commands(fitted);
+    const Command ru = cs[firstOf(cs, {"RU"})];
+    CHECK(fitted[ru.at + 2] == '0' + bits);  // RU 1 11 <bits>
+    Tek4125Decoder d(compact);  // the reading of RU's bits is the default (pixel-bits=ru)
+    d.feed(fitted);
+    d.finish();
+    CHECK(d.report().malformed == 0);
+    CHECK(cutPicture(d.image(), compact, img.width, img.height).pixels == img.pixels);
+    Tek4125Profile strictFit = strictProfile();
+    applyOverride(strictFit, "ru-bits=fit");  // no source writes such depths: strict stays at its planes
+    CHECK(encode(img, strictFit) == encode(img, strictProfile()));
+  }
+  CHECK(Tek4125Profile{}.pixelBitsFor(16) == 4);
+}
