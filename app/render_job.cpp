@@ -139,7 +139,7 @@ devices::DriverStats renderToDevice(const std::function<void(IndexedSink&)>& sou
 // The truecolour picture once, then the search of app/wire_budget.hpp.
 template <typename T>
 WireSearch renderWithinWireBudget(Renderer<T>& renderer, const RenderJob& job, const devices::Device& device,
-                                  const quantize::PipelineOptions& pipeline) {
+                                  const quantize::PipelineOptions& pipeline, const std::vector<std::string>& added) {
   RgbImage truecolour;
   {
     Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
@@ -148,6 +148,7 @@ WireSearch renderWithinWireBudget(Renderer<T>& renderer, const RenderJob& job, c
     progress.finish();
   }
   WireSearch search = searchWireBudget(truecolour, device, *job.wire, pipeline.quantize, !job.quiet);
+  search.settings = added;
   raise(job.events, WireChosen{describeWireChoice(search)});
   return search;
 }
@@ -159,7 +160,18 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job) {
   const auto start = std::chrono::steady_clock::now();
   quantize::PipelineOptions pipeline = job.pipeline;
   std::optional<devices::Device> device;
-  if (!job.device.empty()) device = devices::makeDevice(job.device, job.settings);
+  std::vector<std::string> wireAdded;  // profile settings the wire budget turned on
+  if (!job.device.empty()) {
+    device = devices::makeDevice(job.device, job.settings);
+    if (job.wire) {
+      wireAdded = wireSettingsToAdd(*device, job.settings);
+      if (!wireAdded.empty()) {
+        std::vector<std::string> all = job.settings;
+        all.insert(all.end(), wireAdded.begin(), wireAdded.end());
+        device = devices::makeDevice(job.device, all);
+      }
+    }
+  }
   const RenderSettings settings =
       renderSettings(job, loaded.scene, device ? device->width : 0, device ? device->height : 0);
   std::optional<MemoryPlanRequest> budget;
@@ -186,7 +198,7 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job) {
 
   RenderResult result;
   if (device && job.wire) {
-    WireSearch search = renderWithinWireBudget(renderer, job, *device, pipeline);
+    WireSearch search = renderWithinWireBudget(renderer, job, *device, pipeline, wireAdded);
     result.stream = renderToDevice([&](IndexedSink& s) { sendPicture(search.picture, s); }, job, *device,
                                    result.destination);
     search.picture = {};

@@ -1,10 +1,12 @@
 #include "app/wire_budget.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <unordered_map>
 #include <vector>
 
 #include "foundation/byte_sink.hpp"
@@ -22,9 +24,10 @@ namespace {
 constexpr std::array<int, 12> kPaletteSizes = {256, 128, 64, 48, 32, 24, 16, 12, 8, 6, 4, 2};
 constexpr std::array<quantize::Dither, 2> kDithers = {quantize::Dither::None, quantize::Dither::FloydSteinberg};
 constexpr int kLadderSteps = 16;  // lambda = 50 * 2^k, k = 0..15: up to 1.6M squared error a byte
+constexpr int kRefineSteps = 3;   // then bisection between rungs to 2^(1/8) (9 %) of lambda
 constexpr int kShrinkSteps = 8;
 
-double ladderLambda(int k) { return 50.0 * std::ldexp(1.0, k); }
+double ladderLambda(double k) { return 50.0 * std::exp2(k); }
 
 const char* ditherName(quantize::Dither d) {
   switch (d) {
@@ -57,8 +60,8 @@ RgbImage shrink(const RgbImage& in, int width, int height) {
 class Searcher {
  public:
   Searcher(const devices::Device& device, const quantize::QuantizeOptions& quantizer, std::uint64_t limit,
-           LineFormat line, Progress& progress)
-      : device_(device), quantizer_(quantizer), limit_(limit), line_(line), progress_(progress) {
+           LineFormat line, Progress& progress, bool prune)
+      : device_(device), quantizer_(quantizer), limit_(limit), line_(line), progress_(progress), prune_(prune) {
     CountingSink none;
     maxColors_ = device_.makeDriver(none)->sink().maxColors();
   }
@@ -69,21 +72,19 @@ class Searcher {
   void search(const RgbImage& reference) {
     for (int colors : kPaletteSizes) {
       if (colors > maxColors_) continue;
-      bool bothFitLossless = true;
       for (quantize::Dither dither : kDithers) {
         IndexedImage lossless = quantize(reference, colors, dither);
+        // No picture in this palette, dithered or smoothed by runs, comes nearer
+        // the truecolour one than the bound: if that is no better than a fitting
+        // choice already found, nothing of this setting can win.
+        if (prune_ && fits() && paletteBound(reference, lossless.colormap) <= best_->psnr) continue;
         const double psnr = io::compareRgb(reference, toRgbImage(lossless)).psnr;
         const std::uint64_t bytes = encode(lossless);
         WireChoice c{colors, dither, 0, reference.width, reference.height, bytes, 0, psnr, 0, bytes <= limit_};
         consider(c, lossless, reference);
-        if (c.fits) continue;
-        bothFitLossless = false;
-        if (best_ && best_->fits && psnr <= best_->psnr) continue;  // runs only lose accuracy
-        if (!device_.runCost) continue;
+        if (c.fits || !device_.runCost) continue;
         searchLambda(lossless, reference, c);
       }
-      // A smaller palette of the same picture is no more accurate losslessly.
-      if (bothFitLossless) break;
     }
   }
 
@@ -117,6 +118,31 @@ class Searcher {
     return sink.image();
   }
 
+  // The PSNR of the palette's best picture, each pixel at its nearest entry
+  // (squared 8-bit RGB error, as the PSNR is measured). Settings that differ
+  // only in dithering share a palette, so the last one is kept.
+  double paletteBound(const RgbImage& reference, const Palette& palette) {
+    if (palette == boundPalette_ && reference.width == boundWidth_ && reference.height == boundHeight_) return bound_;
+    std::unordered_map<std::uint32_t, Rgb8> nearest;
+    RgbImage best(reference.width, reference.height);
+    for (std::size_t i = 0; i < reference.rgb.size(); i += 3) {
+      const Rgb8 t{reference.rgb[i], reference.rgb[i + 1], reference.rgb[i + 2]};
+      const std::uint32_t key = std::uint32_t(t.r) << 16 | std::uint32_t(t.g) << 8 | t.b;
+      auto found = nearest.find(key);
+      if (found == nearest.end()) {
+        Rgb8 pick = palette.front();
+        double least = quantize::colourError(t, pick);
+        for (const Rgb8& p : palette)
+          if (const double e = quantize::colourError(t, p); e < least) least = e, pick = p;
+        found = nearest.emplace(key, pick).first;
+      }
+      best.rgb[i] = found->second.r, best.rgb[i + 1] = found->second.g, best.rgb[i + 2] = found->second.b;
+    }
+    boundPalette_ = palette, boundWidth_ = reference.width, boundHeight_ = reference.height;
+    bound_ = io::compareRgb(reference, best).psnr;
+    return bound_;
+  }
+
   std::uint64_t encode(const IndexedImage& picture) {
     CountingSink counter;
     auto driver = device_.makeDriver(counter);
@@ -129,9 +155,9 @@ class Searcher {
   // The smallest lambda of the ladder whose stream fits, by bisection.
   void searchLambda(const IndexedImage& lossless, const RgbImage& reference, const WireChoice& base) {
     const quantize::RunCost cost = device_.runCost(lossless);
-    auto attempt = [&](int k, IndexedImage& out) {
+    auto attempt = [&](double k, IndexedImage& out) {
       out = lossless;
-      quantize::rateDistortionImage(out, cost, ladderLambda(k));
+      quantize::rateDistortionImage(out, cost, ladderLambda(k), reference);
       return encode(out);
     };
     IndexedImage top;
@@ -154,8 +180,16 @@ class Searcher {
       if (bytes <= limit_) hi = mid, fitting = std::move(trial), fittingBytes = bytes;
       else lo = mid;
     }
+    // Between the rungs: a doubling of lambda can leave a tenth of the bytes unused.
+    double fitK = hi, overK = lo;
+    for (int step = 0; step < kRefineSteps; ++step) {
+      const double mid = (fitK + overK) / 2;
+      const std::uint64_t bytes = attempt(mid, trial);
+      if (bytes <= limit_) fitK = mid, fitting = std::move(trial), fittingBytes = bytes;
+      else overK = mid;
+    }
     WireChoice c = base;
-    c.lambda = ladderLambda(hi);
+    c.lambda = ladderLambda(fitK);
     c.bytes = fittingBytes;
     c.psnr = io::compareRgb(reference, toRgbImage(fitting)).psnr;
     c.fits = true;
@@ -182,8 +216,12 @@ class Searcher {
   std::uint64_t limit_;
   LineFormat line_;
   Progress& progress_;
+  bool prune_ = true;
   int maxColors_ = 256;
   std::optional<WireChoice> best_;
+  Palette boundPalette_;
+  int boundWidth_ = 0, boundHeight_ = 0;
+  double bound_ = 0;
   IndexedImage bestPicture_;
   RgbImage bestReference_;
 };
@@ -211,7 +249,7 @@ WireSearch searchWireBudget(const RgbImage& truecolour, const devices::Device& d
     limit = std::min(limit, static_cast<std::uint64_t>(*budget.seconds * line.baud / line.bitsPerCharacter()));
   Progress bar("wire budget", kPaletteSizes.size() * kDithers.size() * 6, "encodings");  // an estimate
   bar.setEnabled(bar.enabled() && progress);
-  Searcher searcher(device, quantizer, limit, line, bar);
+  Searcher searcher(device, quantizer, limit, line, bar, budget.prune);
   RgbImage reference = truecolour;
   searcher.search(reference);
   for (int step = 0; step < kShrinkSteps && budget.shrink && !searcher.fits(); ++step) {
@@ -223,12 +261,22 @@ WireSearch searchWireBudget(const RgbImage& truecolour, const devices::Device& d
   return searcher.result(limit);
 }
 
+std::vector<std::string> wireSettingsToAdd(const devices::Device& device, const std::vector<std::string>& user) {
+  auto key = [](const std::string& kv) { return kv.substr(0, kv.find('=')); };
+  std::vector<std::string> added;
+  for (const std::string& s : device.wireSettings)
+    if (std::none_of(user.begin(), user.end(), [&](const std::string& u) { return key(u) == key(s); }))
+      added.push_back(s);
+  return added;
+}
+
 std::string describeWireChoice(const WireSearch& s) {
   const WireChoice& c = s.choice;
-  return fmt::format("{} colours, dither {}, lambda {:g}, {}x{}: {} bytes of {} allowed, {:.1f} s at {} baud, PSNR "
-                     "{:.2f} dB, SSIM {:.4f} ({} encodings)",
-                     c.colors, ditherName(c.dither), c.lambda, c.width, c.height, c.bytes, s.limit, c.seconds, s.baud,
-                     c.psnr, c.ssim, s.encodings);
+  return fmt::format("{} colours, dither {}, lambda {:.0f}{}, {}x{}: {} bytes of {} allowed, {:.1f} s at {} baud, "
+                     "PSNR {:.2f} dB, SSIM {:.4f} ({} encodings)",
+                     c.colors, ditherName(c.dither), c.lambda,
+                     s.settings.empty() ? "" : fmt::format(", {}", fmt::join(s.settings, ", ")), c.width, c.height,
+                     c.bytes, s.limit, c.seconds, s.baud, c.psnr, c.ssim, s.encodings);
 }
 
 }  // namespace lattice::app

@@ -7,19 +7,27 @@
 // Floyd-Steinberg) it is quantized, and the device's real driver encodes it
 // into a byte counter (never a model of the encoder). A picture that does
 // not fit at lambda = 0 is tried with rate-distortion runs
-// (quantize/rate_distortion_runs.hpp) at the smallest lambda of a doubling
-// ladder that fits, found by bisection (bytes fall as lambda grows). Of all
-// fitting pictures the one with the highest PSNR against the truecolour
-// picture wins (fewer bytes break ties). Pruning: a setting whose lossless
-// PSNR is already below the best found is not searched further, since runs
-// only add error. With `shrink`, when nothing fits, the picture is made
-// smaller (each side x0.8, area-averaged) and the search runs again.
+// (quantize/rate_distortion_runs.hpp, error measured against the truecolour
+// picture) at the smallest lambda of a doubling ladder that fits, found by
+// bisection (bytes fall as lambda grows) and refined between the rungs. Of
+// all fitting pictures the one with the highest PSNR against the truecolour
+// picture wins (fewer bytes break ties). Pruning, sound for dithered and
+// smoothed pictures alike: no picture in a palette is nearer the truecolour
+// one than each pixel at its nearest entry, so once a fitting choice is
+// found, a setting whose palette's bound is no better is not tried. (Before,
+// a setting whose lossless PSNR was below the best was dropped, which missed
+// dithered pictures that runs make more accurate.) The device's
+// wireSettings (forms that draw the same screen in fewer bytes, off by
+// default) are the caller's to turn on (wireSettingsToAdd). With `shrink`,
+// when nothing fits, the picture is made smaller (each side x0.8,
+// area-averaged) and the search runs again.
 //
-// Tunables: kLambdaLadder (50 x 2^k squared-error units a byte), the
-// palette sizes tried, kShrinkSteps.
+// Tunables: kLadderSteps (50 x 2^k squared-error units a byte), kRefineSteps
+// (bisections between rungs), the palette sizes tried, kShrinkSteps.
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "devices/device.hpp"
 #include "foundation/indexed_image.hpp"
@@ -33,6 +41,7 @@ struct WireBudget {
   std::optional<double> seconds;       // --wire-seconds, at `baud`
   int baud = 0;                        // 0: the device profile's line rate
   bool shrink = false;                 // --wire-shrink: smaller pictures when nothing fits
+  bool prune = true;                   // false: every setting searched (tests check the pruning loses nothing)
 };
 
 struct WireChoice {
@@ -54,7 +63,11 @@ struct WireSearch {
   std::uint64_t limit = 0;
   int baud = 0;
   int encodings = 0;  // real encodes counted
+  std::vector<std::string> settings;  // profile settings the budget turned on (Device::wireSettings)
 };
+
+// The device's wireSettings whose keys the user's settings do not name.
+std::vector<std::string> wireSettingsToAdd(const devices::Device& device, const std::vector<std::string>& user);
 
 // Throws Error(Usage) when the device has no serial line and no --baud, or
 // (with lambdas to try) no run costs.

@@ -105,7 +105,7 @@ int run(int argc, char** argv) {
         const quantize::RunCost cost = device.runCost(lossless);
         for (double lambda : {0.0, 500.0, 2000.0, 8000.0, 32000.0, 128000.0}) {
           IndexedImage picture = lossless;
-          quantize::rateDistortionImage(picture, cost, lambda);
+          quantize::rateDistortionImage(picture, cost, lambda, reference);
           const auto bytes = encode(device, picture);
           const RgbImage shown = screenAfter(device, bytes, bytes.size());
           const double psnr = io::compareRgb(reference, shown).psnr, ssim = io::meanSsim(reference, shown);
@@ -121,8 +121,10 @@ int run(int argc, char** argv) {
   std::ofstream budget(std::filesystem::path(out) / "budget.tsv");
   budget << "profile\tlimit\tfits\tcolours\tdither\tlambda\tbytes\tpsnr_sent\tpsnr_screen\tssim\tencodings\n";
   for (const char* profile : {"strict", "compact"}) {
-    const devices::Device device =
-        devices::makeDevice("tek4125", {fmt::format("profile={}", profile), screen[0], screen[1]});
+    // As `lattice render --wire-bytes` does: the forms a budget turns on (strict's xy-short=on).
+    std::vector<std::string> keys = {fmt::format("profile={}", profile), screen[0], screen[1]};
+    for (const std::string& s : app::wireSettingsToAdd(devices::makeDevice("tek4125", keys), keys)) keys.push_back(s);
+    const devices::Device device = devices::makeDevice("tek4125", keys);
     for (std::uint64_t limit : {std::uint64_t(57600), std::uint64_t(76800)}) {
       app::WireBudget b;
       b.bytes = limit;

@@ -83,6 +83,11 @@ struct Device {
   // rate-distortion runs (quantize/rate_distortion_runs.hpp); a device without
   // one cannot take --rd-lambda or a wire budget's lambda.
   quantize::RunCostFactory runCost;
+  // Optional: profile settings ("key=value") a wire budget turns on unless
+  // the user set the key: forms that draw the same screen in fewer bytes but
+  // stay off by default, so the default stream does not change (the 4125's
+  // xy-short=on, docs/wire.md).
+  std::vector<std::string> wireSettings;
 };
 
 // How much of a stream Device::recognise is shown.

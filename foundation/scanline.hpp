@@ -67,6 +67,11 @@ class IndexedSink {
   // How many palette entries the device can show (2^planes, minus reserved).
   virtual int maxColors() const = 0;
   virtual void begin(const FrameInfo& frame) = 0;
+  // Offered just before row(y) by a quantizer that has them: the colours the
+  // row's indices stand for, before quantizing. Most sinks ignore it; one that
+  // measures error against the picture itself keeps it
+  // (quantize/rate_distortion_runs.hpp).
+  virtual void truecolourRow(int /*y*/, std::span<const Color18> /*colours*/) {}
   // Rows arrive in order y = 0 .. height-1, each of size width.
   virtual void row(int y, std::span<const PaletteIndex> indices) = 0;
   virtual void end() = 0;

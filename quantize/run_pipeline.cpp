@@ -107,6 +107,7 @@ PipelineReport runPipeline(RowSource18& source, IndexedSink& sink, const Pipelin
       in = row;
     }
     mapper.mapRow(y, in, indices);
+    sink.truecolourRow(y, in);
     sink.row(y, indices);
     progress.advance();
   }

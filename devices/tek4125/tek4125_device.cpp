@@ -68,6 +68,9 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
     return false;
   };
   d.runCost = [profile](const IndexedImage& picture) { return tek4125RunCost(profile, picture); };
+  // Forms that draw the same screen in fewer bytes, off by default.
+  if (profile.formSet().fullXy) d.wireSettings.push_back("xy-short=on");  // compact's short xy goes further
+  if (profile.formSet().fittedDepth) d.wireSettings.push_back("ru-bits=fit");
   return d;
 }
 

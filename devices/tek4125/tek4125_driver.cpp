@@ -76,7 +76,8 @@ int Tek4125Driver::mostFrequentIndex() const {
 }
 
 void Tek4125Driver::encode(const Tek4125DriverOptions& options, ByteSink& sink, Tek4125StreamStats& stats) const {
-  const Tek4125Forms& forms = profile_.formSet();
+  Tek4125Forms forms = profile_.formSet();
+  forms.shortHighXy = forms.fullXy && profile_.xyShort;  // the short forms of compact already go further
   const int reserved = profile_.reserved;
   const int paletteSize = static_cast<int>(frame_.palette.size());
   const int width = frame_.width, height = frame_.height;
@@ -89,7 +90,7 @@ void Tek4125Driver::encode(const Tek4125DriverOptions& options, ByteSink& sink, 
   layout.height = height;
   // A picture whose indices fit in 4 bits is sent at 4 bits a pixel even on
   // an 8-plane terminal: half the raster bytes, and the one depth a source packs.
-  layout.bits = paletteSize + reserved <= 16 ? 4 : profile_.planes;
+  layout.bits = profile_.pixelBitsFor(paletteSize);
   layout.raster = layout.bits == 4 || !forms.rasterOnlyAtFourBits;
   layout.runLength = forms.runLength && (options.runLength || !layout.raster);
   layout.background = options.skipBackground ? mostFrequentIndex() + reserved : -1;

@@ -105,6 +105,22 @@ void XyEncoder::append(Bytes& out, int x, int y) {
   known_ = true;
 }
 
+void XyEncoder::appendHighShort(Bytes& out, int x, int y) {
+  const XyBytes now = xyBytes(x, y);
+  if (!known_ || now.hiY != last_.hiY) out.push_back(now.hiY);
+  out.push_back(now.extra);
+  out.push_back(now.loY);
+  if (!known_ || now.hiX != last_.hiX) out.push_back(now.hiX);
+  out.push_back(now.loX);
+  last_ = now;
+  known_ = true;
+}
+
+int XyEncoder::highShortLength(int x, int y) const {
+  const XyBytes now = xyBytes(x, y);
+  return 3 + int(!known_ || now.hiY != last_.hiY) + int(!known_ || now.hiX != last_.hiX);
+}
+
 int XyEncoder::length(int x, int y) const {
   const XyPlan p = plan(xyBytes(x, y), last_, known_);
   return 1 + int(p.hiY) + int(p.extra) + int(p.loY) + int(p.hiX);

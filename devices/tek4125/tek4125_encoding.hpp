@@ -58,6 +58,11 @@ class XyEncoder {
   void append(Bytes& out, int x, int y);
   // Bytes append() would write now, without changing the registers.
   int length(int x, int y) const;
+  // OpenVnmrJ's form (tek_coord0): Hi-Y and Hi-X left out when unchanged,
+  // Extra, Lo-Y and Lo-X always sent (3 to 5 bytes; a decoder tells Hi-X from
+  // Hi-Y by the Lo-Y always before it).
+  void appendHighShort(Bytes& out, int x, int y);
+  int highShortLength(int x, int y) const;
   // Forget the previous coordinate: the next one is sent in full.
   void reset() { known_ = false; }
 

@@ -39,6 +39,15 @@ struct Tek4125Forms {
   int maxRunCode = 65535;           // largest RL run code (length * 2^bits + index)
   bool beamContinues = false;       // an RP or RL may follow the other kind without a new RH
   bool rasterOnlyAtFourBits = false;  // RP only at 4 bits a pixel (the one depth a source packs)
+  // With fullXy: an xy of RR or RH after another RR or RH xy leaves out Hi-Y
+  // and Hi-X when unchanged, always sending Extra, Lo-Y and Lo-X (OpenVnmrJ's
+  // tek_coord0, the terminal keeping its registers across pixel commands).
+  // Off in every named set; the profile's xy-short=on turns it on.
+  bool shortHighXy = false;
+  // RU may write as few bits a pixel as the palette needs (5 to 7 for 17 to
+  // 128 colours) when the profile asks (ru-bits=fit): no source writes a
+  // depth other than 4 or its planes, so compact only.
+  bool fittedDepth = false;
 };
 
 // The named form sets, strict first (the default).

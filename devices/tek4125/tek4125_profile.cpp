@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <bit>
+
 #include "foundation/error.hpp"
 #include "foundation/key_value.hpp"
 
@@ -11,7 +14,7 @@ namespace {
 
 constexpr const char* kKeys =
     "profile, width, height, planes, palette-bits, reserved, baud, data-bits, parity, stop-bits, xon-xoff, "
-    "power-up-map, strategy, rr-origin, rh-origin, surface-planes, pixel-bits, raster-rows, progressive";
+    "power-up-map, strategy, rr-origin, rh-origin, surface-planes, pixel-bits, raster-rows, progressive, xy-short, ru-bits";
 
 void requireRange(const char* key, int value, int lo, int hi) {
   if (value < lo || value > hi)
@@ -44,6 +47,13 @@ void Tek4125Profile::validate() const {
   requireRange("surface-planes", surfacePlanes, 0, planes);
 }
 
+int Tek4125Profile::pixelBitsFor(int colours) const {
+  const int needed = colours + reserved;
+  if (needed <= 16) return 4;
+  if (ruBitsFit && formSet().fittedDepth) return std::min(planes, int(std::bit_width(unsigned(needed - 1))));
+  return planes;
+}
+
 void applyOverride(Tek4125Profile& profile, std::string_view keyValue) {
   constexpr std::string_view kContext = "tek4125 profile";
   Tek4125Profile p = profile;  // a rejected override leaves the profile as it was
@@ -70,6 +80,8 @@ void applyOverride(Tek4125Profile& profile, std::string_view keyValue) {
   else if (key == "stop-bits") p.stopBits = parseIntSetting(kContext, kv);
   else if (key == "xon-xoff") p.xonXoff = parseSwitchSetting(kContext, kv);
   else if (key == "progressive") p.progressive = parseSwitchSetting(kContext, kv);
+  else if (key == "xy-short") p.xyShort = parseSwitchSetting(kContext, kv);
+  else if (key == "ru-bits") p.ruBitsFit = originSetting(kv, "planes", "fit");
   else if (key == "parity") {
     if (kv.value == "none") p.parity = false;
     else if (kv.value == "even" || kv.value == "odd") p.parity = true;  // only its bit time matters here
@@ -89,11 +101,12 @@ std::string describe(const Tek4125Profile& p) {
   return fmt::format(
       "profile={}\nwidth={}\nheight={}\nplanes={}\npalette-bits={}\nreserved={}\nbaud={}\ndata-bits={}\n"
       "parity={}\nstop-bits={}\nxon-xoff={}\npower-up-map={}\nstrategy={}\nrr-origin={}\nrh-origin={}\n"
-      "surface-planes={}\npixel-bits={}\nraster-rows={}\nprogressive={}\n",
+      "surface-planes={}\npixel-bits={}\nraster-rows={}\nprogressive={}\nxy-short={}\nru-bits={}\n",
       p.forms, p.width, p.height, p.planes, p.paletteBits, p.reserved, p.baud, p.dataBits, p.parity ? "even" : "none",
       p.stopBits, p.xonXoff ? "on" : "off", p.powerUpMap == Tek4125PowerUpMap::Pgplot ? "pgplot" : "ral-cgm",
       p.strategy, p.rrFromViewport ? "viewport" : "screen", p.rhFromScreen ? "screen" : "viewport", p.surfacePlanes,
-      p.pixelBitsFromSurface ? "surface" : "ru", p.rasterRowsDown ? "down" : "up", p.progressive ? "on" : "off");
+      p.pixelBitsFromSurface ? "surface" : "ru", p.rasterRowsDown ? "down" : "up", p.progressive ? "on" : "off", p.xyShort ? "on" : "off",
+      p.ruBitsFit ? "fit" : "planes");
 }
 
 }  // namespace lattice::tek4125

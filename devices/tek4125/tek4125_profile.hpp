@@ -32,6 +32,14 @@ struct Tek4125Profile {
   std::string forms = "strict";  // the form set the driver may use (tek4125_forms.hpp)
   std::string strategy = "shortest";  // how the driver chooses among those forms (tek4125_strategy.hpp)
   bool progressive = false;  // progressive=on: coarse covers first, rows interlaced (tek4125_progressive.hpp)
+  // xy-short=on: in a five-byte-xy form set (strict), an RR or RH xy after
+  // another leaves out an unchanged Hi-Y and Hi-X, as OpenVnmrJ's tek_coord0
+  // does (one source; off by default, so strict's default bytes stay).
+  bool xyShort = false;
+  // ru-bits=fit: in a form set that allows it (compact), RU writes as few
+  // bits a pixel as the palette needs (no source: off by default, so the
+  // default streams stay; a wire budget turns it on). planes: the planes.
+  bool ruBitsFit = false;
   // Readings no source settles, as the emulator applies them (the driver
   // ignores these). A strict stream must draw the same under every one.
   Tek4125PowerUpMap powerUpMap = Tek4125PowerUpMap::Pgplot;
@@ -50,6 +58,11 @@ struct Tek4125Profile {
   int colorMapSize() const { return 1 << planes; }
   // Colours a picture may use: the map minus reserved entries.
   int maxColors() const { return colorMapSize() - reserved; }
+  // Bits a pixel the driver writes for a picture of `colours` colours: 4 when
+  // they fit in 16 entries (the one depth a source packs RP at), else the
+  // planes, or with ru-bits=fit where the form set allows it the fewest that
+  // hold them.
+  int pixelBitsFor(int colours) const;
   LineFormat line() const { return LineFormat{baud, dataBits, parity, stopBits}; }
   const Tek4125Forms& formSet() const { return tek4125Forms(forms); }
   // Throws lattice::Error(Usage) naming the bad field and its legal range.
@@ -61,7 +74,8 @@ struct Tek4125Profile {
 // stop-bits, xon-xoff (on|off), power-up-map (pgplot|ral-cgm), strategy
 // (shortest|plain|skip|rectangles|spans|runs), rr-origin (screen|viewport),
 // rh-origin (viewport|screen), surface-planes (0..planes), pixel-bits
-// (ru|surface), raster-rows (up|down), progressive (on|off)).
+// (ru|surface), raster-rows (up|down), progressive (on|off), xy-short (on|off),
+// ru-bits (planes|fit)).
 // Unknown keys and bad values throw lattice::Error(Usage) listing the keys.
 void applyOverride(Tek4125Profile& profile, std::string_view keyValue);
 void applyOverrides(Tek4125Profile& profile, const std::vector<std::string>& keyValues);

@@ -10,14 +10,16 @@ quantize::RunCost tek4125RunCost(const Tek4125Profile& profile, const IndexedIma
   const Tek4125Forms& forms = profile.formSet();
   const int reserved = profile.reserved;
   // The driver's choices (tek4125_driver.cpp): 4 bits when the colours fit.
-  const int bits = static_cast<int>(picture.colormap.size()) + reserved <= 16 ? 4 : profile.planes;
+  const int bits = profile.pixelBitsFor(static_cast<int>(picture.colormap.size()));
   const bool raster = bits == 4 || !forms.rasterOnlyAtFourBits;
   const bool runLength = forms.runLength;
   const int background = quantize::mostFrequentIndex(picture);
   const int maxRun = std::max(1, (forms.maxRunCode + 1) / (1 << bits) - 1);
   const double perCode = forms.runCodeBytesPerRl > 0 ? 1.0 + 5.0 / forms.runCodeBytesPerRl : 1.0;
+  // Skipping a background run inside a row means a new span after it: an
+  // RH (and its xy) and the RL or RP header again.
+  const double restart = 3 + (forms.fullXy ? 5 : 3) + 3 + 1;
   return [=](int length, int index) {
-    if (index == background) return 0.0;
     double best = raster ? length * bits / 6.0 : 1e9;
     if (runLength) {
       double codes = 0;
@@ -25,7 +27,7 @@ quantize::RunCost tek4125RunCost(const Tek4125Profile& profile, const IndexedIma
         codes += intLength(std::min(left, maxRun) << bits | (index + reserved));
       best = std::min(best, codes * perCode);
     }
-    return best;
+    return index == background ? std::min(best, restart) : best;
   };
 }
 

@@ -21,9 +21,14 @@ void Tek4125Writer::integer(int value) {
 }
 
 void Tek4125Writer::xy(int x, int y) {
-  if (forms_.fullXy) xy_.reset();  // no register is relied on: all five bytes
   const std::size_t before = out_.size();
-  xy_.append(out_, x, y);
+  if (highShortNow()) {
+    xy_.appendHighShort(out_, x, y);
+  } else {
+    if (forms_.fullXy) xy_.reset();  // no register is relied on: all five bytes
+    xy_.append(out_, x, y);
+  }
+  lastXyInPixelCommand_ = pixelCommand_;
   countDels(before);
   spillIfFull();
 }

@@ -27,6 +27,7 @@ class Tek4125Writer {
 
   void command(std::string_view name) {
     tek4125::appendCommand(out_, name);
+    pixelCommand_ = name == "RR" || name == "RH";
     spillIfFull();
   }
   void integer(int value);
@@ -41,7 +42,10 @@ class Tek4125Writer {
   }
 
   // Bytes xy() would write now.
-  int xyLength(int x, int y) const { return forms_.fullXy ? 5 : xy_.length(x, y); }
+  int xyLength(int x, int y) const {
+    if (!forms_.fullXy) return xy_.length(x, y);
+    return highShortNow() ? xy_.highShortLength(x, y) : 5;
+  }
   // Bytes of the stream so far, DELs escaped: handed on plus still held.
   std::uint64_t size() const { return spilled_ + out_.size() + dels_; }
   const Tek4125Forms& forms() const { return forms_; }
@@ -49,6 +53,8 @@ class Tek4125Writer {
   void finish() { spill(); }
 
  private:
+  // OpenVnmrJ's short form applies between xys of RR and RH only.
+  bool highShortNow() const { return forms_.shortHighXy && pixelCommand_ && lastXyInPixelCommand_; }
   void spillIfFull() {
     if (out_.size() >= kSpillBytes) spill();
   }
@@ -58,6 +64,8 @@ class Tek4125Writer {
   const Tek4125Forms& forms_;
   ByteSink& sink_;
   tek4125::XyEncoder xy_;
+  bool pixelCommand_ = false;          // the command being written is RR or RH
+  bool lastXyInPixelCommand_ = false;  // the last xy sent belonged to one
   tek4125::Bytes out_;      // not yet handed on, DELs not yet escaped
   tek4125::Bytes escaped_;  // spill()'s scratch, kept for its capacity
   std::size_t dels_ = 0;    // DELs in out_: the bytes escaping will add, so size() is exact

@@ -62,6 +62,33 @@ TEST_CASE("wire budget: the chosen picture's real stream fits, and a looser budg
   }
 }
 
+TEST_CASE("wire budget: the palette-bound pruning loses nothing against searching every setting") {
+  const RgbImage reference = truecolour("torus-floor.toml", 96, 72);
+  const devices::Device d = devices::makeDevice("tek4125", {});
+  for (std::uint64_t limit : {std::uint64_t(3000), std::uint64_t(6000)}) {
+    app::WireBudget budget;
+    budget.bytes = limit;
+    const app::WireSearch pruned = app::searchWireBudget(reference, d, budget, {}, false);
+    budget.prune = false;
+    const app::WireSearch every = app::searchWireBudget(reference, d, budget, {}, false);
+    INFO(limit << " bytes: pruned " << app::describeWireChoice(pruned) << "; every setting "
+                << app::describeWireChoice(every));
+    REQUIRE(every.choice.fits);
+    CHECK(pruned.choice.psnr == every.choice.psnr);
+    CHECK(pruned.choice.bytes == every.choice.bytes);
+    CHECK(pruned.encodings < every.encodings);
+  }
+}
+
+TEST_CASE("wire budget: a device's wire settings are added unless the user gave the key") {
+  const devices::Device strict = devices::makeDevice("tek4125", {});
+  CHECK(app::wireSettingsToAdd(strict, {}) == std::vector<std::string>{"xy-short=on"});
+  CHECK(app::wireSettingsToAdd(strict, {"xy-short=off"}).empty());
+  CHECK(app::wireSettingsToAdd(strict, {"planes=4"}) == std::vector<std::string>{"xy-short=on"});
+  CHECK(app::wireSettingsToAdd(devices::makeDevice("tek4125", {"profile=compact"}), {}) ==
+        std::vector<std::string>{"ru-bits=fit"});
+}
+
 TEST_CASE("wire budget: nothing fits, the smallest stream is reported; --wire-shrink makes it fit") {
   const RgbImage reference = truecolour("sphere-hole.toml", 64, 64);
   const devices::Device d = devices::makeDevice("tek4125", {});

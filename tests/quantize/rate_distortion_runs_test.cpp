@@ -2,12 +2,17 @@
 // vanishing lambda change nothing; a larger lambda merges runs whose colours
 // are close before ones whose colours are far, never invents a colour a
 // segment did not hold, and the sink in front of a driver hands on exactly
-// the rewritten frame.
+// the rewritten frame. Against the truecolour picture: lambda 0 changes
+// nothing, the objective never gets worse than the picture's own, a segment
+// may take the entry nearest its mean (a dither's noise is smoothed), and the
+// sink uses the truecolour rows when offered.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <random>
 #include <set>
 
+#include "foundation/error.hpp"
 #include "quantize/rate_distortion_runs.hpp"
 
 using namespace lattice;
@@ -114,4 +119,96 @@ TEST_CASE("rate-distortion runs: the sink hands on the rewritten frame, or the r
   IndexedImage counted(5, 1, 3);
   counted.pixels = {2, 2, 1, 2, 0};
   CHECK(mostFrequentIndex(counted) == 2);
+}
+
+namespace {
+
+// The true colours of a picture whose palette colours are `image`'s, each
+// pixel moved by `offset` (as a quantizer's error would).
+RgbImage trueColours(const IndexedImage& image, int offset) {
+  RgbImage truth(image.width, image.height);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const Rgb8 c = image.colorAt(x, y);
+      std::uint8_t* p = truth.pixel(x, y);
+      p[0] = static_cast<std::uint8_t>(std::clamp(c.r + offset, 0, 255));
+      p[1] = static_cast<std::uint8_t>(std::clamp(c.g + offset, 0, 255));
+      p[2] = static_cast<std::uint8_t>(std::clamp(c.b + offset, 0, 255));
+    }
+  return truth;
+}
+
+double trueError(const IndexedImage& image, const RgbImage& truth) {
+  double d = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = truth.pixel(x, y);
+      d += colourError(image.colorAt(x, y), Rgb8{p[0], p[1], p[2]});
+    }
+  return d;
+}
+
+}  // namespace
+
+TEST_CASE("rate-distortion runs against the truecolour picture: lambda 0 is a no-op, error is the true one") {
+  const IndexedImage original = noise(97, 13, 16, 4);
+  const RgbImage truth = trueColours(original, 3);
+  IndexedImage copy = original;
+  rateDistortionImage(copy, kFlatCost, 0.0, truth);
+  CHECK(copy.pixels == original.pixels);
+  // A larger lambda: fewer runs, and the objective (true error + lambda x
+  // bytes) is no worse than the picture's own, which the programme could keep.
+  for (double lambda : {1000.0, 100000.0}) {
+    IndexedImage smoothed = original;
+    rateDistortionImage(smoothed, kFlatCost, lambda, truth);
+    int before = 0, after = 0;
+    for (int y = 0; y < original.height; ++y) {
+      before += countRuns(std::span<const PaletteIndex>(original.pixels).subspan(std::size_t(y) * 97, 97));
+      after += countRuns(std::span<const PaletteIndex>(smoothed.pixels).subspan(std::size_t(y) * 97, 97));
+    }
+    INFO("lambda " << lambda << ": " << before << " runs before, " << after << " after");
+    CHECK(after < before);
+    CHECK(trueError(smoothed, truth) + lambda * 3.0 * after <= trueError(original, truth) + lambda * 3.0 * before);
+  }
+  IndexedImage wrongSize(5, 5, 0);
+  wrongSize.colormap = original.colormap;
+  CHECK_THROWS_AS(rateDistortionImage(wrongSize, kFlatCost, 10.0, truth), Error);
+}
+
+TEST_CASE("rate-distortion runs against the truecolour picture: a segment takes the entry nearest its mean") {
+  // A dithered grey: alternating black and white whose true colour is mid
+  // grey throughout. Against the palette colours no merge helps; against the
+  // true colours the whole row becomes the grey entry, which no run held.
+  IndexedImage image(16, 1, 0);
+  image.colormap = {Rgb8{0, 0, 0}, Rgb8{255, 255, 255}, Rgb8{128, 128, 128}};
+  for (int x = 0; x < 16; ++x) image.at(x, 0) = static_cast<PaletteIndex>(x % 2);
+  RgbImage truth(16, 1);
+  std::fill(truth.rgb.begin(), truth.rgb.end(), std::uint8_t(128));
+  IndexedImage palette = image;
+  rateDistortionImage(palette, kFlatCost, 1.0);
+  CHECK(palette.pixels == image.pixels);  // merging black and white costs 65025 x 3 a pixel: never for 3 bytes
+  rateDistortionImage(image, kFlatCost, 1.0, truth);
+  for (int x = 0; x < 16; ++x) CHECK(image.at(x, 0) == 2);
+}
+
+TEST_CASE("rate-distortion runs: the sink uses the truecolour rows the quantizer offers") {
+  IndexedImage image(16, 2, 0);
+  image.colormap = {Rgb8{0, 0, 0}, Rgb8{255, 255, 255}, Rgb8{128, 128, 128}};
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 16; ++x) image.at(x, y) = static_cast<PaletteIndex>((x + y) % 2);
+  const Color18 grey = packColor18(reduce8to6(128), reduce8to6(128), reduce8to6(128));
+  const std::vector<Color18> greyRow(16, grey);
+  for (bool offered : {false, true}) {
+    IndexedImageSink collected;
+    RateDistortionSink sink(collected, [](const IndexedImage&) { return kFlatCost; }, 1.0);
+    sink.begin(FrameInfo{16, 2, image.colormap});
+    for (int y = 0; y < 2; ++y) {
+      if (offered) sink.truecolourRow(y, greyRow);
+      sink.row(y, std::span<const PaletteIndex>(image.pixels).subspan(std::size_t(y) * 16, 16));
+    }
+    sink.end();
+    INFO("truecolour rows offered: " << offered);
+    CHECK((collected.image().pixels == std::vector<PaletteIndex>(32, 2)) == offered);
+    CHECK((collected.image().pixels == image.pixels) == !offered);
+  }
 }

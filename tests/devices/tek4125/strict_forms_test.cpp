@@ -177,3 +177,99 @@ TEST_CASE("a DEL inside a parameter goes as ESC ? in strict, raw in compact, and
   CHECK(cutPicture(a.image(), strict, img.width, img.height).pixels == img.pixels);
   CHECK(cutPicture(b.image(), compact, img.width, img.height).pixels == img.pixels);
 }
+
+namespace {
+
+// Length of an xy in OpenVnmrJ's form (tek_coord0): [Hi-Y] Extra Lo-Y
+// [Hi-X] Lo-X, Extra and Lo-Y always there; 0 when the bytes are not one.
+std::size_t highShortXyAt(const std::vector<std::uint8_t>& b, std::size_t at) {
+  auto in = [&](std::size_t i, int lo, int hi) { return i < b.size() && b[i] >= lo && b[i] <= hi; };
+  std::size_t i = at;
+  if (in(i, 0x20, 0x3F)) ++i;  // Hi-Y
+  if (!in(i, 0x60, 0x7F) || !in(i + 1, 0x60, 0x7F)) return 0;  // Extra, Lo-Y
+  i += 2;
+  if (in(i, 0x20, 0x3F)) ++i;  // Hi-X
+  return in(i, 0x40, 0x5F) ? i + 1 - at : 0;
+}
+
+}  // namespace
+
+TEST_CASE("xy-short=on: strict's RR and RH xys leave out an unchanged Hi-Y and Hi-X, the screen is the same") {
+  CHECK_FALSE(Tek4125Profile{}.xyShort);  // off by default: strict's default bytes stay
+  for (int colors : {12, 200}) {
+    INFO(colors << " colours");
+    const IndexedImage img = scene(301, 97, colors);
+    const Tek4125Profile off = strictProfile();
+    Tek4125Profile on = off;
+    applyOverride(on, "xy-short=on");
+    REQUIRE(on.xyShort);
+    const auto offBytes = encode(img, off), onBytes = encode(img, on);
+    INFO(offBytes.size() << " bytes, " << onBytes.size() << " with xy-short=on");
+    CHECK(onBytes.size() < offBytes.size());
+    const std::vector<std::uint8_t> b = unescaped(onBytes);
+    const std::vector<Command> cs = commands(b);
+    int shortened = 0;
+    bool afterPixelXy = false;  // the last xy belonged to an RR or RH
+    for (const Command& c : cs) {
+      if (c.name == "RS") {
+        CHECK(fullXyAt(b, c.at));
+        CHECK(fullXyAt(b, c.at + 5));
+        afterPixelXy = false;
+      }
+      if (c.name != "RH" && c.name != "RR") continue;
+      INFO(c.name << " at " << c.at);
+      std::size_t at = c.at;
+      for (int corner = 0; corner < (c.name == "RR" ? 2 : 1); ++corner) {
+        const std::size_t n = highShortXyAt(b, at);
+        REQUIRE(n >= 3);
+        if (!afterPixelXy) CHECK(n == 5);  // the first after RS is sent whole
+        shortened += n < 5;
+        afterPixelXy = true;
+        at += n;
+      }
+    }
+    CHECK(shortened > 0);
+    for (const std::vector<std::uint8_t>* bytes : {&offBytes, &onBytes}) {
+      Tek4125Decoder d(off);
+      d.feed(*bytes);
+      d.finish();
+      CHECK(d.report().malformed == 0);
+      CHECK(cutPicture(d.image(), off, img.width, img.height).pixels == img.pixels);
+    }
+  }
+  Tek4125Profile compact;
+  compact.forms = "compact";
+  Tek4125Profile compactOn = compact;
+  applyOverride(compactOn, "xy-short=on");  // compact's own short forms go further: no change
+  const IndexedImage img = scene(160, 120, 200);
+  CHECK(encode(img, compact) == encode(img, compactOn));
+}
+
+TEST_CASE("ru-bits=fit: compact writes as few bits a pixel as the palette needs, strict ignores it") {
+  for (int colors : {20, 40, 100}) {
+    INFO(colors << " colours");
+    const IndexedImage img = scene(301, 97, colors);
+    Tek4125Profile compact;
+    compact.forms = "compact";
+    Tek4125Profile fit = compact;
+    applyOverride(fit, "ru-bits=fit");
+    const int bits = colors <= 32 ? 5 : colors <= 64 ? 6 : 7;
+    CHECK(fit.pixelBitsFor(colors) == bits);
+    CHECK(compact.pixelBitsFor(colors) == 8);
+    const auto planes = encode(img, compact), fitted = encode(img, fit);
+    INFO(planes.size() << " bytes at 8 bits, " << fitted.size() << " at " << bits);
+    CHECK(fitted.size() < planes.size());
+    const std::vector<Command> cs = commands(fitted);
+    const Command ru = cs[firstOf(cs, {"RU"})];
+    CHECK(fitted[ru.at + 2] == '0' + bits);  // RU 1 11 <bits>
+    Tek4125Decoder d(compact);  // the reading of RU's bits is the default (pixel-bits=ru)
+    d.feed(fitted);
+    d.finish();
+    CHECK(d.report().malformed == 0);
+    CHECK(cutPicture(d.image(), compact, img.width, img.height).pixels == img.pixels);
+    Tek4125Profile strictFit = strictProfile();
+    applyOverride(strictFit, "ru-bits=fit");  // no source writes such depths: strict stays at its planes
+    CHECK(encode(img, strictFit) == encode(img, strictProfile()));
+  }
+  CHECK(Tek4125Profile{}.pixelBitsFor(16) == 4);
+}
