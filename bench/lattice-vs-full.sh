@@ -9,9 +9,10 @@
 # alike: lattice mode with its table built in the run (what a first render
 # costs), lattice mode with its table read from a .lht cache (a copy of the
 # scene with `cache = ...` added to each [[lattices]]: what every later render
-# costs), and --full. Reported: the median wall seconds of each over RUNS
-# rounds, and the ratios cached/full and built/full (below 1: the lattice is
-# faster). The hair variants swap the Plate 6 hair's object (a polyline: CSG
+# costs), and --full. Reported: the median CPU seconds (user + sys, the
+# work done, which a loaded machine disturbs less than the wall clock) of
+# each over RUNS rounds, the ratios cached/full and built/full (below 1: the
+# lattice is faster), and the median wall seconds of the cached and full runs. The hair variants swap the Plate 6 hair's object (a polyline: CSG
 # of 10 spheres and 9 cylinders) for a capsule (one closed-form leaf, the
 # thistle's), so the CSG and the closed-form hair are both measured.
 # Options: --runs N (default 3), --threads T (default 1), --size WxH (default:
@@ -51,16 +52,16 @@ cases=(
   "Plate 7, CSG hair|scenes/fuzzy-sphere-5000.toml|"
 )
 
-seconds() { # wall seconds of one render
-  /usr/bin/time -f '%e' -o "$work/t" "$lattice" render "$@" "${size_args[@]}" --threads "$threads" -q \
+seconds() { # "cpu wall" seconds of one render
+  /usr/bin/time -f '%U %S %e' -o "$work/t" "$lattice" render "$@" "${size_args[@]}" --threads "$threads" -q \
     -o "$work/x.png" >/dev/null 2>&1 || bench_die "render failed: $*" 1
-  cat "$work/t"
+  awk '{ printf "%.2f %.2f\n", $1 + $2, $3 }' "$work/t"
 }
 
 report() {
-  echo "# lattice mode against --full, whole process, wall s, median of $runs; $threads thread(s)"
+  echo "# lattice mode against --full, whole process, CPU s (user+sys) and wall s, median of $runs; $threads thread(s)"
   echo "# $(nproc) cores, load average $(bench_loadavg) at start, $(date -u +%Y-%m-%dT%H:%MZ)"
-  printf '%-24s %10s %10s %10s %12s %12s\n' case built_s cached_s full_s cached/full built/full
+  printf '%-24s %9s %9s %9s %12s %11s %12s %10s\n' case built_cpu cached_cpu full_cpu cached/full built/full cached_wall full_wall
   local entry name scene flags
   for entry in "${cases[@]}"; do
     IFS='|' read -r name scene flags <<<"$entry"
@@ -70,17 +71,22 @@ report() {
     cached_copy "$scene" "$copy"
     rm -f "$work"/*.lht
     seconds "$copy" "${extra[@]}" >/dev/null  # writes the cache
-    local -a built=() cached=() full=()
+    local -a built=() cached=() full=() cachedWall=() fullWall=()
+    local cpu wall
     for ((r = 0; r < runs; r++)); do
-      built+=("$(seconds "$scene" "${extra[@]}")")
-      cached+=("$(seconds "$copy" "${extra[@]}")")
-      full+=("$(seconds "$scene" "${extra[@]}" --full)")
+      read -r cpu wall <<<"$(seconds "$scene" "${extra[@]}")"
+      built+=("$cpu")
+      read -r cpu wall <<<"$(seconds "$copy" "${extra[@]}")"
+      cached+=("$cpu") cachedWall+=("$wall")
+      read -r cpu wall <<<"$(seconds "$scene" "${extra[@]}" --full)"
+      full+=("$cpu") fullWall+=("$wall")
     done
     local b c f
     b=$(bench_median "${built[@]}") c=$(bench_median "${cached[@]}") f=$(bench_median "${full[@]}")
-    printf '%-24s %10s %10s %10s %12s %12s\n' "$name" "$b" "$c" "$f" \
+    printf '%-24s %9s %9s %9s %12s %11s %12s %10s\n' "$name" "$b" "$c" "$f" \
       "$(awk -v a="$c" -v b="$f" 'BEGIN { printf "%.2f", a / b }')" \
-      "$(awk -v a="$b" -v b="$f" 'BEGIN { printf "%.2f", a / b }')"
+      "$(awk -v a="$b" -v b="$f" 'BEGIN { printf "%.2f", a / b }')" \
+      "$(bench_median "${cachedWall[@]}")" "$(bench_median "${fullWall[@]}")"
   done
   echo "# load average $(bench_loadavg) at end"
 }
