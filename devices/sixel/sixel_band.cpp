@@ -19,10 +19,9 @@ void appendRun(std::size_t count, std::uint8_t value, std::string& out) {
   }
 }
 
-std::size_t encodeRuns(std::span<const std::uint8_t> must, std::span<const std::uint8_t> may, std::string& out) {
+void runsOf(std::span<const std::uint8_t> must, std::span<const std::uint8_t> may, std::vector<SixelRun>& runs) {
   std::size_t end = must.size();
   while (end > 0 && must[end - 1] == 0) --end;  // nothing after the last must
-  std::size_t runs = 0;
   std::size_t x = 0;
   while (x < end) {
     std::uint8_t low = must[x], high = may[x];
@@ -33,11 +32,16 @@ std::size_t encodeRuns(std::span<const std::uint8_t> must, std::span<const std::
       low = l;
       high = h;
     }
-    appendRun(y - x, low, out);
-    ++runs;
+    runs.push_back(SixelRun{x, y - x, low});
     x = y;
   }
-  return runs;
+}
+
+std::size_t encodeRuns(std::span<const std::uint8_t> must, std::span<const std::uint8_t> may, std::string& out) {
+  std::vector<SixelRun> runs;
+  runsOf(must, may, runs);
+  for (const SixelRun& r : runs) appendRun(r.count, r.value, out);
+  return runs.size();
 }
 
 SixelBandEncoder::SixelBandEncoder(int width, int registers)
@@ -45,13 +49,144 @@ SixelBandEncoder::SixelBandEncoder(int width, int registers)
       count_(static_cast<std::size_t>(registers), 0),
       must_(static_cast<std::size_t>(width)),
       later_(static_cast<std::size_t>(width)),
-      may_(static_cast<std::size_t>(width)) {}
+      may_(static_cast<std::size_t>(width)),
+      regFirst_(static_cast<std::size_t>(registers), 0),
+      regCount_(static_cast<std::size_t>(registers), 0),
+      lastFound_(static_cast<std::size_t>(registers), 0),
+      first_(static_cast<std::size_t>(registers), 0),
+      end_(static_cast<std::size_t>(registers), 0) {}
+
+void SixelBandEncoder::passRuns(int reg, std::size_t first, std::size_t end) {
+  // Left of its first must a pass may still set free bits, so its first run
+  // may start at column 0 (one run where a blank and a run would be two); a
+  // first run that stays blank is dropped by cutPasses.
+  for (std::size_t x = 0; x < first; ++x) may_[x] = later_[x];
+  first = 0;
+  Pass pass{reg, runs_.size(), 0};
+  runsOf(std::span<const std::uint8_t>(must_).subspan(first, end - first),
+         std::span<const std::uint8_t>(may_).subspan(first, end - first), runs_);
+  for (std::size_t i = pass.firstRun; i < runs_.size(); ++i) runs_[i].start += first;
+  pass.lastRun = runs_.size();
+  passes_.push_back(pass);
+}
+
+void SixelBandEncoder::cutPasses(std::size_t gap) {
+  segments_.clear();
+  for (std::size_t rank = 0; rank < passes_.size(); ++rank) {
+    const Pass& pass = passes_[rank];
+    const auto reg = static_cast<std::size_t>(pass.reg);
+    regFirst_[reg] = segments_.size();
+    Segment s;
+    s.reg = pass.reg;
+    s.firstRun = pass.firstRun;
+    auto close = [&](std::size_t lastRun) {
+      if (lastRun == s.firstRun) return;
+      s.lastRun = lastRun;
+      s.start = runs_[s.firstRun].start;
+      s.end = runs_[lastRun - 1].start + runs_[lastRun - 1].count;
+      segments_.push_back(s);
+    };
+    for (std::size_t i = pass.firstRun; i < pass.lastRun; ++i)
+      if (runs_[i].value == 0 && (runs_[i].count >= gap || i == pass.firstRun)) {  // a long blank ends a segment, and is dropped
+        close(i);
+        s.firstRun = i + 1;
+      }
+    close(pass.lastRun);
+    regCount_[reg] = segments_.size() - regFirst_[reg];
+  }
+}
+
+std::size_t SixelBandEncoder::segmentAt(PaletteIndex reg, std::size_t x) {
+  std::size_t j = lastFound_[reg];  // runs go left to right: usually the one found last
+  if (j < segments_.size() && segments_[j].start <= x && x < segments_[j].end) return j;
+  // The register's segments are [regFirst_, regFirst_ + regCount_), by start:
+  // the last one starting at or before x.
+  j = regFirst_[reg];
+  for (std::size_t step = regCount_[reg]; step > 1;) {
+    const std::size_t half = step / 2;
+    if (segments_[j + half].start <= x) j += half, step -= half;
+    else step = half;
+  }
+  lastFound_[reg] = j;
+  return j;
+}
+
+void SixelBandEncoder::linkSegments(std::span<const PaletteIndex> band, int rows) {
+  const std::size_t n = segments_.size();
+  const std::size_t w = static_cast<std::size_t>(width_);
+  if (after_.size() < n) after_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) after_[i].clear();
+  stamp_.assign(n, n);
+  std::fill(lastFound_.begin(), lastFound_.end(), n);
+  // Segments are stored by rank, each register's left to right: where a
+  // segment sets a bit of a later register's pixel, that register's segment
+  // covering the column must be written after it.
+  for (std::size_t i = 0; i < n; ++i) {
+    const Segment& s = segments_[i];
+    for (std::size_t r = s.firstRun; r < s.lastRun; ++r) {
+      const SixelRun& run = runs_[r];
+      if (run.value == 0) continue;
+      for (std::size_t x = run.start; x < run.start + run.count; ++x)
+        for (int row = 0; row < rows; ++row) {
+          if ((run.value >> row & 1) == 0) continue;
+          const PaletteIndex owner = band[static_cast<std::size_t>(row) * w + x];
+          if (owner == s.reg) continue;
+          const std::size_t j = segmentAt(owner, x);
+          if (stamp_[j] == i) continue;
+          stamp_[j] = i;
+          after_[i].push_back(j);
+          ++segments_[j].waitingFor;
+        }
+    }
+  }
+}
+
+void SixelBandEncoder::writeLines(std::string& out) {
+  const std::size_t n = segments_.size();
+  byStart_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) byStart_[i] = i;
+  std::stable_sort(byStart_.begin(), byStart_.end(),
+                   [&](std::size_t a, std::size_t b) { return segments_[a].start < segments_[b].start; });
+  // Edges go from a register to later ones only, so some segment is always
+  // ready and every line writes at least one: the loop ends.
+  std::size_t left = n;
+  for (bool firstLine = true; left > 0; firstLine = false) {
+    if (!firstLine) out += kCarriageReturn;
+    ++stats_.lines;
+    std::size_t x = 0;
+    for (std::size_t i : byStart_) {
+      Segment& s = segments_[i];
+      if (s.written || s.waitingFor > 0 || s.start < x) continue;
+      if (s.start > x) appendRun(s.start - x, 0, out);
+      if (s.reg != lastRegister_) fmt::format_to(std::back_inserter(out), "{}{}", kColour, s.reg);
+      lastRegister_ = s.reg;
+      for (std::size_t r = s.firstRun; r < s.lastRun; ++r) appendRun(runs_[r].count, runs_[r].value, out);
+      stats_.runs += s.lastRun - s.firstRun;
+      x = s.end;
+      s.written = true;
+      --left;
+      for (std::size_t j : after_[i]) --segments_[j].waitingFor;
+    }
+  }
+  segmentsWritten_ = n;
+}
 
 void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std::string& out) {
   const std::size_t w = static_cast<std::size_t>(width_);
   order_.clear();
-  for (std::size_t i = 0; i < static_cast<std::size_t>(rows) * w; ++i)
-    if (count_[band[i]]++ == 0) order_.push_back(band[i]);
+  for (int r = 0; r < rows; ++r) {
+    const PaletteIndex* row = band.data() + static_cast<std::size_t>(r) * w;
+    for (std::size_t x = 0; x < w; ++x) {
+      const PaletteIndex reg = row[x];
+      if (count_[reg]++ == 0) {
+        order_.push_back(reg);
+        first_[reg] = x;
+        end_[reg] = x + 1;
+      }
+      first_[reg] = std::min(first_[reg], x);
+      end_[reg] = std::max(end_[reg], x + 1);
+    }
+  }
   std::sort(order_.begin(), order_.end(), [&](int a, int b) {
     return count_[static_cast<std::size_t>(a)] != count_[static_cast<std::size_t>(b)]
                ? count_[static_cast<std::size_t>(a)] > count_[static_cast<std::size_t>(b)]
@@ -60,24 +195,48 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
   // Every pixel is still to be drawn before the first pass.
   const std::uint8_t valid = static_cast<std::uint8_t>((1u << rows) - 1);
   std::fill(later_.begin(), later_.end(), valid);
-  for (std::size_t pass = 0; pass < order_.size(); ++pass) {
-    const int reg = order_[pass];
-    std::fill(must_.begin(), must_.end(), 0);
+  runs_.clear();
+  passes_.clear();
+  for (const int reg : order_) {
+    // Only the register's own columns: must_ is zero elsewhere, and may_ is read only here.
+    const std::size_t first = first_[static_cast<std::size_t>(reg)], end = end_[static_cast<std::size_t>(reg)];
     for (int r = 0; r < rows; ++r) {
       const PaletteIndex* row = band.data() + static_cast<std::size_t>(r) * w;
-      for (std::size_t x = 0; x < w; ++x)
+      for (std::size_t x = first; x < end; ++x)
         if (row[x] == reg) must_[x] = static_cast<std::uint8_t>(must_[x] | (1u << r));
     }
-    for (std::size_t x = 0; x < w; ++x) {
+    for (std::size_t x = first; x < end; ++x) {
       later_[x] = static_cast<std::uint8_t>(later_[x] & ~must_[x]);
       may_[x] = static_cast<std::uint8_t>(must_[x] | later_[x]);
     }
-    if (pass > 0) out += kCarriageReturn;
-    if (reg != lastRegister_) fmt::format_to(std::back_inserter(out), "{}{}", kColour, reg);
-    lastRegister_ = reg;
-    stats_.runs += encodeRuns(must_, may_, out);
-    ++stats_.passes;
+    passRuns(reg, first, end);
+    std::fill(must_.begin() + static_cast<std::ptrdiff_t>(first), must_.begin() + static_cast<std::ptrdiff_t>(end), 0);
   }
+  // The band as lines for each cut, the shortest kept (the first of equals).
+  const int selected = lastRegister_;
+  std::string best;
+  SixelBandStats bestStats;
+  int bestLast = selected;
+  for (std::size_t gap : kSplitGaps) {
+    candidate_.clear();
+    lastRegister_ = selected;
+    cutPasses(gap);
+    linkSegments(band, rows);
+    const SixelBandStats before = stats_;
+    writeLines(candidate_);
+    if (best.empty() || candidate_.size() < best.size()) {
+      best.swap(candidate_);
+      bestStats = {order_.size(), stats_.lines - before.lines, segmentsWritten_, stats_.runs - before.runs};
+      bestLast = lastRegister_;
+    }
+    stats_ = before;
+  }
+  out += best;
+  lastRegister_ = bestLast;
+  stats_.passes += bestStats.passes;
+  stats_.lines += bestStats.lines;
+  stats_.segments += bestStats.segments;
+  stats_.runs += bestStats.runs;
   for (int reg : order_) count_[static_cast<std::size_t>(reg)] = 0;
 }
 
