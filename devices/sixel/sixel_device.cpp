@@ -4,6 +4,7 @@
 
 #include "devices/sixel/sixel_decoder.hpp"
 #include "devices/sixel/sixel_driver.hpp"
+#include "devices/sixel/sixel_run_cost.hpp"
 #include "devices/stream_shape.hpp"
 
 namespace lattice::sixel {
@@ -48,6 +49,7 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   d.showsOnTerminal = true;
   // A sixel stream is 7-bit text (but for an 8-bit DCS) with a DCS ... q.
   d.recognise = [](std::span<const std::uint8_t> head) { return devices::hasSixelIntroducer(head); };
+  d.runCost = [](const IndexedImage& picture) { return sixelRunCost(picture); };
   return d;
 }
 
