@@ -60,7 +60,7 @@ void SixelBandEncoder::passRuns(int reg, std::size_t first, std::size_t end) {
   // Left of its first must a pass may still set free bits, so its first run
   // may start at column 0 (one run where a blank and a run would be two); a
   // first run that stays blank is dropped by cutPasses.
-  for (std::size_t x = 0; x < first; ++x) may_[x] = later_[x];
+  std::copy(later_.begin(), later_.begin() + static_cast<std::ptrdiff_t>(first), may_.begin());
   first = 0;
   Pass pass{reg, runs_.size(), 0};
   runsOf(std::span<const std::uint8_t>(must_).subspan(first, end - first),
@@ -111,32 +111,47 @@ std::size_t SixelBandEncoder::segmentAt(PaletteIndex reg, std::size_t x) {
   return j;
 }
 
-void SixelBandEncoder::linkSegments(std::span<const PaletteIndex> band, int rows) {
-  const std::size_t n = segments_.size();
+void SixelBandEncoder::findOverwrites(std::span<const PaletteIndex> band, int rows) {
   const std::size_t w = static_cast<std::size_t>(width_);
+  overwrites_.clear();
+  for (const Pass& pass : passes_)
+    for (std::size_t r = pass.firstRun; r < pass.lastRun; ++r) {
+      const SixelRun& run = runs_[r];
+      for (int row = 0; row < rows; ++row) {
+        if ((run.value >> row & 1) == 0) continue;
+        const PaletteIndex* line = band.data() + static_cast<std::size_t>(row) * w;
+        // Stretches of one owner along the row, other than the pass's own register.
+        for (std::size_t x = run.start, end = run.start + run.count; x < end;) {
+          const PaletteIndex owner = line[x];
+          std::size_t y = x + 1;
+          while (y < end && line[y] == owner) ++y;
+          if (owner != pass.reg) overwrites_.push_back(Overwrite{r, owner, x, y});
+          x = y;
+        }
+      }
+    }
+}
+
+void SixelBandEncoder::linkSegments() {
+  const std::size_t n = segments_.size();
   if (after_.size() < n) after_.resize(n);
   for (std::size_t i = 0; i < n; ++i) after_[i].clear();
   stamp_.assign(n, n);
   std::fill(lastFound_.begin(), lastFound_.end(), n);
-  // Segments are stored by rank, each register's left to right: where a
-  // segment sets a bit of a later register's pixel, that register's segment
-  // covering the column must be written after it.
-  for (std::size_t i = 0; i < n; ++i) {
-    const Segment& s = segments_[i];
-    for (std::size_t r = s.firstRun; r < s.lastRun; ++r) {
-      const SixelRun& run = runs_[r];
-      if (run.value == 0) continue;
-      for (std::size_t x = run.start; x < run.start + run.count; ++x)
-        for (int row = 0; row < rows; ++row) {
-          if ((run.value >> row & 1) == 0) continue;
-          const PaletteIndex owner = band[static_cast<std::size_t>(row) * w + x];
-          if (owner == s.reg) continue;
-          const std::size_t j = segmentAt(owner, x);
-          if (stamp_[j] == i) continue;
-          stamp_[j] = i;
-          after_[i].push_back(j);
-          ++segments_[j].waitingFor;
-        }
+  segmentOfRun_.assign(runs_.size(), n);  // n: a dropped blank
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t r = segments_[i].firstRun; r < segments_[i].lastRun; ++r) segmentOfRun_[r] = i;
+  // Where a segment sets a bit of a later register's pixel, that register's
+  // segments covering the stretch are written after it.
+  for (const Overwrite& o : overwrites_) {
+    const std::size_t i = segmentOfRun_[o.run];
+    if (i == n) continue;
+    for (std::size_t j = segmentAt(o.owner, o.start); j < n && segments_[j].reg == o.owner && segments_[j].start < o.end;
+         ++j) {
+      if (segments_[j].end <= o.start || stamp_[j] == i) continue;
+      stamp_[j] = i;
+      after_[i].push_back(j);
+      ++segments_[j].waitingFor;
     }
   }
 }
@@ -167,6 +182,7 @@ void SixelBandEncoder::writeLines(std::string& out) {
       --left;
       for (std::size_t j : after_[i]) --segments_[j].waitingFor;
     }
+    std::erase_if(byStart_, [&](std::size_t i) { return segments_[i].written; });
   }
   segmentsWritten_ = n;
 }
@@ -212,6 +228,7 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
     passRuns(reg, first, end);
     std::fill(must_.begin() + static_cast<std::ptrdiff_t>(first), must_.begin() + static_cast<std::ptrdiff_t>(end), 0);
   }
+  findOverwrites(band, rows);
   // The band as lines for each cut, the shortest kept (the first of equals).
   const int selected = lastRegister_;
   std::string best;
@@ -221,7 +238,7 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
     candidate_.clear();
     lastRegister_ = selected;
     cutPasses(gap);
-    linkSegments(band, rows);
+    linkSegments();
     const SixelBandStats before = stats_;
     writeLines(candidate_);
     if (best.empty() || candidate_.size() < best.size()) {

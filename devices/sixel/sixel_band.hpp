@@ -95,6 +95,12 @@ class SixelBandEncoder {
     int reg = 0;
     std::size_t firstRun = 0, lastRun = 0;  // runs_[firstRun, lastRun)
   };
+  // Run `run` sets bits of register `owner`'s pixels in columns [start, end).
+  struct Overwrite {
+    std::size_t run = 0;
+    PaletteIndex owner = 0;
+    std::size_t start = 0, end = 0;
+  };
   struct Segment {
     int reg = 0;
     std::size_t start = 0, end = 0;        // columns [start, end)
@@ -105,7 +111,8 @@ class SixelBandEncoder {
   void passRuns(int reg, std::size_t first, std::size_t end);
   void cutPasses(std::size_t gap);
   std::size_t segmentAt(PaletteIndex reg, std::size_t x);  // the register's segment covering column x
-  void linkSegments(std::span<const PaletteIndex> band, int rows);
+  void findOverwrites(std::span<const PaletteIndex> band, int rows);  // once a band, for every cut
+  void linkSegments();
   void writeLines(std::string& out);
 
   int width_;
@@ -122,6 +129,8 @@ class SixelBandEncoder {
   std::string candidate_;
   std::vector<std::size_t> byStart_;  // segments_ indices, leftmost first
   std::vector<std::vector<std::size_t>> after_;  // per segment, the segments waiting for it
+  std::vector<Overwrite> overwrites_;
+  std::vector<std::size_t> segmentOfRun_;        // per run, its segment in this cut
   std::vector<std::size_t> stamp_;               // per segment, the last one linked to it
   std::vector<std::size_t> regFirst_, regCount_;  // per register, its segments in segments_
   std::vector<std::size_t> lastFound_;           // per register, the segment linkSegments found last
