@@ -1,33 +1,55 @@
 #include "devices/sixel/sixel_band.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
+#include <charconv>
 
 #include "devices/sixel/sixel_forms.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::sixel {
+
+namespace {
+
+void appendNumber(std::size_t n, std::string& out) {
+  char digits[24];
+  const auto end = std::to_chars(digits, digits + sizeof digits, n).ptr;
+  out.append(digits, end);
+}
+
+std::size_t digitsOf(std::size_t n) {
+  std::size_t d = 1;
+  for (; n >= 10; n /= 10) ++d;
+  return d;
+}
+
+// What appendRun writes, without writing it.
+std::size_t runBytes(std::size_t count) { return count >= 4 ? digitsOf(count) + 2 : count; }
+
+}  // namespace
 
 void appendRun(std::size_t count, std::uint8_t value, std::string& out) {
   const char c = static_cast<char>(kSixelFirst + value);
   if (count >= 4) {
     out += kRepeat;
-    fmt::format_to(std::back_inserter(out), "{}", count);
+    appendNumber(count, out);
     out += c;
   } else {
     out.append(count, c);
   }
 }
 
-void runsOf(std::span<const std::uint8_t> must, std::span<const std::uint8_t> may, std::vector<SixelRun>& runs) {
-  std::size_t end = must.size();
+namespace {
+
+// runsOf over must[0, end) with the allowed bits given by may(x).
+template <typename May>
+void appendRuns(const std::uint8_t* must, May may, std::size_t end, std::vector<SixelRun>& runs) {
   while (end > 0 && must[end - 1] == 0) --end;  // nothing after the last must
   std::size_t x = 0;
   while (x < end) {
-    std::uint8_t low = must[x], high = may[x];
+    std::uint8_t low = must[x], high = may(x);
     std::size_t y = x + 1;
     for (; y < end; ++y) {
-      const std::uint8_t l = static_cast<std::uint8_t>(low | must[y]), h = static_cast<std::uint8_t>(high & may[y]);
+      const std::uint8_t l = static_cast<std::uint8_t>(low | must[y]), h = static_cast<std::uint8_t>(high & may(y));
       if ((l & ~h) != 0) break;  // no one value fits every column of the run
       low = l;
       high = h;
@@ -35,6 +57,12 @@ void runsOf(std::span<const std::uint8_t> must, std::span<const std::uint8_t> ma
     runs.push_back(SixelRun{x, y - x, low});
     x = y;
   }
+}
+
+}  // namespace
+
+void runsOf(std::span<const std::uint8_t> must, std::span<const std::uint8_t> may, std::vector<SixelRun>& runs) {
+  appendRuns(must.data(), [&](std::size_t x) { return may[x]; }, must.size(), runs);
 }
 
 std::size_t encodeRuns(std::span<const std::uint8_t> must, std::span<const std::uint8_t> may, std::string& out) {
@@ -49,23 +77,21 @@ SixelBandEncoder::SixelBandEncoder(int width, int registers)
       count_(static_cast<std::size_t>(registers), 0),
       must_(static_cast<std::size_t>(width)),
       later_(static_cast<std::size_t>(width)),
-      may_(static_cast<std::size_t>(width)),
       regFirst_(static_cast<std::size_t>(registers), 0),
       regCount_(static_cast<std::size_t>(registers), 0),
       lastFound_(static_cast<std::size_t>(registers), 0),
-      first_(static_cast<std::size_t>(registers), 0),
-      end_(static_cast<std::size_t>(registers), 0) {}
+      end_(static_cast<std::size_t>(registers), 0),
+      offset_(static_cast<std::size_t>(registers), 0) {}
 
-void SixelBandEncoder::passRuns(int reg, std::size_t first, std::size_t end) {
-  // Left of its first must a pass may still set free bits, so its first run
-  // may start at column 0 (one run where a blank and a run would be two); a
-  // first run that stays blank is dropped by cutPasses.
-  std::copy(later_.begin(), later_.begin() + static_cast<std::ptrdiff_t>(first), may_.begin());
-  first = 0;
+void SixelBandEncoder::passRuns(int reg, std::size_t end) {
+  // From column 0: left of its first must a pass may still set free bits, so
+  // its first run may start there (one run where a blank and a run would be
+  // two); a first run that stays blank is dropped by cutPasses. A pass may
+  // set its own bits and those of pixels drawn later.
   Pass pass{reg, runs_.size(), 0};
-  runsOf(std::span<const std::uint8_t>(must_).subspan(first, end - first),
-         std::span<const std::uint8_t>(may_).subspan(first, end - first), runs_);
-  for (std::size_t i = pass.firstRun; i < runs_.size(); ++i) runs_[i].start += first;
+  const std::uint8_t* must = must_.data();
+  const std::uint8_t* later = later_.data();
+  appendRuns(must, [=](std::size_t x) { return static_cast<std::uint8_t>(must[x] | later[x]); }, end, runs_);
   pass.lastRun = runs_.size();
   passes_.push_back(pass);
 }
@@ -156,27 +182,29 @@ void SixelBandEncoder::linkSegments() {
   }
 }
 
-void SixelBandEncoder::writeLines(std::string& out) {
+std::size_t SixelBandEncoder::planLines(int selected) {
   const std::size_t n = segments_.size();
   byStart_.resize(n);
   for (std::size_t i = 0; i < n; ++i) byStart_[i] = i;
   std::stable_sort(byStart_.begin(), byStart_.end(),
                    [&](std::size_t a, std::size_t b) { return segments_[a].start < segments_[b].start; });
+  plan_.clear();
+  std::size_t bytes = 0;
+  int reg = selected;
   // Edges go from a register to later ones only, so some segment is always
   // ready and every line writes at least one: the loop ends.
   std::size_t left = n;
   for (bool firstLine = true; left > 0; firstLine = false) {
-    if (!firstLine) out += kCarriageReturn;
-    ++stats_.lines;
+    if (!firstLine) plan_.push_back(kLineBreak), ++bytes;
     std::size_t x = 0;
     for (std::size_t i : byStart_) {
       Segment& s = segments_[i];
       if (s.written || s.waitingFor > 0 || s.start < x) continue;
-      if (s.start > x) appendRun(s.start - x, 0, out);
-      if (s.reg != lastRegister_) fmt::format_to(std::back_inserter(out), "{}{}", kColour, s.reg);
-      lastRegister_ = s.reg;
-      for (std::size_t r = s.firstRun; r < s.lastRun; ++r) appendRun(runs_[r].count, runs_[r].value, out);
-      stats_.runs += s.lastRun - s.firstRun;
+      plan_.push_back(i);
+      if (s.start > x) bytes += runBytes(s.start - x);
+      if (s.reg != reg) bytes += 1 + digitsOf(static_cast<std::size_t>(s.reg));
+      reg = s.reg;
+      for (std::size_t r = s.firstRun; r < s.lastRun; ++r) bytes += runBytes(runs_[r].count);
       x = s.end;
       s.written = true;
       --left;
@@ -184,7 +212,31 @@ void SixelBandEncoder::writeLines(std::string& out) {
     }
     std::erase_if(byStart_, [&](std::size_t i) { return segments_[i].written; });
   }
-  segmentsWritten_ = n;
+  return bytes;
+}
+
+void SixelBandEncoder::writePlan(std::string& out) {
+  std::size_t x = 0;
+  for (std::size_t i : bestPlan_) {
+    if (i == kLineBreak) {
+      out += kCarriageReturn;
+      ++stats_.lines;
+      x = 0;
+      continue;
+    }
+    const Segment& s = bestSegments_[i];
+    if (s.start > x) appendRun(s.start - x, 0, out);
+    if (s.reg != lastRegister_) {
+      out += kColour;
+      appendNumber(static_cast<std::size_t>(s.reg), out);
+    }
+    lastRegister_ = s.reg;
+    for (std::size_t r = s.firstRun; r < s.lastRun; ++r) appendRun(runs_[r].count, runs_[r].value, out);
+    stats_.runs += s.lastRun - s.firstRun;
+    x = s.end;
+  }
+  ++stats_.lines;
+  stats_.segments += bestSegments_.size();
 }
 
 void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std::string& out) {
@@ -196,10 +248,8 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
       const PaletteIndex reg = row[x];
       if (count_[reg]++ == 0) {
         order_.push_back(reg);
-        first_[reg] = x;
         end_[reg] = x + 1;
       }
-      first_[reg] = std::min(first_[reg], x);
       end_[reg] = std::max(end_[reg], x + 1);
     }
   }
@@ -213,47 +263,48 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
   std::fill(later_.begin(), later_.end(), valid);
   runs_.clear();
   passes_.clear();
+  // Each register's pixels (row * width + column), by a counting sort, so
+  // that a pass touches only its own pixels and the columns its runs scan.
+  std::size_t next = 0;
   for (const int reg : order_) {
-    // Only the register's own columns: must_ is zero elsewhere, and may_ is read only here.
-    const std::size_t first = first_[static_cast<std::size_t>(reg)], end = end_[static_cast<std::size_t>(reg)];
-    for (int r = 0; r < rows; ++r) {
-      const PaletteIndex* row = band.data() + static_cast<std::size_t>(r) * w;
-      for (std::size_t x = first; x < end; ++x)
-        if (row[x] == reg) must_[x] = static_cast<std::uint8_t>(must_[x] | (1u << r));
+    offset_[static_cast<std::size_t>(reg)] = next;
+    next += count_[static_cast<std::size_t>(reg)];
+  }
+  pixels_.resize(next);
+  for (std::size_t p = 0; p < next; ++p) pixels_[offset_[band[p]]++] = static_cast<std::uint32_t>(p);
+  std::size_t from = 0;
+  for (const int reg : order_) {
+    const std::size_t to = from + count_[static_cast<std::size_t>(reg)];
+    for (std::size_t i = from; i < to; ++i) {
+      const std::size_t x = pixels_[i] % w;
+      must_[x] = static_cast<std::uint8_t>(must_[x] | (1u << (pixels_[i] / w)));
     }
-    for (std::size_t x = first; x < end; ++x) {
+    for (std::size_t i = from; i < to; ++i) {
+      const std::size_t x = pixels_[i] % w;
       later_[x] = static_cast<std::uint8_t>(later_[x] & ~must_[x]);
-      may_[x] = static_cast<std::uint8_t>(must_[x] | later_[x]);
     }
-    passRuns(reg, first, end);
-    std::fill(must_.begin() + static_cast<std::ptrdiff_t>(first), must_.begin() + static_cast<std::ptrdiff_t>(end), 0);
+    passRuns(reg, end_[static_cast<std::size_t>(reg)]);
+    for (std::size_t i = from; i < to; ++i) must_[pixels_[i] % w] = 0;
+    from = to;
   }
   findOverwrites(band, rows);
-  // The band as lines for each cut, the shortest kept (the first of equals).
-  const int selected = lastRegister_;
-  std::string best;
-  SixelBandStats bestStats;
-  int bestLast = selected;
+  // The band as lines for each cut; the shortest is written (the first of equals).
+  std::size_t best = SIZE_MAX;
   for (std::size_t gap : kSplitGaps) {
-    candidate_.clear();
-    lastRegister_ = selected;
     cutPasses(gap);
     linkSegments();
-    const SixelBandStats before = stats_;
-    writeLines(candidate_);
-    if (best.empty() || candidate_.size() < best.size()) {
-      best.swap(candidate_);
-      bestStats = {order_.size(), stats_.lines - before.lines, segmentsWritten_, stats_.runs - before.runs};
-      bestLast = lastRegister_;
+    const std::size_t bytes = planLines(lastRegister_);
+    if (bytes < best) {
+      best = bytes;
+      bestPlan_.swap(plan_);
+      bestSegments_.swap(segments_);
     }
-    stats_ = before;
   }
-  out += best;
-  lastRegister_ = bestLast;
-  stats_.passes += bestStats.passes;
-  stats_.lines += bestStats.lines;
-  stats_.segments += bestStats.segments;
-  stats_.runs += bestStats.runs;
+  const std::size_t before = out.size();
+  writePlan(out);
+  if (out.size() - before != best)  // planLines' count and writePlan's bytes are two codings of one form
+    throw Error(ErrorKind::Internal, "sixel band: the bytes written are not the plan's count");
+  stats_.passes += order_.size();
   for (int reg : order_) count_[static_cast<std::size_t>(reg)] = 0;
 }
 

@@ -108,12 +108,16 @@ class SixelBandEncoder {
     std::size_t waitingFor = 0;            // segments that must precede it, not yet written
     bool written = false;
   };
-  void passRuns(int reg, std::size_t first, std::size_t end);
+  void passRuns(int reg, std::size_t end);
   void cutPasses(std::size_t gap);
   std::size_t segmentAt(PaletteIndex reg, std::size_t x);  // the register's segment covering column x
   void findOverwrites(std::span<const PaletteIndex> band, int rows);  // once a band, for every cut
   void linkSegments();
-  void writeLines(std::string& out);
+  // Lays the segments out in lines (plan_) and returns the bytes they take,
+  // `selected` being the register selected before the band.
+  std::size_t planLines(int selected);
+  void writePlan(std::string& out);  // bestPlan_ of bestSegments_
+  static constexpr std::size_t kLineBreak = SIZE_MAX;  // `$` in a plan
 
   int width_;
   int lastRegister_ = -1;  // selected at the end of the previous band
@@ -121,12 +125,11 @@ class SixelBandEncoder {
   std::vector<int> order_;            // registers present, most pixels first
   std::vector<std::uint8_t> must_;    // this pass's bits per column
   std::vector<std::uint8_t> later_;   // per column, bits of pixels drawn by passes not yet done
-  std::vector<std::uint8_t> may_;
   std::vector<SixelRun> runs_;        // every pass's runs, this band
   std::vector<Pass> passes_;          // in order_
   std::vector<Segment> segments_;     // by pass, each pass's left to right
-  std::size_t segmentsWritten_ = 0;
-  std::string candidate_;
+  std::vector<std::size_t> plan_, bestPlan_;  // segment indices and kLineBreak, in writing order
+  std::vector<Segment> bestSegments_;
   std::vector<std::size_t> byStart_;  // segments_ indices, leftmost first
   std::vector<std::vector<std::size_t>> after_;  // per segment, the segments waiting for it
   std::vector<Overwrite> overwrites_;
@@ -134,7 +137,9 @@ class SixelBandEncoder {
   std::vector<std::size_t> stamp_;               // per segment, the last one linked to it
   std::vector<std::size_t> regFirst_, regCount_;  // per register, its segments in segments_
   std::vector<std::size_t> lastFound_;           // per register, the segment linkSegments found last
-  std::vector<std::size_t> first_, end_;         // per register, its columns in this band [first, end)
+  std::vector<std::size_t> end_;                 // per register, one past its last column in this band
+  std::vector<std::size_t> offset_;              // per register, where its pixels start in pixels_
+  std::vector<std::uint32_t> pixels_;            // the band's pixels, by register
   SixelBandStats stats_;
 };
 
