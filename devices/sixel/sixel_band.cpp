@@ -263,7 +263,7 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
   std::fill(later_.begin(), later_.end(), valid);
   runs_.clear();
   passes_.clear();
-  // Each register's pixels (row * width + column), by a counting sort, so
+  // Each register's pixels (column << 3 | row), by a counting sort, so
   // that a pass touches only its own pixels and the columns its runs scan.
   std::size_t next = 0;
   for (const int reg : order_) {
@@ -271,20 +271,23 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
     next += count_[static_cast<std::size_t>(reg)];
   }
   pixels_.resize(next);
-  for (std::size_t p = 0; p < next; ++p) pixels_[offset_[band[p]]++] = static_cast<std::uint32_t>(p);
+  for (int r = 0; r < rows; ++r) {
+    const PaletteIndex* row = band.data() + static_cast<std::size_t>(r) * w;
+    for (std::size_t x = 0; x < w; ++x) pixels_[offset_[row[x]]++] = static_cast<std::uint32_t>(x << 3 | unsigned(r));
+  }
   std::size_t from = 0;
   for (const int reg : order_) {
     const std::size_t to = from + count_[static_cast<std::size_t>(reg)];
     for (std::size_t i = from; i < to; ++i) {
-      const std::size_t x = pixels_[i] % w;
-      must_[x] = static_cast<std::uint8_t>(must_[x] | (1u << (pixels_[i] / w)));
+      const std::size_t x = pixels_[i] >> 3;
+      must_[x] = static_cast<std::uint8_t>(must_[x] | (1u << (pixels_[i] & 7)));
     }
     for (std::size_t i = from; i < to; ++i) {
-      const std::size_t x = pixels_[i] % w;
+      const std::size_t x = pixels_[i] >> 3;
       later_[x] = static_cast<std::uint8_t>(later_[x] & ~must_[x]);
     }
     passRuns(reg, end_[static_cast<std::size_t>(reg)]);
-    for (std::size_t i = from; i < to; ++i) must_[pixels_[i] % w] = 0;
+    for (std::size_t i = from; i < to; ++i) must_[pixels_[i] >> 3] = 0;
     from = to;
   }
   findOverwrites(band, rows);

@@ -139,7 +139,7 @@ class SixelBandEncoder {
   std::vector<std::size_t> lastFound_;           // per register, the segment linkSegments found last
   std::vector<std::size_t> end_;                 // per register, one past its last column in this band
   std::vector<std::size_t> offset_;              // per register, where its pixels start in pixels_
-  std::vector<std::uint32_t> pixels_;            // the band's pixels, by register
+  std::vector<std::uint32_t> pixels_;            // the band's pixels (column << 3 | row), by register
   SixelBandStats stats_;
 };
 
