@@ -112,7 +112,7 @@ devices::DriverStats renderToDevice(const std::function<void(IndexedSink&)>& sou
   if (replyFd >= 0) driver->answerOn(replyFd, job.port->stallTimeoutSeconds);
   if (job.rdLambda > 0 && !device.runCost)
     throw Error(ErrorKind::Usage, fmt::format("--rd-lambda: {} has no run costs; rate-distortion runs apply to "
-                                              "devices that send runs (tek4125, tek4027)",
+                                              "devices that send runs (tek4125, tek4027, sixel)",
                                               device.name));
   if (job.rdLambda > 0 && !job.wire) {
     quantize::RateDistortionSink runs(driver->sink(), device.runCost, job.rdLambda);

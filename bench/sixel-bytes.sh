@@ -1,19 +1,28 @@
 #!/usr/bin/env bash
-# Sixel bytes and time beside libsixel's img2sixel, on the same quantized
-# picture and palette (docs/sixel.md, "Bytes beside img2sixel").
+# Sixel bytes and time beside libsixel's img2sixel, like for like: the same
+# quantized picture, the same palette, the same input file, and the pixels
+# checked equal on both sides (docs/sixel.md, "Bytes beside img2sixel").
 #   bench/sixel-bytes.sh [RUNS]      (default 5; build/app/lattice must exist)
 # Method: Plate 6 (scenes/fuzzy-sphere-1000.toml, 512x512) is rendered once
-# to a truecolour PNG, then median-cut by `lattice quantize --dither none` to
-# 16 and to 256 colours: Q16.png, Q256.png. Each contender encodes that
-# picture with that palette:
-#   ours:   lattice show QK.png --set registers=K --stream ours.six
-#           (reads the PNG, its median cut finds the picture's own K colours
-#           again, encodes; checked: same pixels as QK.png via sixel2png)
-#   theirs: img2sixel -m QK.png -d none -o theirs.six QK.png
-#           (its palette is the map file's colours, no diffusion)
-# Both commands read a PNG, map it to the palette and encode, so the times
-# are whole commands; runs alternate the two, and the medians are reported
-# with the load average.
+# to a truecolour PNG and median-cut by `lattice quantize --dither none` to
+# 16 and to 256 colours (qK.png). That picture is written once as a sixel
+# stream, inK.six, which is the input of both contenders: a sixel stream is
+# the one paletted format both read. img2sixel keeps a paletted input's
+# palette and indices as they are (libsixel 1.10.3: loader.c load_sixel
+# returns PAL8 when the colours fit, encoder.c sixel_encoder_prepare_palette
+# takes a paletted frame's palette unchanged); from a PNG it cannot: Debian's
+# build reads PNG through stb_image as RGB (img2sixel -V: "libpng: no"), and
+# its median cut (-m or not) keeps 5 bits a gun (quant.c computeHistogram).
+#   ours:   lattice show inK.six --set registers=K > ours.six
+#   theirs: img2sixel -d none inK.six > theirs.six
+# Both decode the same stream and encode it again, and both write to
+# standard output redirected to a file (`--stream` would add our atomic
+# file's fsync, which img2sixel -o does not do), so the times are whole
+# commands on the same input: wall seconds and CPU (user + system) seconds
+# from bash's `time` (milliseconds); runs alternate the two, medians are reported with the
+# load average (the machine is shared: wall time waits for the CPU too). Pixels: sixel2png decodes both outputs, which must
+# equal sixel2png's picture of the input (0 pixels differing), and `lattice
+# diff` against qK.png shows the register percent rounding only.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${1:-5}
@@ -22,24 +31,37 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 "$lattice" render scenes/fuzzy-sphere-1000.toml -o "$work/plate6.png" -q 2>/dev/null
 median() { sort -n | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
-seconds() { local s e; s=$(date +%s.%N); "$@" >/dev/null 2>&1; e=$(date +%s.%N); echo "$e - $s" | bc -l; }
+# Runs "$@" with standard output to file $out; prints "wall cpu".
+timed() {
+  local TIMEFORMAT='%3R %3U %3S'
+  { time "$@" >"$out" 2>/dev/null; } 2>"$work/time"
+  awk '{print $1, $2 + $3}' "$work/time"
+}
+differing() { "$lattice" diff "$1" "$2" 2>&1 | awk '/^differing/ {print $2}'; }
+maxError() { "$lattice" diff "$1" "$2" 2>&1 | awk '/^max error/ {print $3}'; }
 echo "load: $(uptime | sed 's/.*load average: //')"
-printf '%-8s %12s %12s %8s %10s %10s %8s %s\n' colours "ours bytes" "img2sixel" ratio "ours s" "img2sixel s" ratio "pixels equal"
+printf '%-8s %10s %10s %6s %8s %8s %6s %8s %8s %6s  %s\n' colours "ours B" "img2sixel" ratio "ours s" "theirs s" ratio \
+  "ours cpu" "their cpu" ratio "pixels (differing from the input; max error against qK.png)"
 for k in 16 256; do
-  q="$work/q$k.png"
+  q="$work/q$k.png" in="$work/in$k.six"
   "$lattice" quantize "$work/plate6.png" --colors "$k" --dither none -o "$q" -q
-  ours=() theirs=()
+  "$lattice" show "$q" --set registers="$k" --stream "$in" 2>/dev/null
+  ours=() theirs=() oursCpu=() theirsCpu=()
   for ((i = 0; i < runs; i++)); do
-    ours+=("$(seconds "$lattice" show "$q" --set registers="$k" --stream "$work/ours.six")")
-    theirs+=("$(seconds img2sixel -m "$q" -d none -o "$work/theirs.six" "$q")")
+    read -r wall cpu < <(out="$work/ours.six" timed "$lattice" show "$in" --set registers="$k")
+    ours+=("$wall") oursCpu+=("$cpu")
+    read -r wall cpu < <(out="$work/theirs.six" timed img2sixel -d none "$in")
+    theirs+=("$wall") theirsCpu+=("$cpu")
   done
+  sixel2png -i "$in" -o "$work/in.png"
   sixel2png -i "$work/ours.six" -o "$work/ours.png"
   sixel2png -i "$work/theirs.six" -o "$work/theirs.png"
-  same=$("$lattice" diff "$work/ours.png" "$q" 2>&1 | grep -o 'max error *[0-9]*' || true)
-  theirsSame=$("$lattice" diff "$work/theirs.png" "$q" 2>&1 | grep -oE 'max error *[0-9]*|differing *[0-9]*' | tr '\n' ' ' || true)
   bo=$(stat -c %s "$work/ours.six") bt=$(stat -c %s "$work/theirs.six")
   mo=$(printf '%s\n' "${ours[@]}" | median) mt=$(printf '%s\n' "${theirs[@]}" | median)
-  printf '%-8s %12d %12d %8.3f %10.4f %10.4f %8.3f %s\n' "$k" "$bo" "$bt" "$(echo "$bo / $bt" | bc -l)" "$mo" "$mt" \
-    "$(echo "$mo / $mt" | bc -l)" "ours vs quantized: ${same:-?}; img2sixel vs quantized: ${theirsSame:-?}"
+  co=$(printf '%s\n' "${oursCpu[@]}" | median) ct=$(printf '%s\n' "${theirsCpu[@]}" | median)
+  printf '%-8s %10d %10d %6.3f %8.3f %8.3f %6.2f %8.3f %8.3f %6.2f  ours %s, %s; img2sixel %s, %s\n' "$k" "$bo" "$bt" \
+    "$(echo "$bo / $bt" | bc -l)" "$mo" "$mt" "$(echo "$mo / $mt" | bc -l)" "$co" "$ct" "$(echo "$co / $ct" | bc -l)" \
+    "$(differing "$work/ours.png" "$work/in.png")" "$(maxError "$work/ours.png" "$q")" \
+    "$(differing "$work/theirs.png" "$work/in.png")" "$(maxError "$work/theirs.png" "$q")"
 done
 echo "load: $(uptime | sed 's/.*load average: //')"

@@ -162,8 +162,12 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
   refuseUnless(cmd, {"--apollo-profile"}, f.device == "apollo",
                fmt::format("chooses the simulated Apollo's profile: add --device apollo, or drop it for {}",
                            png ? "a truecolour PNG" : f.device));
-  refuseUnless(cmd, {"--baud", "--flow", "--data-bits", "--parity", "--stop-bits", "--stall-timeout", "--pace"},
+  refuseUnless(cmd, {"--flow", "--data-bits", "--parity", "--stop-bits", "--stall-timeout", "--pace"},
                cmd.count("--port") > 0, "sets the serial line of --port, and none was given: add --port PORT, or drop it");
+  // --wire-seconds counts at --baud too (a device without a serial line, sixel, has no other rate).
+  refuseUnless(cmd, {"--baud"}, cmd.count("--port") > 0 || cmd.count("--wire-seconds") > 0,
+               "sets the serial line of --port, and none was given: add --port PORT (or --wire-seconds S to "
+               "count a budget at that rate), or drop it");
   if (cmd.count("--lht-cache") > 0 && f.lhtForm != "on-demand")
     fmt::print(stderr,
                "lattice render: warning: --lht-cache bounds only tables built on demand; it applies to no lattice "

@@ -1,43 +1,75 @@
 #include "devices/sixel/sixel_band.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
+#include <charconv>
 
 #include "devices/sixel/sixel_forms.hpp"
+#include "foundation/error.hpp"
 
 namespace lattice::sixel {
+
+namespace {
+
+void appendNumber(std::size_t n, std::string& out) {
+  char digits[24];
+  const auto end = std::to_chars(digits, digits + sizeof digits, n).ptr;
+  out.append(digits, end);
+}
+
+std::size_t digitsOf(std::size_t n) {
+  std::size_t d = 1;
+  for (; n >= 10; n /= 10) ++d;
+  return d;
+}
+
+// What appendRun writes, without writing it.
+std::size_t runBytes(std::size_t count) { return count >= 4 ? digitsOf(count) + 2 : count; }
+
+}  // namespace
 
 void appendRun(std::size_t count, std::uint8_t value, std::string& out) {
   const char c = static_cast<char>(kSixelFirst + value);
   if (count >= 4) {
     out += kRepeat;
-    fmt::format_to(std::back_inserter(out), "{}", count);
+    appendNumber(count, out);
     out += c;
   } else {
     out.append(count, c);
   }
 }
 
-std::size_t encodeRuns(std::span<const std::uint8_t> must, std::span<const std::uint8_t> may, std::string& out) {
-  std::size_t end = must.size();
+namespace {
+
+// runsOf over must[0, end) with the allowed bits given by may(x).
+template <typename May>
+void appendRuns(const std::uint8_t* must, May may, std::size_t end, std::vector<SixelRun>& runs) {
   while (end > 0 && must[end - 1] == 0) --end;  // nothing after the last must
-  std::size_t runs = 0;
   std::size_t x = 0;
   while (x < end) {
-    std::uint8_t low = must[x], high = may[x];
+    std::uint8_t low = must[x], high = may(x);
     std::size_t y = x + 1;
     for (; y < end; ++y) {
-      const std::uint8_t l = static_cast<std::uint8_t>(low | must[y]), h = static_cast<std::uint8_t>(high & may[y]);
+      const std::uint8_t l = static_cast<std::uint8_t>(low | must[y]), h = static_cast<std::uint8_t>(high & may(y));
       if ((l & ~h) != 0) break;  // no one value fits every column of the run
       low = l;
       high = h;
     }
-    appendRun(y - x, low, out);
-    ++runs;
+    runs.push_back(SixelRun{x, y - x, low});
     x = y;
   }
-  return runs;
+}
+
+}  // namespace
+
+void runsOf(std::span<const std::uint8_t> must, std::span<const std::uint8_t> may, std::vector<SixelRun>& runs) {
+  appendRuns(must.data(), [&](std::size_t x) { return may[x]; }, must.size(), runs);
+}
+
+std::size_t encodeRuns(std::span<const std::uint8_t> must, std::span<const std::uint8_t> may, std::string& out) {
+  std::vector<SixelRun> runs;
+  runsOf(must, may, runs);
+  for (const SixelRun& r : runs) appendRun(r.count, r.value, out);
+  return runs.size();
 }
 
 SixelBandEncoder::SixelBandEncoder(int width, int registers)
@@ -45,13 +77,182 @@ SixelBandEncoder::SixelBandEncoder(int width, int registers)
       count_(static_cast<std::size_t>(registers), 0),
       must_(static_cast<std::size_t>(width)),
       later_(static_cast<std::size_t>(width)),
-      may_(static_cast<std::size_t>(width)) {}
+      regFirst_(static_cast<std::size_t>(registers), 0),
+      regCount_(static_cast<std::size_t>(registers), 0),
+      lastFound_(static_cast<std::size_t>(registers), 0),
+      end_(static_cast<std::size_t>(registers), 0),
+      offset_(static_cast<std::size_t>(registers), 0) {}
+
+void SixelBandEncoder::passRuns(int reg, std::size_t end) {
+  // From column 0: left of its first must a pass may still set free bits, so
+  // its first run may start there (one run where a blank and a run would be
+  // two); a first run that stays blank is dropped by cutPasses. A pass may
+  // set its own bits and those of pixels drawn later.
+  Pass pass{reg, runs_.size(), 0};
+  const std::uint8_t* must = must_.data();
+  const std::uint8_t* later = later_.data();
+  appendRuns(must, [=](std::size_t x) { return static_cast<std::uint8_t>(must[x] | later[x]); }, end, runs_);
+  pass.lastRun = runs_.size();
+  passes_.push_back(pass);
+}
+
+void SixelBandEncoder::cutPasses(std::size_t gap) {
+  segments_.clear();
+  for (std::size_t rank = 0; rank < passes_.size(); ++rank) {
+    const Pass& pass = passes_[rank];
+    const auto reg = static_cast<std::size_t>(pass.reg);
+    regFirst_[reg] = segments_.size();
+    Segment s;
+    s.reg = pass.reg;
+    s.firstRun = pass.firstRun;
+    auto close = [&](std::size_t lastRun) {
+      if (lastRun == s.firstRun) return;
+      s.lastRun = lastRun;
+      s.start = runs_[s.firstRun].start;
+      s.end = runs_[lastRun - 1].start + runs_[lastRun - 1].count;
+      segments_.push_back(s);
+    };
+    for (std::size_t i = pass.firstRun; i < pass.lastRun; ++i)
+      if (runs_[i].value == 0 && (runs_[i].count >= gap || i == pass.firstRun)) {  // a long blank ends a segment, and is dropped
+        close(i);
+        s.firstRun = i + 1;
+      }
+    close(pass.lastRun);
+    regCount_[reg] = segments_.size() - regFirst_[reg];
+  }
+}
+
+std::size_t SixelBandEncoder::segmentAt(PaletteIndex reg, std::size_t x) {
+  std::size_t j = lastFound_[reg];  // runs go left to right: usually the one found last
+  if (j < segments_.size() && segments_[j].start <= x && x < segments_[j].end) return j;
+  // The register's segments are [regFirst_, regFirst_ + regCount_), by start:
+  // the last one starting at or before x.
+  j = regFirst_[reg];
+  for (std::size_t step = regCount_[reg]; step > 1;) {
+    const std::size_t half = step / 2;
+    if (segments_[j + half].start <= x) j += half, step -= half;
+    else step = half;
+  }
+  lastFound_[reg] = j;
+  return j;
+}
+
+void SixelBandEncoder::findOverwrites(std::span<const PaletteIndex> band, int rows) {
+  const std::size_t w = static_cast<std::size_t>(width_);
+  overwrites_.clear();
+  for (const Pass& pass : passes_)
+    for (std::size_t r = pass.firstRun; r < pass.lastRun; ++r) {
+      const SixelRun& run = runs_[r];
+      for (int row = 0; row < rows; ++row) {
+        if ((run.value >> row & 1) == 0) continue;
+        const PaletteIndex* line = band.data() + static_cast<std::size_t>(row) * w;
+        // Stretches of one owner along the row, other than the pass's own register.
+        for (std::size_t x = run.start, end = run.start + run.count; x < end;) {
+          const PaletteIndex owner = line[x];
+          std::size_t y = x + 1;
+          while (y < end && line[y] == owner) ++y;
+          if (owner != pass.reg) overwrites_.push_back(Overwrite{r, owner, x, y});
+          x = y;
+        }
+      }
+    }
+}
+
+void SixelBandEncoder::linkSegments() {
+  const std::size_t n = segments_.size();
+  if (after_.size() < n) after_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) after_[i].clear();
+  stamp_.assign(n, n);
+  std::fill(lastFound_.begin(), lastFound_.end(), n);
+  segmentOfRun_.assign(runs_.size(), n);  // n: a dropped blank
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t r = segments_[i].firstRun; r < segments_[i].lastRun; ++r) segmentOfRun_[r] = i;
+  // Where a segment sets a bit of a later register's pixel, that register's
+  // segments covering the stretch are written after it.
+  for (const Overwrite& o : overwrites_) {
+    const std::size_t i = segmentOfRun_[o.run];
+    if (i == n) continue;
+    for (std::size_t j = segmentAt(o.owner, o.start); j < n && segments_[j].reg == o.owner && segments_[j].start < o.end;
+         ++j) {
+      if (segments_[j].end <= o.start || stamp_[j] == i) continue;
+      stamp_[j] = i;
+      after_[i].push_back(j);
+      ++segments_[j].waitingFor;
+    }
+  }
+}
+
+std::size_t SixelBandEncoder::planLines(int selected) {
+  const std::size_t n = segments_.size();
+  byStart_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) byStart_[i] = i;
+  std::stable_sort(byStart_.begin(), byStart_.end(),
+                   [&](std::size_t a, std::size_t b) { return segments_[a].start < segments_[b].start; });
+  plan_.clear();
+  std::size_t bytes = 0;
+  int reg = selected;
+  // Edges go from a register to later ones only, so some segment is always
+  // ready and every line writes at least one: the loop ends.
+  std::size_t left = n;
+  for (bool firstLine = true; left > 0; firstLine = false) {
+    if (!firstLine) plan_.push_back(kLineBreak), ++bytes;
+    std::size_t x = 0;
+    for (std::size_t i : byStart_) {
+      Segment& s = segments_[i];
+      if (s.written || s.waitingFor > 0 || s.start < x) continue;
+      plan_.push_back(i);
+      if (s.start > x) bytes += runBytes(s.start - x);
+      if (s.reg != reg) bytes += 1 + digitsOf(static_cast<std::size_t>(s.reg));
+      reg = s.reg;
+      for (std::size_t r = s.firstRun; r < s.lastRun; ++r) bytes += runBytes(runs_[r].count);
+      x = s.end;
+      s.written = true;
+      --left;
+      for (std::size_t j : after_[i]) --segments_[j].waitingFor;
+    }
+    std::erase_if(byStart_, [&](std::size_t i) { return segments_[i].written; });
+  }
+  return bytes;
+}
+
+void SixelBandEncoder::writePlan(std::string& out) {
+  std::size_t x = 0;
+  for (std::size_t i : bestPlan_) {
+    if (i == kLineBreak) {
+      out += kCarriageReturn;
+      ++stats_.lines;
+      x = 0;
+      continue;
+    }
+    const Segment& s = bestSegments_[i];
+    if (s.start > x) appendRun(s.start - x, 0, out);
+    if (s.reg != lastRegister_) {
+      out += kColour;
+      appendNumber(static_cast<std::size_t>(s.reg), out);
+    }
+    lastRegister_ = s.reg;
+    for (std::size_t r = s.firstRun; r < s.lastRun; ++r) appendRun(runs_[r].count, runs_[r].value, out);
+    stats_.runs += s.lastRun - s.firstRun;
+    x = s.end;
+  }
+  ++stats_.lines;
+  stats_.segments += bestSegments_.size();
+}
 
 void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std::string& out) {
   const std::size_t w = static_cast<std::size_t>(width_);
   order_.clear();
-  for (std::size_t i = 0; i < static_cast<std::size_t>(rows) * w; ++i)
-    if (count_[band[i]]++ == 0) order_.push_back(band[i]);
+  for (int r = 0; r < rows; ++r) {
+    const PaletteIndex* row = band.data() + static_cast<std::size_t>(r) * w;
+    for (std::size_t x = 0; x < w; ++x) {
+      const PaletteIndex reg = row[x];
+      if (count_[reg]++ == 0) {
+        order_.push_back(reg);
+        end_[reg] = x + 1;
+      }
+      end_[reg] = std::max(end_[reg], x + 1);
+    }
+  }
   std::sort(order_.begin(), order_.end(), [&](int a, int b) {
     return count_[static_cast<std::size_t>(a)] != count_[static_cast<std::size_t>(b)]
                ? count_[static_cast<std::size_t>(a)] > count_[static_cast<std::size_t>(b)]
@@ -60,24 +261,53 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
   // Every pixel is still to be drawn before the first pass.
   const std::uint8_t valid = static_cast<std::uint8_t>((1u << rows) - 1);
   std::fill(later_.begin(), later_.end(), valid);
-  for (std::size_t pass = 0; pass < order_.size(); ++pass) {
-    const int reg = order_[pass];
-    std::fill(must_.begin(), must_.end(), 0);
-    for (int r = 0; r < rows; ++r) {
-      const PaletteIndex* row = band.data() + static_cast<std::size_t>(r) * w;
-      for (std::size_t x = 0; x < w; ++x)
-        if (row[x] == reg) must_[x] = static_cast<std::uint8_t>(must_[x] | (1u << r));
-    }
-    for (std::size_t x = 0; x < w; ++x) {
-      later_[x] = static_cast<std::uint8_t>(later_[x] & ~must_[x]);
-      may_[x] = static_cast<std::uint8_t>(must_[x] | later_[x]);
-    }
-    if (pass > 0) out += kCarriageReturn;
-    if (reg != lastRegister_) fmt::format_to(std::back_inserter(out), "{}{}", kColour, reg);
-    lastRegister_ = reg;
-    stats_.runs += encodeRuns(must_, may_, out);
-    ++stats_.passes;
+  runs_.clear();
+  passes_.clear();
+  // Each register's pixels (column << 3 | row), by a counting sort, so
+  // that a pass touches only its own pixels and the columns its runs scan.
+  std::size_t next = 0;
+  for (const int reg : order_) {
+    offset_[static_cast<std::size_t>(reg)] = next;
+    next += count_[static_cast<std::size_t>(reg)];
   }
+  pixels_.resize(next);
+  for (int r = 0; r < rows; ++r) {
+    const PaletteIndex* row = band.data() + static_cast<std::size_t>(r) * w;
+    for (std::size_t x = 0; x < w; ++x) pixels_[offset_[row[x]]++] = static_cast<std::uint32_t>(x << 3 | unsigned(r));
+  }
+  std::size_t from = 0;
+  for (const int reg : order_) {
+    const std::size_t to = from + count_[static_cast<std::size_t>(reg)];
+    for (std::size_t i = from; i < to; ++i) {
+      const std::size_t x = pixels_[i] >> 3;
+      must_[x] = static_cast<std::uint8_t>(must_[x] | (1u << (pixels_[i] & 7)));
+    }
+    for (std::size_t i = from; i < to; ++i) {
+      const std::size_t x = pixels_[i] >> 3;
+      later_[x] = static_cast<std::uint8_t>(later_[x] & ~must_[x]);
+    }
+    passRuns(reg, end_[static_cast<std::size_t>(reg)]);
+    for (std::size_t i = from; i < to; ++i) must_[pixels_[i] >> 3] = 0;
+    from = to;
+  }
+  findOverwrites(band, rows);
+  // The band as lines for each cut; the shortest is written (the first of equals).
+  std::size_t best = SIZE_MAX;
+  for (std::size_t gap : kSplitGaps) {
+    cutPasses(gap);
+    linkSegments();
+    const std::size_t bytes = planLines(lastRegister_);
+    if (bytes < best) {
+      best = bytes;
+      bestPlan_.swap(plan_);
+      bestSegments_.swap(segments_);
+    }
+  }
+  const std::size_t before = out.size();
+  writePlan(out);
+  if (out.size() - before != best)  // planLines' count and writePlan's bytes are two codings of one form
+    throw Error(ErrorKind::Internal, "sixel band: the bytes written are not the plan's count");
+  stats_.passes += order_.size();
   for (int reg : order_) count_[static_cast<std::size_t>(reg)] = 0;
 }
 

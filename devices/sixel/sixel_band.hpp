@@ -4,28 +4,49 @@
 // pre-pass can call it on its own.
 //
 // Method (the bytes are the measure; docs/sixel.md gives the figures):
-//  * A band is drawn as passes, one per register present in it: `#Pc`
-//    selects the register, a row of sixels follows, `$` returns to column 0
-//    for the next pass, and the driver puts `-` between bands. Registers
-//    absent from the band cost nothing. A later sixel overwrites a pixel an
-//    earlier one set (xterm's set_sixel, libsixel's decoder, the VT340).
-//  * Passes run from the register with the most pixels in the band to the
-//    one with the fewest. A pixel whose register is drawn by a LATER pass is
-//    free in the earlier ones: whatever they set there is painted over. So
-//    the most frequent register, first, can cover whole stretches with one
-//    repeated sixel (usually `!W~`), and every pass picks its sixels from
-//    what it must set (its own pixels) up to what it may set (its own and
-//    the free ones).
-//  * encodeRuns() turns one pass into runs: from each column it extends the
-//    run while one sixel value lies between the union of the columns' musts
-//    and the intersection of their mays (the longest run from there, so the
+//  * Every register present in the band has a pass: `#Pc` selects it and
+//    sixels follow. A later sixel overwrites a pixel an earlier one set
+//    (xterm's set_sixel, libsixel's decoder, the VT340). Registers absent
+//    from the band cost nothing.
+//  * Passes are ranked from the register with the most pixels in the band
+//    to the one with the fewest. A pixel whose register ranks LATER is free
+//    in the earlier passes: whatever they set there is painted over. So the
+//    most frequent register can cover whole stretches with one repeated
+//    sixel (usually `!W~`), and every pass picks its sixels from what it
+//    must set (its own pixels) up to what it may set (its own and the free
+//    ones).
+//  * runsOf() turns a pass into runs: from each column it extends the run
+//    while one sixel value lies between the union of the columns' musts and
+//    the intersection of their mays (the longest run from there, so the
 //    fewest runs, greedily); the value written is the union of the musts.
-//    Columns after the last one with a must are not written.
+//    A pass runs from column 0 (left of its first must it may still set free
+//    bits, so its first run can start there) to its last must.
+//  * A pass is cut into segments at its blank runs (value 0) of at least
+//    `gap` columns, and at a leading blank run; those blanks are dropped.
+//    Segments are then packed into lines, as libsixel's encoder packs its
+//    per-colour nodes (tosixel.c, sixel_encode_body): a line runs left to
+//    right, each segment after the previous one's end, the gap written as
+//    blank sixels and `#Pc` where the register changes; `$` starts the next
+//    line at column 0. A segment that sets a bit of a later register's pixel
+//    is written before that register's segment covering the column (the
+//    overwrite keeps its order); of the segments whose predecessors are all
+//    written, the one starting leftmost at or after the line's position goes
+//    next. This saves the `$` and the leading blank run a pass per register
+//    would cost, which at 256 registers is most of a band's blank bytes.
+//  * The band is laid out once for each gap of kSplitGaps and the shortest
+//    kept: short gaps fill lines, at the price of more `#Pc` switches, which
+//    pays at 256 registers and not at 16.
 //  * A run of n >= 4 equal sixels is written `!n` and the sixel (n = 3
 //    costs three bytes either way, and is written plainly).
-//  * `#Pc` is left out when the band's first pass is the register the
-//    previous band ended with (the register stays selected across `-`).
+//  * `#Pc` is left out when it is the register already selected (the
+//    register stays selected across `$` and `-`).
+//
+// Tunable: kSplitGaps. Measured on Plate 6 (512x512, 16 and 256 colours,
+// bytes): no cut 51,717 and 167,605; 8 alone 53,730 and 163,272; 8 and no
+// cut 51,717 and 162,987; 8, 32, no cut (kept) 51,705 and 162,824; 4, 8, 16,
+// 32, 64, no cut 51,676 and 162,336 for twice the layout time.
 #include <cstdint>
+#include <cstddef>
 #include <span>
 #include <string>
 #include <vector>
@@ -34,16 +55,31 @@
 
 namespace lattice::sixel {
 
-// Appends the runs of one pass to `out`: must[x] are the bits that pass has
-// to set at column x, may[x] (a superset) the bits it is allowed to set.
-// Returns the number of runs written.
+// SIZE_MAX: passes are never cut, only packed.
+inline constexpr std::size_t kSplitGaps[] = {8, 32, SIZE_MAX};
+
+// One run of a pass: `count` copies of sixel `value` from column `start`.
+struct SixelRun {
+  std::size_t start = 0;  // column
+  std::size_t count = 0;
+  std::uint8_t value = 0;  // 0..63
+};
+
+// The runs of one pass from column 0 to its last must: must[x] are the bits
+// that pass has to set at column x, may[x] (a superset) the bits it is
+// allowed to set. Appends to `runs`.
+void runsOf(std::span<const std::uint8_t> must, std::span<const std::uint8_t> may, std::vector<SixelRun>& runs);
+
+// Appends runsOf(must, may) as sixel bytes to `out`; returns the number of runs.
 std::size_t encodeRuns(std::span<const std::uint8_t> must, std::span<const std::uint8_t> may, std::string& out);
 
 // Appends a run of `count` copies of sixel `value` (0..63) to `out`.
 void appendRun(std::size_t count, std::uint8_t value, std::string& out);
 
 struct SixelBandStats {
-  std::uint64_t passes = 0;  // colour passes
+  std::uint64_t passes = 0;    // colour passes (registers drawn, summed over bands)
+  std::uint64_t lines = 0;     // `$`-separated lines
+  std::uint64_t segments = 0;  // pieces of passes placed on lines
   std::uint64_t runs = 0;
 };
 
@@ -56,13 +92,55 @@ class SixelBandEncoder {
   const SixelBandStats& stats() const { return stats_; }
 
  private:
+  struct Pass {
+    int reg = 0;
+    std::size_t firstRun = 0, lastRun = 0;  // runs_[firstRun, lastRun)
+  };
+  // Run `run` sets bits of register `owner`'s pixels in columns [start, end).
+  struct Overwrite {
+    std::size_t run = 0;
+    PaletteIndex owner = 0;
+    std::size_t start = 0, end = 0;
+  };
+  struct Segment {
+    int reg = 0;
+    std::size_t start = 0, end = 0;        // columns [start, end)
+    std::size_t firstRun = 0, lastRun = 0;  // runs_[firstRun, lastRun)
+    std::size_t waitingFor = 0;            // segments that must precede it, not yet written
+    bool written = false;
+  };
+  void passRuns(int reg, std::size_t end);
+  void cutPasses(std::size_t gap);
+  std::size_t segmentAt(PaletteIndex reg, std::size_t x);  // the register's segment covering column x
+  void findOverwrites(std::span<const PaletteIndex> band, int rows);  // once a band, for every cut
+  void linkSegments();
+  // Lays the segments out in lines (plan_) and returns the bytes they take,
+  // `selected` being the register selected before the band.
+  std::size_t planLines(int selected);
+  void writePlan(std::string& out);  // bestPlan_ of bestSegments_
+  static constexpr std::size_t kLineBreak = SIZE_MAX;  // `$` in a plan
+
   int width_;
   int lastRegister_ = -1;  // selected at the end of the previous band
   std::vector<std::uint32_t> count_;  // pixels per register in this band
   std::vector<int> order_;            // registers present, most pixels first
   std::vector<std::uint8_t> must_;    // this pass's bits per column
   std::vector<std::uint8_t> later_;   // per column, bits of pixels drawn by passes not yet done
-  std::vector<std::uint8_t> may_;
+  std::vector<SixelRun> runs_;        // every pass's runs, this band
+  std::vector<Pass> passes_;          // in order_
+  std::vector<Segment> segments_;     // by pass, each pass's left to right
+  std::vector<std::size_t> plan_, bestPlan_;  // segment indices and kLineBreak, in writing order
+  std::vector<Segment> bestSegments_;
+  std::vector<std::size_t> byStart_;  // segments_ indices, leftmost first
+  std::vector<std::vector<std::size_t>> after_;  // per segment, the segments waiting for it
+  std::vector<Overwrite> overwrites_;
+  std::vector<std::size_t> segmentOfRun_;        // per run, its segment in this cut
+  std::vector<std::size_t> stamp_;               // per segment, the last one linked to it
+  std::vector<std::size_t> regFirst_, regCount_;  // per register, its segments in segments_
+  std::vector<std::size_t> lastFound_;           // per register, the segment linkSegments found last
+  std::vector<std::size_t> end_;                 // per register, one past its last column in this band
+  std::vector<std::size_t> offset_;              // per register, where its pixels start in pixels_
+  std::vector<std::uint32_t> pixels_;            // the band's pixels (column << 3 | row), by register
   SixelBandStats stats_;
 };
 

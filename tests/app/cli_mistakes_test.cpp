@@ -89,6 +89,12 @@ TEST_CASE("flags that would do nothing in the combination are refused with the r
   run = runLattice(fmt::format("render {} --device tek4125 --baud 9600 --stream '{}'", kScene, scratch / "x.tek"));
   CHECK(run.exitCode == 2);
   CHECK_THAT(run.stderrText, Catch::Contains("--baud sets the serial line of --port"));
+  // ...but it is the rate a time budget counts at, for a device with no serial line of its own.
+  run = runLattice(fmt::format("render {} --device sixel --width 32 --height 32 --wire-seconds 1 --baud 9600 --stream '{}'",
+                               kScene, scratch / "x.six"));
+  INFO(run.stderrText);
+  CHECK(run.exitCode == 0);
+  CHECK(std::filesystem::file_size(scratch / "x.six") <= 960);
 }
 
 TEST_CASE("outputs are checked before any work; read-only ones need --force", "[cli]") {

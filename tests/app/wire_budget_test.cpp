@@ -89,6 +89,37 @@ TEST_CASE("wire budget: a device's wire settings are added unless the user gave 
         std::vector<std::string>{"ru-bits=fit"});
 }
 
+TEST_CASE("wire budget on sixel: a byte count below the lossless stream is met, measured by the real encoder") {
+  const RgbImage reference = truecolour("fuzzy-sphere-1000.toml", 128, 128);
+  const devices::Device d = devices::makeDevice("sixel", {"registers=256"});
+  REQUIRE(d.runCost);
+  app::WireBudget lossless;
+  lossless.bytes = UINT64_MAX;
+  const app::WireSearch all = app::searchWireBudget(reference, d, lossless, {}, false);
+  REQUIRE(all.choice.fits);
+  double lastPsnr = 1e9;
+  for (double share : {0.8, 0.5}) {
+    app::WireBudget budget;
+    budget.bytes = static_cast<std::uint64_t>(double(all.choice.bytes) * share);
+    const app::WireSearch s = app::searchWireBudget(reference, d, budget, {}, false);
+    INFO(*budget.bytes << " bytes: " << app::describeWireChoice(s));
+    REQUIRE(s.choice.fits);
+    CHECK(s.choice.bytes <= *budget.bytes);
+    CHECK(encodedBytes(d, s.picture) == s.choice.bytes);  // the figure is the real encoder's
+    CHECK(s.choice.psnr <= lastPsnr);                     // a tighter budget is no more accurate
+    lastPsnr = s.choice.psnr;
+    // The terminal shows the picture chosen: our emulator decodes the stream to it.
+    MemorySink out;
+    auto driver = d.makeDriver(out);
+    app::sendPicture(s.picture, driver->sink());
+    auto decoder = d.makeEmulator();
+    decoder->feed(out.data());
+    decoder->finish();
+    CHECK(decoder->image().pixels == s.picture.pixels);
+  }
+  CHECK(lastPsnr < all.choice.psnr);
+}
+
 TEST_CASE("wire budget: nothing fits, the smallest stream is reported; --wire-shrink makes it fit") {
   const RgbImage reference = truecolour("sphere-hole.toml", 64, 64);
   const devices::Device d = devices::makeDevice("tek4125", {});

@@ -152,3 +152,29 @@ TEST_CASE("frames larger than the profile or with more colours than registers ar
   applyOverride(p, "registers=256");
   CHECK(p.registers == 256);
 }
+
+TEST_CASE("passes whose columns do not meet share one line, after the pass that paints under them") {
+  // Register 0 everywhere but columns 2-5 (register 1) and 30-33 (register 2):
+  // 0 covers the band first, then 1 and 2 go on one line (no second `$`).
+  IndexedImage img(40, 6, 3);
+  img.colormap = spreadPalette(3);
+  for (int y = 0; y < 6; ++y)
+    for (int x = 0; x < 40; ++x) img.at(x, y) = x >= 2 && x < 6 ? 1 : x >= 30 && x < 34 ? 2 : 0;
+  const std::string s = text(driveFrame(img));
+  const std::string band = "#0!40~$??#1!4~!24?#2!4~\x1b\\";
+  REQUIRE(s.size() > band.size());
+  CHECK(s.substr(s.size() - band.size()) == band);
+  checkReproduces(img);
+}
+
+TEST_CASE("a segment never overwrites a later register's pixel after that register is drawn") {
+  // Noise whose colours interleave at every scale: every cut and packing the
+  // encoder tries must still leave each pixel its own register.
+  SixelProfile wide;
+  wide.registers = 256;
+  for (std::uint32_t seed = 20; seed < 40; ++seed) {
+    INFO("seed " << seed);
+    checkReproduces(patchyNoise(150, 13, 2 + static_cast<int>(seed % 7) * 40, 1 + static_cast<int>(seed % 5), seed),
+                    wide);
+  }
+}
