@@ -29,14 +29,8 @@ constexpr int kShrinkSteps = 8;
 
 double ladderLambda(double k) { return 50.0 * std::exp2(k); }
 
-const char* ditherName(quantize::Dither d) {
-  switch (d) {
-    case quantize::Dither::None: return "none";
-    case quantize::Dither::FloydSteinberg: return "fs";
-    case quantize::Dither::Bayer: return "bayer";
-  }
-  return "?";
-}
+// The --dither spelling, so the settings printed can be typed back.
+std::string_view ditherName(quantize::Dither d) { return nameOfValue(quantize::kDitherNames, d, "?"); }
 
 // Area average to a smaller size: each output pixel the mean of the input
 // pixels its footprint covers (whole pixels; enough for a fallback).
