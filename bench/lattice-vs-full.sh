@@ -15,6 +15,10 @@
 # lattice is faster), and the median wall seconds of the cached and full runs. The hair variants swap the Plate 6 hair's object (a polyline: CSG
 # of 10 spheres and 9 cylinders) for a capsule (one closed-form leaf, the
 # thistle's), so the CSG and the closed-form hair are both measured.
+# A second table times the trace alone (bench/render_bench's lattice-vs-full
+# part: scene set-up apart, median of RUNS renders, ratio = full / lattice, so
+# above 1 the lattice is faster), where start-up and quantizing, the same for
+# both, do not dilute the ratio.
 # Options: --runs N (default 3), --threads T (default 1), --size WxH (default:
 # the scenes' own), --out FILE (also write the table there).
 set -euo pipefail
@@ -26,7 +30,7 @@ bench_positive --threads "$threads"
 size_args=()
 if [[ -n $size ]]; then bench_size "$size"; size_args=("${bench_size_args[@]}"); fi
 cd "$root"
-bench_need_built build lattice
+bench_need_built build lattice render_bench
 lattice=$root/build/app/lattice
 bench_workdir work
 
@@ -43,6 +47,7 @@ capsule_hair() {
 
 # case name | scene | extra flags
 capsule_hair "$work/fuzzy-1000-capsule.toml"
+sed 's/^shadows = true .*/shadows = false/' scenes/thistle.toml >"$work/thistle-plate3.toml"
 cases=(
   "hook (Figure 2)|scenes/hook.toml|"
   "thistle, Plate 4|scenes/thistle.toml|"
@@ -88,6 +93,13 @@ report() {
       "$(awk -v a="$b" -v b="$f" 'BEGIN { printf "%.2f", a / b }')" \
       "$(bench_median "${cachedWall[@]}")" "$(bench_median "${fullWall[@]}")"
   done
+  echo
+  echo "# the trace alone: render_bench, $threads thread(s)"
+  "$root/build/bench/render_bench" --runs "$runs" --threads-list "$threads" --arith double --full-size "${bench_width:-512}" \
+    --full-threads "$threads" --full-scene scenes/hook.toml --full-scene scenes/thistle.toml \
+    --full-scene "$work/thistle-plate3.toml" --full-scene scenes/fuzzy-sphere-1000.toml \
+    --full-scene "$work/fuzzy-1000-capsule.toml" --full-scene scenes/fuzzy-sphere-5000.toml scenes/hook.toml |
+    sed -n '/^# lattice vs full/,$p'
   echo "# load average $(bench_loadavg) at end"
 }
 bench_write "$out" report
