@@ -16,40 +16,14 @@
 #include "quantize/run_pipeline.hpp"
 #include "tests/support/example_scene.hpp"
 #include "tests/support/golden.hpp"
+#include "tests/support/rate_distortion_stream.hpp"
 
 using namespace lattice;
 using namespace lattice::quantize;
 
-namespace {
-
-std::vector<std::uint8_t> readFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  REQUIRE(in.good());
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-IndexedImage quantized(const char* scene, int width, int height, int maxColors) {
-  Renderer<double> renderer = testing::makeTestRenderer(testing::loadExampleScene(scene), width, height);
-  PipelineOptions options;
-  options.progress = false;
-  IndexedImageSink sink(maxColors);
-  runPipeline(renderer, sink, options);
-  return sink.image();
-}
-
-std::vector<std::uint8_t> stream(const devices::Device& device, const IndexedImage& picture, double lambda) {
-  MemorySink out;
-  auto driver = device.makeDriver(out);
-  RateDistortionSink runs(driver->sink(), device.runCost, lambda);
-  runs.begin(FrameInfo{picture.width, picture.height, picture.colormap});
-  for (int y = 0; y < picture.height; ++y)
-    runs.row(y, std::span<const PaletteIndex>(picture.pixels).subspan(std::size_t(y) * std::size_t(picture.width),
-                                                                       std::size_t(picture.width)));
-  runs.end();
-  return out.data();
-}
-
-}  // namespace
+using testing::quantizedScene;
+using testing::rateDistortionStream;
+using testing::readFileBytes;
 
 TEST_CASE("sixel rate-distortion runs: lambda 0 sends the golden scene streams byte for byte") {
   struct Case {
@@ -61,11 +35,11 @@ TEST_CASE("sixel rate-distortion runs: lambda 0 sends the golden scene streams b
     INFO(c.scene << " at " << c.registers);
     const devices::Device device = devices::makeDevice("sixel", {fmt::format("registers={}", c.registers)});
     REQUIRE(device.runCost);
-    const IndexedImage picture = quantized(fmt::format("{}.toml", c.scene).c_str(), c.width, c.height, c.registers);
-    const auto golden = readFile(testing::goldenPath(
+    const IndexedImage picture = quantizedScene(fmt::format("{}.toml", c.scene).c_str(), c.width, c.height, c.registers);
+    const auto golden = readFileBytes(testing::goldenPath(
         fmt::format("sixel/scenes/{}_{}x{}_{}.six", c.scene, c.width, c.height, c.registers)));
-    CHECK(stream(device, picture, 0.0) == golden);
-    CHECK(stream(device, picture, 1e-9) == golden);  // the programme ran, and kept every run
+    CHECK(rateDistortionStream(device, picture, 0.0) == golden);
+    CHECK(rateDistortionStream(device, picture, 1e-9) == golden);  // the programme ran, and kept every run
   }
 }
 
@@ -73,10 +47,10 @@ TEST_CASE("sixel rate-distortion runs: a larger lambda, a shorter stream showing
   for (int registers : {16, 256}) {
     INFO(registers << " registers");
     const devices::Device device = devices::makeDevice("sixel", {fmt::format("registers={}", registers)});
-    const IndexedImage picture = quantized("fuzzy-sphere-1000.toml", 128, 128, registers);
-    std::size_t last = stream(device, picture, 0).size();
+    const IndexedImage picture = quantizedScene("fuzzy-sphere-1000.toml", 128, 128, registers);
+    std::size_t last = rateDistortionStream(device, picture, 0).size();
     for (double lambda : {200.0, 2000.0, 20000.0}) {
-      const auto bytes = stream(device, picture, lambda);
+      const auto bytes = rateDistortionStream(device, picture, lambda);
       INFO("lambda " << lambda << ": " << bytes.size() << " bytes, before " << last);
       CHECK(bytes.size() < last);
       last = bytes.size();

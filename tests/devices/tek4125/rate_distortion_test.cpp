@@ -18,40 +18,14 @@
 #include "quantize/run_pipeline.hpp"
 #include "tests/support/example_scene.hpp"
 #include "tests/support/golden.hpp"
+#include "tests/support/rate_distortion_stream.hpp"
 
 using namespace lattice;
 using namespace lattice::quantize;
 
-namespace {
-
-std::vector<std::uint8_t> readFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  REQUIRE(in.good());
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-IndexedImage quantized(const char* scene, int width, int height, int maxColors) {
-  Renderer<double> renderer = testing::makeTestRenderer(testing::loadExampleScene(scene), width, height);
-  PipelineOptions options;
-  options.progress = false;
-  IndexedImageSink sink(maxColors);
-  runPipeline(renderer, sink, options);
-  return sink.image();
-}
-
-std::vector<std::uint8_t> stream(const devices::Device& device, const IndexedImage& picture, double lambda) {
-  MemorySink out;
-  auto driver = device.makeDriver(out);
-  RateDistortionSink runs(driver->sink(), device.runCost, lambda);
-  runs.begin(FrameInfo{picture.width, picture.height, picture.colormap});
-  for (int y = 0; y < picture.height; ++y)
-    runs.row(y, std::span<const PaletteIndex>(picture.pixels).subspan(std::size_t(y) * std::size_t(picture.width),
-                                                                       std::size_t(picture.width)));
-  runs.end();
-  return out.data();
-}
-
-}  // namespace
+using testing::quantizedScene;
+using testing::rateDistortionStream;
+using testing::readFileBytes;
 
 TEST_CASE("rate-distortion runs: lambda 0 sends the golden 4125 streams byte for byte") {
   for (const char* forms : {"strict", "compact"})
@@ -59,11 +33,11 @@ TEST_CASE("rate-distortion runs: lambda 0 sends the golden 4125 streams byte for
       INFO(scene << " " << forms);
       const devices::Device device = devices::makeDevice("tek4125", {"planes=8", fmt::format("profile={}", forms)});
       REQUIRE(device.runCost);
-      const IndexedImage picture = quantized(fmt::format("{}.toml", scene).c_str(), 64, 64, 256);
+      const IndexedImage picture = quantizedScene(fmt::format("{}.toml", scene).c_str(), 64, 64, 256);
       const std::string suffix = std::string(forms) == "strict" ? "" : "_compact";
-      const auto golden = readFile(testing::goldenPath(fmt::format("tek4125/scenes/{}_64x64_8planes{}.tek", scene, suffix)));
-      CHECK(stream(device, picture, 0.0) == golden);
-      CHECK(stream(device, picture, 1e-9) == golden);  // the programme ran, and kept every run
+      const auto golden = readFileBytes(testing::goldenPath(fmt::format("tek4125/scenes/{}_64x64_8planes{}.tek", scene, suffix)));
+      CHECK(rateDistortionStream(device, picture, 0.0) == golden);
+      CHECK(rateDistortionStream(device, picture, 1e-9) == golden);  // the programme ran, and kept every run
     }
 }
 
@@ -74,10 +48,10 @@ TEST_CASE("rate-distortion runs: a larger lambda, a shorter 4125 stream showing 
       const devices::Device device =
           devices::makeDevice("tek4125", {fmt::format("planes={}", planes), fmt::format("profile={}", forms),
                                            "width=96", "height=72"});
-      const IndexedImage picture = quantized("torus-floor.toml", 96, 72, 1 << planes);
-      std::size_t last = stream(device, picture, 0).size();
+      const IndexedImage picture = quantizedScene("torus-floor.toml", 96, 72, 1 << planes);
+      std::size_t last = rateDistortionStream(device, picture, 0).size();
       for (double lambda : {2000.0, 20000.0}) {
-        const auto bytes = stream(device, picture, lambda);
+        const auto bytes = rateDistortionStream(device, picture, lambda);
         INFO("lambda " << lambda << ": " << bytes.size() << " bytes, before " << last);
         CHECK(bytes.size() < last);
         last = bytes.size();
