@@ -1,9 +1,10 @@
 // `lattice show FILE`: any PNG, or any recorded stream of a device Lattice
 // emulates (tek4125, tek4027, sixel), drawn on the sixel terminal in front of
 // the user. A stream is decoded by our emulator; the picture (scaled down to
-// the terminal's largest sixel picture if it is bigger, nearest pixel) goes
-// through the median cut to the terminal's colour registers and the sixel
-// driver, to standard output or a file.
+// the terminal's largest sixel picture if it is bigger, nearest pixel) keeps
+// its own colours when they fit in the terminal's colour registers
+// (quantize/exact_palette.hpp), else goes through the median cut, and then
+// through the sixel driver, to standard output or a file.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "app/commands/commands.hpp"
+#include "app/wire_budget.hpp"
 #include "devices/device_table.hpp"
 #include "devices/sixel/sixel_driver.hpp"
 #include "devices/work_budget.hpp"
@@ -23,6 +25,7 @@
 #include "foundation/rgb_image_source.hpp"
 #include "io/png.hpp"
 #include "io/stdout_sink.hpp"
+#include "quantize/exact_palette.hpp"
 #include "quantize/run_pipeline.hpp"
 
 namespace lattice::app {
@@ -110,10 +113,16 @@ void runShow(const ShowOptions& o) {
   if (o.stream.empty() || o.stream == "-") out = std::make_unique<io::StdoutSink>();
   else out = std::make_unique<AtomicFile>(o.stream);
   sixel::SixelDriver driver(*out, profile);
-  RgbImageSource source(fitted);
-  quantize::PipelineOptions options;
-  options.progress = false;  // standard error is most likely the terminal being drawn on
-  quantize::runPipeline(source, driver, options);
+  // A picture with no more colours than the registers (a recorded stream, a
+  // quantized PNG) is sent with its own colours; only a richer one is cut.
+  if (const auto exact = quantize::exactPalette(fitted, profile.registers)) {
+    sendPicture(*exact, driver);
+  } else {
+    RgbImageSource source(fitted);
+    quantize::PipelineOptions options;
+    options.progress = false;  // standard error is most likely the terminal being drawn on
+    quantize::runPipeline(source, driver, options);
+  }
   out->close();
   fmt::print(stderr, "lattice show: {} ({}, {}x{}{}): {} bytes of sixel, {} registers, to {}\n", o.input, what,
              picture.width, picture.height,
