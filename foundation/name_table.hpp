@@ -6,12 +6,14 @@
 //
 // Method: a table is a small array or vector read front to back (a handful
 // of entries; a map would cost more than it saves). An entry is either a
-// {value, name} pair (EnumName) or a struct with a `name` member (what the
-// table describes besides); names may be std::string or std::string_view.
+// {value, name} pair (EnumName), a struct with a `name` member (what the
+// table describes besides) or just a name; names may be std::string or
+// std::string_view.
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -21,10 +23,13 @@ namespace lattice {
 template <class Enum>
 using EnumName = std::pair<Enum, std::string_view>;
 
-// The entry's name: a pair's second, else its `name` member.
+// The entry's name: a pair's second, a `name` member, or the entry itself
+// when it is a name (a plain list of names).
 template <class Entry>
 std::string_view entryName(const Entry& entry) {
-  if constexpr (requires { entry.name; })
+  if constexpr (std::is_convertible_v<const Entry&, std::string_view>)
+    return entry;
+  else if constexpr (requires { entry.name; })
     return entry.name;
   else
     return entry.second;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "foundation/error.hpp"
+#include "foundation/name_table.hpp"
 #include "lht/table/table_forms.hpp"
 
 namespace lattice::lht {
@@ -22,15 +23,11 @@ std::string_view lhtFormName(LhtForm form) {
   return code < kLhtFormNames.size() ? kLhtFormNames[code] : std::string_view("unknown");
 }
 
-std::string lhtFormChoices() {
-  std::string names;
-  for (std::string_view name : kLhtFormNames) names += fmt::format("{}{}", names.empty() ? "" : ", ", name);
-  return names;
-}
+std::string lhtFormChoices() { return namesOf(kLhtFormNames); }
 
 std::optional<LhtForm> lhtFormFromName(std::string_view name) {
-  for (std::size_t code = 0; code < kLhtFormNames.size(); ++code)
-    if (kLhtFormNames[code] == name) return static_cast<LhtForm>(code);
+  if (const auto* found = findNamed(kLhtFormNames, name))
+    return static_cast<LhtForm>(found - kLhtFormNames.data());
   return std::nullopt;
 }
 
@@ -50,10 +47,7 @@ std::string lhtFiledFormNames() {
   std::vector<std::string_view> names;
   for (std::size_t code = 0; code < kLhtFormCount; ++code)
     if (inFiles(code)) names.push_back(kLhtFormNames[code]);
-  std::string text;
-  for (std::size_t k = 0; k < names.size(); ++k)
-    text += fmt::format("{}{}", k == 0 ? "" : k + 1 == names.size() ? " or " : ", ", names[k]);
-  return text;
+  return choicesOf(names);
 }
 
 LhtForm parseLhtForm(std::string_view name, std::string_view what) {

@@ -46,18 +46,6 @@ using LhtTable = std::variant<LatticeHashTable, CompressedTable, OnDemandTableRe
 
 inline constexpr std::size_t kLhtFormCount = std::variant_size_v<LhtTable>;
 
-// The form class behind alternative I (the on-demand one without its pointer).
-template <class T>
-struct FormClassOf {
-  using type = T;
-};
-template <class T>
-struct FormClassOf<std::shared_ptr<const T>> {
-  using type = T;
-};
-template <std::size_t I>
-using FormAt = typename FormClassOf<std::variant_alternative_t<I, LhtTable>>::type;
-
 // The table object behind an alternative.
 template <class Table>
 const Table& formTable(const Table& table) {
@@ -67,6 +55,10 @@ template <class Table>
 const Table& formTable(const std::shared_ptr<const Table>& table) {
   return *table;
 }
+
+// The form class behind alternative I: what formTable gives for it.
+template <std::size_t I>
+using FormAt = std::remove_cvref_t<decltype(formTable(std::declval<const std::variant_alternative_t<I, LhtTable>&>()))>;
 
 // Built by rasterizing; kept in .lht files (version 3).
 template <class Form>

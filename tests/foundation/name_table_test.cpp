@@ -34,6 +34,12 @@ TEST_CASE("name tables: lists, sentences, look-ups both ways and file codes") {
   CHECK(choicesOf(presets) == "strict or compact");
   REQUIRE(findNamed(presets, "compact") != nullptr);
   CHECK(findNamed(presets, "compact")->value == 2);
+  // A plain list of names is a table too.
+  const std::vector<std::string_view> plain{"hashed", "compressed"};
+  CHECK(choicesOf(plain) == "hashed or compressed");
+  CHECK(namesOf(plain) == "hashed, compressed");
+  CHECK(findNamed(plain, "compressed") == &plain[1]);
+  CHECK(findNamed(plain, "chained") == nullptr);
 }
 
 TEST_CASE("little-endian fields: least significant byte first, and back") {
