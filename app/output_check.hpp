@@ -6,9 +6,13 @@
 // be a directory, and an existing file without write permission is refused
 // unless the user says --force (root could replace it, but a read-only file
 // is usually read-only on purpose). "-" (standard output) passes.
-#include <CLI/CLI.hpp>
 
 #include <string>
+
+// Declared, not included, as in app/cli/cli_forward.hpp (which this room may not include).
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace lattice::app {
 

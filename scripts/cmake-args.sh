@@ -8,10 +8,12 @@
 # already configured keeps its generator (CMake refuses to switch one).
 # ccache where it is installed: a rebuild after a small change, or a second
 # clone on the same machine, compiles only what changed. On a fresh machine
-# neither the cache nor ccache is there, and nothing changes.
+# neither the cache nor ccache is there, and nothing changes. The tests'
+# precompiled headers (tests/CMakeLists.txt) are cached only with the
+# sloppiness ccache's manual asks for ("Precompiled headers").
 lattice_cmake_args() {
   local dir=$1
   cmake_args=()
   if [[ ! -f $dir/CMakeCache.txt ]] && command -v ninja >/dev/null; then cmake_args+=(-G Ninja); fi
-  if command -v ccache >/dev/null; then cmake_args+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+  if command -v ccache >/dev/null; then cmake_args+=("-DCMAKE_CXX_COMPILER_LAUNCHER=env;CCACHE_SLOPPINESS=pch_defines,time_macros;ccache"); fi
 }

@@ -20,8 +20,10 @@
 #   (a single allocation past 1 GiB is a finding: no reader of ours needs
 #   one for inputs of max_len bytes); max_len per target below, about the
 #   size of the largest seed, so runs explore structure rather than bulk.
-# * FUZZ_JOBS=N runs N targets at once (default 1); FUZZ_NICE=N runs them
-#   under `nice -n N`.
+# * FUZZ_JOBS=N runs N targets at once (default 1; scripts/test.sh runs one
+#   a core); FUZZ_NICE=N runs them under `nice -n N`.
+# * LATTICE_SEED_LATTICE=PATH: the `lattice` that rasterizes the .lht seeds
+#   (default build/app/lattice when it exists).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -38,11 +40,21 @@ if [[ -n $only ]]; then targets=("$only"); else targets=("${all[@]}"); fi
 command -v clang++-14 >/dev/null || { echo "fuzz.sh: clang++-14 missing; run scripts/setup.sh --fuzz" >&2; exit 2; }
 source scripts/cmake-args.sh
 lattice_cmake_args build-fuzz
-cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
+# -O2 with line tables only (LATTICE_SANITIZE adds -gline-tables-only): a
+# finding's stack still names file and line, and the full debug information
+# of RelWithDebInfo, which no report reads, is not compiled.
+cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -DNDEBUG" \
+  -DCMAKE_CXX_COMPILER=clang++-14 \
   -DLATTICE_FUZZ=ON -DLATTICE_BUILD_TESTS=OFF -DLATTICE_BUILD_BENCH=OFF -DLATTICE_WITH_LIBUSB=OFF \
   "${cmake_args[@]}" >/dev/null
-cmake --build build-fuzz -j "$(nproc)" --target lattice $(printf 'fuzz_%s ' "${targets[@]}")
-bash scripts/fuzz-seeds.sh build-fuzz/seeds build-fuzz/app/lattice
+# The seeds are rasterized by any `lattice`: the ordinary build's when there
+# is one (scripts/test.sh builds it first), else this folder's, so the
+# command line is compiled a second time only when fuzz.sh runs alone.
+seed_lattice=${LATTICE_SEED_LATTICE:-build/app/lattice}
+fuzz_targets=($(printf 'fuzz_%s ' "${targets[@]}"))
+[[ -x $seed_lattice ]] || { seed_lattice=build-fuzz/app/lattice; fuzz_targets+=(lattice); }
+cmake --build build-fuzz -j "$(nproc)" --target "${fuzz_targets[@]}"
+bash scripts/fuzz-seeds.sh build-fuzz/seeds "$seed_lattice"
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:symbolize=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}

@@ -1,5 +1,6 @@
 #include "app/cli/cli_errors.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 

@@ -3,10 +3,11 @@
 // own parse errors included. The known names are read from the parsed CLI11
 // tree itself (its subcommands and their options), so a command or flag
 // added anywhere is suggested without a list to keep up to date.
-#include <CLI/CLI.hpp>
 
 #include <string>
 #include <vector>
+
+#include "app/cli/cli_forward.hpp"
 
 namespace lattice::app {
 

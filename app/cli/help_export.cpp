@@ -1,5 +1,6 @@
 #include "app/cli/help_export.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 

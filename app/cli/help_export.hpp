@@ -5,9 +5,10 @@
 // The build writes both with `lattice --generate-man FILE` and
 // `lattice --generate-bash-completion FILE` (hidden flags, read before the
 // command line is parsed) and `cmake --install` installs them.
-#include <CLI/CLI.hpp>
 
 #include <string>
+
+#include "app/cli/cli_forward.hpp"
 
 namespace lattice::app {
 

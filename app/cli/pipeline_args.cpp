@@ -1,5 +1,6 @@
 #include "app/cli/pipeline_args.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <vector>

@@ -2,10 +2,10 @@
 // The quantizer flags shared by `lattice quantize` and `lattice render`
 // (--colors, --dither, --split, --refine, --mode, --sample, --histogram, --quiet), turned
 // into PipelineOptions in one place so both commands mean the same thing.
-#include <CLI/CLI.hpp>
 
 #include <string>
 
+#include "app/cli/cli_forward.hpp"
 #include "quantize/run_pipeline.hpp"
 
 namespace lattice::app {

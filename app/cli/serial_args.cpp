@@ -1,5 +1,6 @@
 #include "app/cli/serial_args.hpp"
 
+#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 

@@ -4,10 +4,10 @@
 //   lattice::SerialOptions serial;
 //   lattice::app::addSerialOptions(cmd, serial);
 //   ... auto sink = lattice::openSerialSink(serial);   // io/serial_options.hpp
-#include <CLI/CLI.hpp>
 
 #include <string>
 
+#include "app/cli/cli_forward.hpp"
 #include "io/serial_options.hpp"
 
 namespace lattice::app {

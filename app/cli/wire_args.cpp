@@ -1,5 +1,7 @@
 #include "app/cli/wire_args.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include "foundation/system/resident_memory.hpp"
 #include "foundation/error.hpp"
 

@@ -4,10 +4,10 @@
 // budget the search of app/wire_budget.hpp fits) and --wire-shrink. The
 // budget's baud is --baud when given (the serial flags' own), else the
 // device profile's.
-#include <CLI/CLI.hpp>
 
 #include <string>
 
+#include "app/cli/cli_forward.hpp"
 #include "app/render_job.hpp"
 
 namespace lattice::app {

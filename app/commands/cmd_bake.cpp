@@ -3,6 +3,7 @@
 // `lattice render`'s where they mean the same (--set, the quantizer's), so
 // the host render that the firmware's stream is compared with takes the
 // same words.
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>

@@ -2,6 +2,7 @@
 // are apart. Used to compare a lattice render with the full ray trace of the
 // same scene (`lattice render --full`), the comparison thesis ch. 4 leaves
 // to the reader's eye (docs/gallery.md).
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cmath>

@@ -2,6 +2,7 @@
 // stream the way the terminal would draw it and writes the screen as PNG.
 // Streams from other programs (gnuplot's tek410x terminal, PGPLOT) work too;
 // whatever the emulator does not know is skipped and counted (--report).
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cerrno>

@@ -1,5 +1,6 @@
 // `lattice export pov SCENE -o scene.pov`: writes a scene for POV-Ray 3.7
 // (exporter/pov_export.hpp), the peer the benchmarks compare with.
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>

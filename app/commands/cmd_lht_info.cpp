@@ -1,5 +1,6 @@
 // `lattice lht-info FILE`: what a .lht file holds - its lattice, the object
 // hash, the thesis's N_lp / N_iz, and how well the hash table is packed.
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "app/commands/commands.hpp"

@@ -1,5 +1,6 @@
 // `lattice ports`: the serial ports of this machine, USB adapters with their
 // vendor/product/serial, and `--wait` for an adapter to be plugged in.
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>

@@ -1,5 +1,6 @@
 // `lattice rasterize`: builds a lattice hash table (thesis sec. 2.1) for a
 // shape or for a [[lattices]] entry of a scene and writes it as a .lht file.
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <optional>

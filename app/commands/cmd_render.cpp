@@ -2,6 +2,7 @@
 // one call, and the closing line. The device is png (truecolour) or any entry
 // of the device table; its stream goes to a file (--stream), standard output
 // (--stream -) or a serial line (--port), and/or its emulator's picture (-o).
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 

@@ -1,5 +1,6 @@
 // `lattice send STREAM --port ...`: play a stored command stream to a
 // terminal over a serial line, resumably. See docs/serial.md.
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cstdio>

@@ -1,5 +1,6 @@
 // `lattice table1`: recomputes the thesis's Table 1 (N_lp pairs tried, N_iz
 // intersections found) and prints it beside the published numbers.
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "app/commands/commands.hpp"

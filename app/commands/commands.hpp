@@ -4,7 +4,8 @@
 // the one table below (no registration side effects), so the list of
 // commands is read in one place. A callback reports failure by throwing
 // lattice::Error (foundation/error.hpp); the error's kind is the exit code.
-#include <CLI/CLI.hpp>
+
+#include "app/cli/cli_forward.hpp"
 
 namespace lattice::app {
 
