@@ -1,6 +1,7 @@
 #include "devices/sixel/sixel_band.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <charconv>
 
 #include "devices/sixel/sixel_forms.hpp"
@@ -81,7 +82,9 @@ SixelBandEncoder::SixelBandEncoder(int width, int registers)
       regCount_(static_cast<std::size_t>(registers), 0),
       lastFound_(static_cast<std::size_t>(registers), 0),
       end_(static_cast<std::size_t>(registers), 0),
-      offset_(static_cast<std::size_t>(registers), 0) {}
+      offset_(static_cast<std::size_t>(registers), 0),
+      openStart_(static_cast<std::size_t>(registers), 0),
+      openEnd_(static_cast<std::size_t>(registers), 0) {}
 
 void SixelBandEncoder::passRuns(int reg, std::size_t end) {
   // From column 0: left of its first must a pass may still set free bits, so
@@ -122,6 +125,13 @@ void SixelBandEncoder::cutPasses(std::size_t gap) {
   }
 }
 
+bool SixelBandEncoder::blankRunBetween(std::size_t shorter, std::size_t longer) const {
+  for (const Pass& pass : passes_)
+    for (std::size_t i = pass.firstRun + 1; i < pass.lastRun; ++i)  // a leading blank is dropped by every cut
+      if (runs_[i].value == 0 && runs_[i].count >= shorter && runs_[i].count < longer) return true;
+  return false;
+}
+
 std::size_t SixelBandEncoder::segmentAt(PaletteIndex reg, std::size_t x) {
   std::size_t j = lastFound_[reg];  // runs go left to right: usually the one found last
   if (j < segments_.size() && segments_[j].start <= x && x < segments_[j].end) return j;
@@ -137,25 +147,40 @@ std::size_t SixelBandEncoder::segmentAt(PaletteIndex reg, std::size_t x) {
   return j;
 }
 
-void SixelBandEncoder::findOverwrites(std::span<const PaletteIndex> band, int rows) {
+void SixelBandEncoder::findOverwrites(const Pass& pass, std::span<const PaletteIndex> band) {
   const std::size_t w = static_cast<std::size_t>(width_);
-  overwrites_.clear();
-  for (const Pass& pass : passes_)
-    for (std::size_t r = pass.firstRun; r < pass.lastRun; ++r) {
-      const SixelRun& run = runs_[r];
-      for (int row = 0; row < rows; ++row) {
-        if ((run.value >> row & 1) == 0) continue;
-        const PaletteIndex* line = band.data() + static_cast<std::size_t>(row) * w;
-        // Stretches of one owner along the row, other than the pass's own register.
-        for (std::size_t x = run.start, end = run.start + run.count; x < end;) {
-          const PaletteIndex owner = line[x];
-          std::size_t y = x + 1;
-          while (y < end && line[y] == owner) ++y;
-          if (owner != pass.reg) overwrites_.push_back(Overwrite{r, owner, x, y});
-          x = y;
+  const std::uint8_t* own = must_.data();  // still the pass's own bits: called before they are cleared
+  // Column by column, one open stretch per owner: a stretch grows while the
+  // owner is met in the next column (in any row the run sets), so the rows
+  // of a band, which mostly agree, give one Overwrite and not six.
+  // linkSegments asks only which of the owner's segments a stretch overlaps,
+  // and the union of touching stretches overlaps the same ones. A column
+  // whose set bits are all the pass's own pixels is passed over unread.
+  for (std::size_t r = pass.firstRun; r < pass.lastRun; ++r) {
+    const SixelRun& run = runs_[r];
+    if (run.value == 0) continue;
+    open_.clear();
+    for (std::size_t x = run.start, end = run.start + run.count; x < end; ++x) {
+      unsigned others = run.value & ~unsigned(own[x]);
+      for (; others != 0; others &= others - 1) {
+        const int row = std::countr_zero(others);
+        const PaletteIndex owner = band[static_cast<std::size_t>(row) * w + x];
+        std::size_t& stretchEnd = openEnd_[owner];
+        if (stretchEnd == 0) {  // not open in this run
+          open_.push_back(owner);
+          openStart_[owner] = x;
+        } else if (stretchEnd < x) {  // a gap: the last stretch is done
+          overwrites_.push_back(Overwrite{r, owner, openStart_[owner], stretchEnd});
+          openStart_[owner] = x;
         }
+        stretchEnd = x + 1;
       }
     }
+    for (const PaletteIndex owner : open_) {
+      overwrites_.push_back(Overwrite{r, owner, openStart_[owner], openEnd_[owner]});
+      openEnd_[owner] = 0;
+    }
+  }
 }
 
 void SixelBandEncoder::linkSegments() {
@@ -184,10 +209,12 @@ void SixelBandEncoder::linkSegments() {
 
 std::size_t SixelBandEncoder::planLines(int selected) {
   const std::size_t n = segments_.size();
+  // Leftmost first, ties in segments_' order: a counting sort by start column.
+  startCount_.assign(static_cast<std::size_t>(width_) + 1, 0);
+  for (const Segment& s : segments_) ++startCount_[s.start + 1];
+  for (std::size_t c = 1; c < startCount_.size(); ++c) startCount_[c] += startCount_[c - 1];
   byStart_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) byStart_[i] = i;
-  std::stable_sort(byStart_.begin(), byStart_.end(),
-                   [&](std::size_t a, std::size_t b) { return segments_[a].start < segments_[b].start; });
+  for (std::size_t i = 0; i < n; ++i) byStart_[startCount_[segments_[i].start]++] = i;
   plan_.clear();
   std::size_t bytes = 0;
   int reg = selected;
@@ -197,9 +224,18 @@ std::size_t SixelBandEncoder::planLines(int selected) {
   for (bool firstLine = true; left > 0; firstLine = false) {
     if (!firstLine) plan_.push_back(kLineBreak), ++bytes;
     std::size_t x = 0;
-    for (std::size_t i : byStart_) {
-      Segment& s = segments_[i];
-      if (s.written || s.waitingFor > 0 || s.start < x) continue;
+    for (std::size_t k = 0; k < byStart_.size(); ++k) {
+      Segment& s = segments_[byStart_[k]];
+      if (s.start < x) {  // none before the first starting at x or after can go next: skip to it
+        k = static_cast<std::size_t>(
+                std::partition_point(byStart_.begin() + static_cast<std::ptrdiff_t>(k), byStart_.end(),
+                                     [&](std::size_t j) { return segments_[j].start < x; }) -
+                byStart_.begin()) -
+            1;
+        continue;
+      }
+      if (s.written || s.waitingFor > 0) continue;
+      const std::size_t i = byStart_[k];
       plan_.push_back(i);
       if (s.start > x) bytes += runBytes(s.start - x);
       if (s.reg != reg) bytes += 1 + digitsOf(static_cast<std::size_t>(s.reg));
@@ -242,15 +278,22 @@ void SixelBandEncoder::writePlan(std::string& out) {
 void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std::string& out) {
   const std::size_t w = static_cast<std::size_t>(width_);
   order_.clear();
+  // By runs of one register along a row, here and in the counting sort
+  // below: a counter bumped once a run, not once a pixel, where one pixel's
+  // increment would wait for the previous one's.
   for (int r = 0; r < rows; ++r) {
     const PaletteIndex* row = band.data() + static_cast<std::size_t>(r) * w;
-    for (std::size_t x = 0; x < w; ++x) {
+    for (std::size_t x = 0; x < w;) {
       const PaletteIndex reg = row[x];
-      if (count_[reg]++ == 0) {
+      std::size_t y = x + 1;
+      while (y < w && row[y] == reg) ++y;
+      if (count_[reg] == 0) {
         order_.push_back(reg);
-        end_[reg] = x + 1;
+        end_[reg] = y;
       }
-      end_[reg] = std::max(end_[reg], x + 1);
+      count_[reg] += static_cast<std::uint32_t>(y - x);
+      end_[reg] = std::max(end_[reg], y);
+      x = y;
     }
   }
   std::sort(order_.begin(), order_.end(), [&](int a, int b) {
@@ -263,6 +306,7 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
   std::fill(later_.begin(), later_.end(), valid);
   runs_.clear();
   passes_.clear();
+  overwrites_.clear();
   // Each register's pixels (column << 3 | row), by a counting sort, so
   // that a pass touches only its own pixels and the columns its runs scan.
   std::size_t next = 0;
@@ -273,7 +317,15 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
   pixels_.resize(next);
   for (int r = 0; r < rows; ++r) {
     const PaletteIndex* row = band.data() + static_cast<std::size_t>(r) * w;
-    for (std::size_t x = 0; x < w; ++x) pixels_[offset_[row[x]]++] = static_cast<std::uint32_t>(x << 3 | unsigned(r));
+    for (std::size_t x = 0; x < w;) {
+      const PaletteIndex reg = row[x];
+      std::size_t y = x + 1;
+      while (y < w && row[y] == reg) ++y;
+      std::uint32_t* to = pixels_.data() + offset_[reg];
+      for (std::size_t c = x; c < y; ++c) *to++ = static_cast<std::uint32_t>(c << 3 | unsigned(r));
+      offset_[reg] += y - x;
+      x = y;
+    }
   }
   std::size_t from = 0;
   for (const int reg : order_) {
@@ -287,13 +339,19 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
       later_[x] = static_cast<std::uint8_t>(later_[x] & ~must_[x]);
     }
     passRuns(reg, end_[static_cast<std::size_t>(reg)]);
+    findOverwrites(passes_.back(), band);
     for (std::size_t i = from; i < to; ++i) must_[pixels_[i] >> 3] = 0;
     from = to;
   }
-  findOverwrites(band, rows);
-  // The band as lines for each cut; the shortest is written (the first of equals).
+  // The band as lines for each cut; the shortest is written (the first of
+  // equals). A cut that would drop the same blank runs as the one before it
+  // gives the same segments, so the same plan and bytes, and cannot win:
+  // it is not laid out.
   std::size_t best = SIZE_MAX;
+  std::size_t previousGap = 0;
   for (std::size_t gap : kSplitGaps) {
+    if (previousGap != 0 && !blankRunBetween(previousGap, gap)) continue;
+    previousGap = gap;
     cutPasses(gap);
     linkSegments();
     const std::size_t bytes = planLines(lastRegister_);

@@ -112,7 +112,11 @@ class SixelBandEncoder {
   void passRuns(int reg, std::size_t end);
   void cutPasses(std::size_t gap);
   std::size_t segmentAt(PaletteIndex reg, std::size_t x);  // the register's segment covering column x
-  void findOverwrites(std::span<const PaletteIndex> band, int rows);  // once a band, for every cut
+  // The pass's overwrites, for every cut: called once a pass, while must_ holds its bits.
+  void findOverwrites(const Pass& pass, std::span<const PaletteIndex> band);
+  // Whether some pass has a blank run, not its first, of shorter <= count < longer
+  // columns: else cutting at `shorter` and at `longer` gives the same segments.
+  bool blankRunBetween(std::size_t shorter, std::size_t longer) const;
   void linkSegments();
   // Lays the segments out in lines (plan_) and returns the bytes they take,
   // `selected` being the register selected before the band.
@@ -132,6 +136,7 @@ class SixelBandEncoder {
   std::vector<std::size_t> plan_, bestPlan_;  // segment indices and kLineBreak, in writing order
   std::vector<Segment> bestSegments_;
   std::vector<std::size_t> byStart_;  // segments_ indices, leftmost first
+  std::vector<std::size_t> startCount_;  // planLines' counting sort, per start column
   std::vector<std::vector<std::size_t>> after_;  // per segment, the segments waiting for it
   std::vector<Overwrite> overwrites_;
   std::vector<std::size_t> segmentOfRun_;        // per run, its segment in this cut
@@ -141,6 +146,8 @@ class SixelBandEncoder {
   std::vector<std::size_t> end_;                 // per register, one past its last column in this band
   std::vector<std::size_t> offset_;              // per register, where its pixels start in pixels_
   std::vector<std::uint32_t> pixels_;            // the band's pixels (column << 3 | row), by register
+  std::vector<std::size_t> openStart_, openEnd_;  // per register, findOverwrites' open stretch (end 0: none)
+  std::vector<PaletteIndex> open_;               // registers with an open stretch
   SixelBandStats stats_;
 };
 
