@@ -75,14 +75,16 @@ std::size_t encodeRuns(std::span<const std::uint8_t> must, std::span<const std::
 
 SixelBandEncoder::SixelBandEncoder(int width, int registers)
     : width_(width),
+      regs_(static_cast<std::size_t>(registers)),
       count_(static_cast<std::size_t>(registers), 0),
-      must_(static_cast<std::size_t>(width)),
+      bits_(static_cast<std::size_t>(registers) * static_cast<std::size_t>(width), 0),
+      tally_(4 * static_cast<std::size_t>(registers), 0),
+      lastColumn_(static_cast<std::size_t>(kBandRows) * static_cast<std::size_t>(registers), 0),
       later_(static_cast<std::size_t>(width)),
       regFirst_(static_cast<std::size_t>(registers), 0),
       regCount_(static_cast<std::size_t>(registers), 0),
       lastFound_(static_cast<std::size_t>(registers), 0),
       end_(static_cast<std::size_t>(registers), 0),
-      offset_(static_cast<std::size_t>(registers), 0),
       openStart_(static_cast<std::size_t>(registers), 0),
       openEnd_(static_cast<std::size_t>(registers), 0) {}
 
@@ -92,7 +94,7 @@ void SixelBandEncoder::passRuns(int reg, std::size_t end) {
   // two); a first run that stays blank is dropped by cutPasses. A pass may
   // set its own bits and those of pixels drawn later.
   Pass pass{reg, runs_.size(), 0};
-  const std::uint8_t* must = must_.data();
+  const std::uint8_t* must = bits_.data() + static_cast<std::size_t>(reg) * static_cast<std::size_t>(width_);
   const std::uint8_t* later = later_.data();
   appendRuns(must, [=](std::size_t x) { return static_cast<std::uint8_t>(must[x] | later[x]); }, end, runs_);
   pass.lastRun = runs_.size();
@@ -149,7 +151,7 @@ std::size_t SixelBandEncoder::segmentAt(PaletteIndex reg, std::size_t x) {
 
 void SixelBandEncoder::findOverwrites(const Pass& pass, std::span<const PaletteIndex> band) {
   const std::size_t w = static_cast<std::size_t>(width_);
-  const std::uint8_t* own = must_.data();  // still the pass's own bits: called before they are cleared
+  const std::uint8_t* own = bits_.data() + static_cast<std::size_t>(pass.reg) * w;
   // Column by column, one open stretch per owner: a stretch grows while the
   // owner is met in the next column (in any row the run sets), so the rows
   // of a band, which mostly agree, give one Overwrite and not six.
@@ -277,24 +279,36 @@ void SixelBandEncoder::writePlan(std::string& out) {
 
 void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std::string& out) {
   const std::size_t w = static_cast<std::size_t>(width_);
-  order_.clear();
-  // By runs of one register along a row, here and in the counting sort
-  // below: a counter bumped once a run, not once a pixel, where one pixel's
-  // increment would wait for the previous one's.
+  // One pass over the pixels: each register's bits per column (its row of
+  // bits_), its pixel count and its last column. Every step is a store or an
+  // increment with no branch on the data; the counts go to four tallies by
+  // column, so a run of one register does not make each increment wait for
+  // the one before it.
   for (int r = 0; r < rows; ++r) {
     const PaletteIndex* row = band.data() + static_cast<std::size_t>(r) * w;
-    for (std::size_t x = 0; x < w;) {
+    const std::uint8_t bit = static_cast<std::uint8_t>(1u << r);
+    std::uint32_t* lastColumn = lastColumn_.data() + static_cast<std::size_t>(r) * regs_;
+    for (std::size_t x = 0; x < w; ++x) {
       const PaletteIndex reg = row[x];
-      std::size_t y = x + 1;
-      while (y < w && row[y] == reg) ++y;
-      if (count_[reg] == 0) {
-        order_.push_back(reg);
-        end_[reg] = y;
-      }
-      count_[reg] += static_cast<std::uint32_t>(y - x);
-      end_[reg] = std::max(end_[reg], y);
-      x = y;
+      bits_[reg * w + x] |= bit;
+      ++tally_[(x & 3) * regs_ + reg];
+      lastColumn[reg] = static_cast<std::uint32_t>(x + 1);  // columns rise along a row: the last store is the last
     }
+  }
+  order_.clear();
+  for (std::size_t reg = 0; reg < regs_; ++reg) {
+    const std::uint32_t n = tally_[reg] + tally_[regs_ + reg] + tally_[2 * regs_ + reg] + tally_[3 * regs_ + reg];
+    if (n == 0) continue;
+    count_[reg] = n;
+    std::size_t end = 0;
+    for (int r = 0; r < rows; ++r) {
+      std::uint32_t& last = lastColumn_[static_cast<std::size_t>(r) * regs_ + reg];
+      end = std::max<std::size_t>(end, last);
+      last = 0;
+    }
+    end_[reg] = end;
+    order_.push_back(static_cast<int>(reg));
+    for (std::size_t t = 0; t < 4; ++t) tally_[t * regs_ + reg] = 0;
   }
   std::sort(order_.begin(), order_.end(), [&](int a, int b) {
     return count_[static_cast<std::size_t>(a)] != count_[static_cast<std::size_t>(b)]
@@ -307,41 +321,12 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
   runs_.clear();
   passes_.clear();
   overwrites_.clear();
-  // Each register's pixels (column << 3 | row), by a counting sort, so
-  // that a pass touches only its own pixels and the columns its runs scan.
-  std::size_t next = 0;
   for (const int reg : order_) {
-    offset_[static_cast<std::size_t>(reg)] = next;
-    next += count_[static_cast<std::size_t>(reg)];
-  }
-  pixels_.resize(next);
-  for (int r = 0; r < rows; ++r) {
-    const PaletteIndex* row = band.data() + static_cast<std::size_t>(r) * w;
-    for (std::size_t x = 0; x < w;) {
-      const PaletteIndex reg = row[x];
-      std::size_t y = x + 1;
-      while (y < w && row[y] == reg) ++y;
-      std::uint32_t* to = pixels_.data() + offset_[reg];
-      for (std::size_t c = x; c < y; ++c) *to++ = static_cast<std::uint32_t>(c << 3 | unsigned(r));
-      offset_[reg] += y - x;
-      x = y;
-    }
-  }
-  std::size_t from = 0;
-  for (const int reg : order_) {
-    const std::size_t to = from + count_[static_cast<std::size_t>(reg)];
-    for (std::size_t i = from; i < to; ++i) {
-      const std::size_t x = pixels_[i] >> 3;
-      must_[x] = static_cast<std::uint8_t>(must_[x] | (1u << (pixels_[i] & 7)));
-    }
-    for (std::size_t i = from; i < to; ++i) {
-      const std::size_t x = pixels_[i] >> 3;
-      later_[x] = static_cast<std::uint8_t>(later_[x] & ~must_[x]);
-    }
-    passRuns(reg, end_[static_cast<std::size_t>(reg)]);
+    const std::uint8_t* own = bits_.data() + static_cast<std::size_t>(reg) * w;
+    const std::size_t end = end_[static_cast<std::size_t>(reg)];
+    for (std::size_t x = 0; x < end; ++x) later_[x] = static_cast<std::uint8_t>(later_[x] & ~own[x]);
+    passRuns(reg, end);
     findOverwrites(passes_.back(), band);
-    for (std::size_t i = from; i < to; ++i) must_[pixels_[i] >> 3] = 0;
-    from = to;
   }
   // The band as lines for each cut; the shortest is written (the first of
   // equals). A cut that would drop the same blank runs as the one before it
@@ -366,7 +351,10 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
   if (out.size() - before != best)  // planLines' count and writePlan's bytes are two codings of one form
     throw Error(ErrorKind::Internal, "sixel band: the bytes written are not the plan's count");
   stats_.passes += order_.size();
-  for (int reg : order_) count_[static_cast<std::size_t>(reg)] = 0;
+  for (int reg : order_) {
+    count_[static_cast<std::size_t>(reg)] = 0;
+    std::fill_n(bits_.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(reg) * w), w, std::uint8_t{0});
+  }
 }
 
 }  // namespace lattice::sixel

@@ -112,7 +112,7 @@ class SixelBandEncoder {
   void passRuns(int reg, std::size_t end);
   void cutPasses(std::size_t gap);
   std::size_t segmentAt(PaletteIndex reg, std::size_t x);  // the register's segment covering column x
-  // The pass's overwrites, for every cut: called once a pass, while must_ holds its bits.
+  // The pass's overwrites, for every cut: called once a pass.
   void findOverwrites(const Pass& pass, std::span<const PaletteIndex> band);
   // Whether some pass has a blank run, not its first, of shorter <= count < longer
   // columns: else cutting at `shorter` and at `longer` gives the same segments.
@@ -126,9 +126,12 @@ class SixelBandEncoder {
 
   int width_;
   int lastRegister_ = -1;  // selected at the end of the previous band
+  std::size_t regs_;                  // registers the palette has
   std::vector<std::uint32_t> count_;  // pixels per register in this band
   std::vector<int> order_;            // registers present, most pixels first
-  std::vector<std::uint8_t> must_;    // this pass's bits per column
+  std::vector<std::uint8_t> bits_;    // per register, its pixels' bits per column (registers x width; zero between bands)
+  std::vector<std::uint32_t> tally_;  // 4 x registers pixel counts, by column mod 4 (zero between bands)
+  std::vector<std::uint32_t> lastColumn_;  // per row and register, one past its last pixel (zero between bands)
   std::vector<std::uint8_t> later_;   // per column, bits of pixels drawn by passes not yet done
   std::vector<SixelRun> runs_;        // every pass's runs, this band
   std::vector<Pass> passes_;          // in order_
@@ -144,8 +147,6 @@ class SixelBandEncoder {
   std::vector<std::size_t> regFirst_, regCount_;  // per register, its segments in segments_
   std::vector<std::size_t> lastFound_;           // per register, the segment linkSegments found last
   std::vector<std::size_t> end_;                 // per register, one past its last column in this band
-  std::vector<std::size_t> offset_;              // per register, where its pixels start in pixels_
-  std::vector<std::uint32_t> pixels_;            // the band's pixels (column << 3 | row), by register
   std::vector<std::size_t> openStart_, openEnd_;  // per register, findOverwrites' open stretch (end 0: none)
   std::vector<PaletteIndex> open_;               // registers with an open stretch
   SixelBandStats stats_;
