@@ -86,7 +86,8 @@ SixelBandEncoder::SixelBandEncoder(int width, int registers)
       lastFound_(static_cast<std::size_t>(registers), 0),
       end_(static_cast<std::size_t>(registers), 0),
       openStart_(static_cast<std::size_t>(registers), 0),
-      openEnd_(static_cast<std::size_t>(registers), 0) {}
+      openEnd_(static_cast<std::size_t>(registers), 0),
+      openRun_(static_cast<std::size_t>(registers), 0) {}
 
 void SixelBandEncoder::passRuns(int reg, std::size_t end) {
   // From column 0: left of its first must a pass may still set free bits, so
@@ -153,36 +154,46 @@ void SixelBandEncoder::findOverwrites(const Pass& pass, std::span<const PaletteI
   const std::size_t w = static_cast<std::size_t>(width_);
   const std::uint8_t* own = bits_.data() + static_cast<std::size_t>(pass.reg) * w;
   // Column by column, one open stretch per owner: a stretch grows while the
-  // owner is met in the next column (in any row the run sets), so the rows
-  // of a band, which mostly agree, give one Overwrite and not six.
-  // linkSegments asks only which of the owner's segments a stretch overlaps,
-  // and the union of touching stretches overlaps the same ones. A column
-  // whose set bits are all the pass's own pixels is passed over unread.
+  // owner is met in the next column (in any row the pass sets there), so the
+  // rows of a band, which mostly agree, give one Overwrite and not six.
+  // Stretches run on across runs until a blank run: runs with no blank
+  // between them are in one segment whatever the cut (a cut drops blank
+  // runs only), and linkSegments asks only which of the owner's segments a
+  // stretch overlaps, which the union of touching stretches answers alike.
+  // A column whose set bits are all the pass's own pixels is passed over.
+  auto flush = [&] {
+    for (const PaletteIndex owner : open_) {
+      overwrites_.push_back(Overwrite{openRun_[owner], owner, openStart_[owner], openEnd_[owner]});
+      openEnd_[owner] = 0;
+    }
+    open_.clear();
+  };
   for (std::size_t r = pass.firstRun; r < pass.lastRun; ++r) {
     const SixelRun& run = runs_[r];
-    if (run.value == 0) continue;
-    open_.clear();
+    if (run.value == 0) {
+      flush();
+      continue;
+    }
     for (std::size_t x = run.start, end = run.start + run.count; x < end; ++x) {
       unsigned others = run.value & ~unsigned(own[x]);
       for (; others != 0; others &= others - 1) {
         const int row = std::countr_zero(others);
         const PaletteIndex owner = band[static_cast<std::size_t>(row) * w + x];
         std::size_t& stretchEnd = openEnd_[owner];
-        if (stretchEnd == 0) {  // not open in this run
+        if (stretchEnd == 0) {  // not open since the last blank
           open_.push_back(owner);
           openStart_[owner] = x;
+          openRun_[owner] = r;
         } else if (stretchEnd < x) {  // a gap: the last stretch is done
-          overwrites_.push_back(Overwrite{r, owner, openStart_[owner], stretchEnd});
+          overwrites_.push_back(Overwrite{openRun_[owner], owner, openStart_[owner], stretchEnd});
           openStart_[owner] = x;
+          openRun_[owner] = r;
         }
         stretchEnd = x + 1;
       }
     }
-    for (const PaletteIndex owner : open_) {
-      overwrites_.push_back(Overwrite{r, owner, openStart_[owner], openEnd_[owner]});
-      openEnd_[owner] = 0;
-    }
   }
+  flush();
 }
 
 void SixelBandEncoder::linkSegments() {

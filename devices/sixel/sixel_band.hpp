@@ -147,7 +147,7 @@ class SixelBandEncoder {
   std::vector<std::size_t> regFirst_, regCount_;  // per register, its segments in segments_
   std::vector<std::size_t> lastFound_;           // per register, the segment linkSegments found last
   std::vector<std::size_t> end_;                 // per register, one past its last column in this band
-  std::vector<std::size_t> openStart_, openEnd_;  // per register, findOverwrites' open stretch (end 0: none)
+  std::vector<std::size_t> openStart_, openEnd_, openRun_;  // per register, findOverwrites' open stretch (end 0: none)
   std::vector<PaletteIndex> open_;               // registers with an open stretch
   SixelBandStats stats_;
 };
