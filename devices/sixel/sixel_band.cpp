@@ -253,7 +253,7 @@ std::size_t SixelBandEncoder::planLines(int selected) {
       if (s.start > x) bytes += runBytes(s.start - x);
       if (s.reg != reg) bytes += 1 + digitsOf(static_cast<std::size_t>(s.reg));
       reg = s.reg;
-      for (std::size_t r = s.firstRun; r < s.lastRun; ++r) bytes += runBytes(runs_[r].count);
+      bytes += runBytesBefore_[s.lastRun] - runBytesBefore_[s.firstRun];
       x = s.end;
       s.written = true;
       --left;
@@ -339,6 +339,10 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
     passRuns(reg, end);
     findOverwrites(passes_.back(), band);
   }
+  // What the runs cost, summed once for every cut's planLines.
+  runBytesBefore_.resize(runs_.size() + 1);
+  runBytesBefore_[0] = 0;
+  for (std::size_t r = 0; r < runs_.size(); ++r) runBytesBefore_[r + 1] = runBytesBefore_[r] + runBytes(runs_[r].count);
   // The band as lines for each cut; the shortest is written (the first of
   // equals). A cut that would drop the same blank runs as the one before it
   // gives the same segments, so the same plan and bytes, and cannot win:

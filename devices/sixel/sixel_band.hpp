@@ -134,6 +134,7 @@ class SixelBandEncoder {
   std::vector<std::uint32_t> lastColumn_;  // per row and register, one past its last pixel (zero between bands)
   std::vector<std::uint8_t> later_;   // per column, bits of pixels drawn by passes not yet done
   std::vector<SixelRun> runs_;        // every pass's runs, this band
+  std::vector<std::size_t> runBytesBefore_;  // bytes of runs_[0, r), for planLines
   std::vector<Pass> passes_;          // in order_
   std::vector<Segment> segments_;     // by pass, each pass's left to right
   std::vector<std::size_t> plan_, bestPlan_;  // segment indices and kLineBreak, in writing order
