@@ -81,13 +81,12 @@ SixelBandEncoder::SixelBandEncoder(int width, int registers)
       tally_(4 * static_cast<std::size_t>(registers), 0),
       lastColumn_(static_cast<std::size_t>(kBandRows) * static_cast<std::size_t>(registers), 0),
       later_(static_cast<std::size_t>(width)),
-      regFirst_(static_cast<std::size_t>(registers), 0),
-      regCount_(static_cast<std::size_t>(registers), 0),
-      lastFound_(static_cast<std::size_t>(registers), 0),
+      groupFirst_(static_cast<std::size_t>(registers), 0),
+      groupCount_(static_cast<std::size_t>(registers), 0),
+      groupFound_(static_cast<std::size_t>(registers), 0),
       end_(static_cast<std::size_t>(registers), 0),
       openStart_(static_cast<std::size_t>(registers), 0),
-      openEnd_(static_cast<std::size_t>(registers), 0),
-      openRun_(static_cast<std::size_t>(registers), 0) {}
+      openEnd_(static_cast<std::size_t>(registers), 0) {}
 
 void SixelBandEncoder::passRuns(int reg, std::size_t end) {
   // From column 0: left of its first must a pass may still set free bits, so
@@ -104,10 +103,9 @@ void SixelBandEncoder::passRuns(int reg, std::size_t end) {
 
 void SixelBandEncoder::cutPasses(std::size_t gap) {
   segments_.clear();
+  segmentOfGroup_.resize(groups_.size());
   for (std::size_t rank = 0; rank < passes_.size(); ++rank) {
     const Pass& pass = passes_[rank];
-    const auto reg = static_cast<std::size_t>(pass.reg);
-    regFirst_[reg] = segments_.size();
     Segment s;
     s.reg = pass.reg;
     s.firstRun = pass.firstRun;
@@ -118,13 +116,23 @@ void SixelBandEncoder::cutPasses(std::size_t gap) {
       s.end = runs_[lastRun - 1].start + runs_[lastRun - 1].count;
       segments_.push_back(s);
     };
-    for (std::size_t i = pass.firstRun; i < pass.lastRun; ++i)
-      if (runs_[i].value == 0 && (runs_[i].count >= gap || i == pass.firstRun)) {  // a long blank ends a segment, and is dropped
+    std::size_t group = groupFirst_[static_cast<std::size_t>(pass.reg)];
+    bool afterBlank = true;
+    for (std::size_t i = pass.firstRun; i < pass.lastRun; ++i) {
+      if (runs_[i].value != 0) {
+        // A group lies whole in the segment being built, whose index is
+        // the next one (a segment is pushed only when it closes).
+        if (afterBlank) segmentOfGroup_[group++] = segments_.size();
+        afterBlank = false;
+        continue;
+      }
+      afterBlank = true;
+      if (runs_[i].count >= gap || i == pass.firstRun) {  // a long blank ends a segment, and is dropped
         close(i);
         s.firstRun = i + 1;
       }
+    }
     close(pass.lastRun);
-    regCount_[reg] = segments_.size() - regFirst_[reg];
   }
 }
 
@@ -135,19 +143,56 @@ bool SixelBandEncoder::blankRunBetween(std::size_t shorter, std::size_t longer) 
   return false;
 }
 
-std::size_t SixelBandEncoder::segmentAt(PaletteIndex reg, std::size_t x) {
-  std::size_t j = lastFound_[reg];  // runs go left to right: usually the one found last
-  if (j < segments_.size() && segments_[j].start <= x && x < segments_[j].end) return j;
-  // The register's segments are [regFirst_, regFirst_ + regCount_), by start:
-  // the last one starting at or before x.
-  j = regFirst_[reg];
-  for (std::size_t step = regCount_[reg]; step > 1;) {
-    const std::size_t half = step / 2;
-    if (segments_[j + half].start <= x) j += half, step -= half;
-    else step = half;
+void SixelBandEncoder::findGroups() {
+  groups_.clear();
+  for (const Pass& pass : passes_) {
+    const auto reg = static_cast<std::size_t>(pass.reg);
+    groupFirst_[reg] = groups_.size();
+    bool afterBlank = true;
+    for (std::size_t r = pass.firstRun; r < pass.lastRun; ++r) {
+      const SixelRun& run = runs_[r];
+      if (run.value == 0) {
+        afterBlank = true;
+        continue;
+      }
+      if (afterBlank) groups_.push_back(Group{run.start, run.start});
+      groups_.back().end = run.start + run.count;
+      afterBlank = false;
+    }
+    groupCount_[reg] = groups_.size() - groupFirst_[reg];
+    groupFound_[reg] = groupFirst_[reg];
   }
-  lastFound_[reg] = j;
+  groupStamp_.assign(groups_.size(), SIZE_MAX);
+}
+
+std::size_t SixelBandEncoder::groupAt(PaletteIndex reg, std::size_t x) {
+  // The register's groups are [groupFirst_, groupFirst_ + groupCount_), by
+  // start. A pass's stretches go left to right, so from the group found last
+  // the one wanted is usually that one or a few after it; else a binary
+  // search for the last one starting at or before x.
+  const std::size_t first = groupFirst_[reg], last = first + groupCount_[reg];
+  std::size_t j = groupFound_[reg];
+  if (j < last && groups_[j].start <= x) {
+    while (j < last && groups_[j].end <= x) ++j;
+  } else {
+    j = first;
+    for (std::size_t step = groupCount_[reg]; step > 1;) {
+      const std::size_t half = step / 2;
+      if (groups_[j + half].start <= x) j += half, step -= half;
+      else step = half;
+    }
+  }
+  if (j >= last || x < groups_[j].start || x >= groups_[j].end)
+    throw Error(ErrorKind::Internal, "sixel band: a later register's pixel outside its own pass's runs");
+  groupFound_[reg] = j;
   return j;
+}
+
+void SixelBandEncoder::addEdge(std::size_t group, PaletteIndex owner, std::size_t x) {
+  const std::size_t to = groupAt(owner, x);
+  if (groupStamp_[to] == group) return;  // a group's edges are found together: one of each is enough
+  groupStamp_[to] = group;
+  edges_.push_back(Edge{group, to});
 }
 
 void SixelBandEncoder::findOverwrites(const Pass& pass, std::span<const PaletteIndex> band) {
@@ -155,15 +200,16 @@ void SixelBandEncoder::findOverwrites(const Pass& pass, std::span<const PaletteI
   const std::uint8_t* own = bits_.data() + static_cast<std::size_t>(pass.reg) * w;
   // Column by column, one open stretch per owner: a stretch grows while the
   // owner is met in the next column (in any row the pass sets there), so the
-  // rows of a band, which mostly agree, give one Overwrite and not six.
-  // Stretches run on across runs until a blank run: runs with no blank
-  // between them are in one segment whatever the cut (a cut drops blank
-  // runs only), and linkSegments asks only which of the owner's segments a
-  // stretch overlaps, which the union of touching stretches answers alike.
-  // A column whose set bits are all the pass's own pixels is passed over.
+  // rows of a band, which mostly agree, give one stretch and not six. A
+  // column whose set bits are all the pass's own pixels is passed over.
+  // Each stretch becomes an edge between groups (findGroups): the owner's
+  // pass covers a pixel of its own with a non-blank run, so a stretch of its
+  // pixels lies in one group of its pass, and the edges are deduplicated.
+  std::size_t group = groupFirst_[static_cast<std::size_t>(pass.reg)];
+  bool afterBlank = true, started = false;
   auto flush = [&] {
     for (const PaletteIndex owner : open_) {
-      overwrites_.push_back(Overwrite{openRun_[owner], owner, openStart_[owner], openEnd_[owner]});
+      addEdge(group, owner, openStart_[owner]);
       openEnd_[owner] = 0;
     }
     open_.clear();
@@ -172,7 +218,13 @@ void SixelBandEncoder::findOverwrites(const Pass& pass, std::span<const PaletteI
     const SixelRun& run = runs_[r];
     if (run.value == 0) {
       flush();
+      afterBlank = true;
       continue;
+    }
+    if (afterBlank) {
+      if (started) ++group;
+      started = true;
+      afterBlank = false;
     }
     for (std::size_t x = run.start, end = run.start + run.count; x < end; ++x) {
       unsigned others = run.value & ~unsigned(own[x]);
@@ -183,11 +235,9 @@ void SixelBandEncoder::findOverwrites(const Pass& pass, std::span<const PaletteI
         if (stretchEnd == 0) {  // not open since the last blank
           open_.push_back(owner);
           openStart_[owner] = x;
-          openRun_[owner] = r;
         } else if (stretchEnd < x) {  // a gap: the last stretch is done
-          overwrites_.push_back(Overwrite{openRun_[owner], owner, openStart_[owner], stretchEnd});
+          addEdge(group, owner, openStart_[owner]);
           openStart_[owner] = x;
-          openRun_[owner] = r;
         }
         stretchEnd = x + 1;
       }
@@ -201,22 +251,14 @@ void SixelBandEncoder::linkSegments() {
   if (after_.size() < n) after_.resize(n);
   for (std::size_t i = 0; i < n; ++i) after_[i].clear();
   stamp_.assign(n, n);
-  std::fill(lastFound_.begin(), lastFound_.end(), n);
-  segmentOfRun_.assign(runs_.size(), n);  // n: a dropped blank
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t r = segments_[i].firstRun; r < segments_[i].lastRun; ++r) segmentOfRun_[r] = i;
   // Where a segment sets a bit of a later register's pixel, that register's
-  // segments covering the stretch are written after it.
-  for (const Overwrite& o : overwrites_) {
-    const std::size_t i = segmentOfRun_[o.run];
-    if (i == n) continue;
-    for (std::size_t j = segmentAt(o.owner, o.start); j < n && segments_[j].reg == o.owner && segments_[j].start < o.end;
-         ++j) {
-      if (segments_[j].end <= o.start || stamp_[j] == i) continue;
-      stamp_[j] = i;
-      after_[i].push_back(j);
-      ++segments_[j].waitingFor;
-    }
+  // segment covering the pixel is written after it.
+  for (const Edge& e : edges_) {
+    const std::size_t i = segmentOfGroup_[e.from], j = segmentOfGroup_[e.to];
+    if (stamp_[j] == i) continue;
+    stamp_[j] = i;
+    after_[i].push_back(j);
+    ++segments_[j].waitingFor;
   }
 }
 
@@ -331,14 +373,17 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
   std::fill(later_.begin(), later_.end(), valid);
   runs_.clear();
   passes_.clear();
-  overwrites_.clear();
+  edges_.clear();
   for (const int reg : order_) {
     const std::uint8_t* own = bits_.data() + static_cast<std::size_t>(reg) * w;
     const std::size_t end = end_[static_cast<std::size_t>(reg)];
     for (std::size_t x = 0; x < end; ++x) later_[x] = static_cast<std::uint8_t>(later_[x] & ~own[x]);
     passRuns(reg, end);
-    findOverwrites(passes_.back(), band);
   }
+  // Edges need every pass's groups, so they come after all the runs (bits_
+  // still holds each register's own bits until the band is done).
+  findGroups();
+  for (const Pass& pass : passes_) findOverwrites(pass, band);
   // What the runs cost, summed once for every cut's planLines.
   runBytesBefore_.resize(runs_.size() + 1);
   runBytesBefore_[0] = 0;

@@ -96,11 +96,15 @@ class SixelBandEncoder {
     int reg = 0;
     std::size_t firstRun = 0, lastRun = 0;  // runs_[firstRun, lastRun)
   };
-  // Run `run` sets bits of register `owner`'s pixels in columns [start, end).
-  struct Overwrite {
-    std::size_t run = 0;
-    PaletteIndex owner = 0;
+  // A group: a pass's maximal stretch of runs with no blank run among them,
+  // columns [start, end). A cut drops blank runs only, so a group always
+  // lies whole in one segment, whatever the cut.
+  struct Group {
     std::size_t start = 0, end = 0;
+  };
+  // Group `from` sets a bit of a pixel whose register's group `to` paints.
+  struct Edge {
+    std::size_t from = 0, to = 0;
   };
   struct Segment {
     int reg = 0;
@@ -111,8 +115,10 @@ class SixelBandEncoder {
   };
   void passRuns(int reg, std::size_t end);
   void cutPasses(std::size_t gap);
-  std::size_t segmentAt(PaletteIndex reg, std::size_t x);  // the register's segment covering column x
-  // The pass's overwrites, for every cut: called once a pass.
+  void findGroups();  // groups_ of every pass, once a band
+  std::size_t groupAt(PaletteIndex reg, std::size_t x);  // the register's group covering column x
+  void addEdge(std::size_t group, PaletteIndex owner, std::size_t x);
+  // The pass's edges, for every cut: once a pass, after findGroups.
   void findOverwrites(const Pass& pass, std::span<const PaletteIndex> band);
   // Whether some pass has a blank run, not its first, of shorter <= count < longer
   // columns: else cutting at `shorter` and at `longer` gives the same segments.
@@ -142,13 +148,15 @@ class SixelBandEncoder {
   std::vector<std::size_t> byStart_;  // segments_ indices, leftmost first
   std::vector<std::size_t> startCount_;  // planLines' counting sort, per start column
   std::vector<std::vector<std::size_t>> after_;  // per segment, the segments waiting for it
-  std::vector<Overwrite> overwrites_;
-  std::vector<std::size_t> segmentOfRun_;        // per run, its segment in this cut
-  std::vector<std::size_t> stamp_;               // per segment, the last one linked to it
-  std::vector<std::size_t> regFirst_, regCount_;  // per register, its segments in segments_
-  std::vector<std::size_t> lastFound_;           // per register, the segment linkSegments found last
+  std::vector<Group> groups_;                     // by pass, each pass's left to right
+  std::vector<Edge> edges_;                       // this band's, for every cut
+  std::vector<std::size_t> groupStamp_;           // per group, the last group an edge came from
+  std::vector<std::size_t> segmentOfGroup_;       // per group, its segment in this cut
+  std::vector<std::size_t> stamp_;                // per segment, the last one linked to it
+  std::vector<std::size_t> groupFirst_, groupCount_;  // per register, its groups in groups_
+  std::vector<std::size_t> groupFound_;           // per register, the group groupAt found last
   std::vector<std::size_t> end_;                 // per register, one past its last column in this band
-  std::vector<std::size_t> openStart_, openEnd_, openRun_;  // per register, findOverwrites' open stretch (end 0: none)
+  std::vector<std::size_t> openStart_, openEnd_;  // per register, findOverwrites' open stretch (end 0: none)
   std::vector<PaletteIndex> open_;               // registers with an open stretch
   SixelBandStats stats_;
 };
