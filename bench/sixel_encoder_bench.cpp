@@ -14,8 +14,9 @@
 //  * libsixel's: sixel_encode (public API, libsixel 1.10.3's sixel.h) of
 //    the same pixels as SIXEL_PIXELFORMAT_PAL8, with a sixel_dither made by
 //    sixel_dither_new and carrying our palette (sixel_dither_set_palette),
-//    written by a sixel_output callback into a reused string. A PAL8 frame
-//    goes to libsixel's band encoder as it is, with no palette applied.
+//    written by a sixel_output callback into a reused string. PAL8 pixels
+//    are taken as register numbers, with no colour mapping (the decode
+//    check below confirms it on every run of this program).
 //  * Both build their objects (driver; dither and output) inside the timed
 //    run, so each run is one whole in-memory encoding.
 //  * Timing: kWarmups untimed runs each, then --runs (default kRuns) pairs,

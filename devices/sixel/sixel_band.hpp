@@ -41,6 +41,24 @@
 //  * `#Pc` is left out when it is the register already selected (the
 //    register stays selected across `$` and `-`).
 //
+// Work (the bytes above fix what is written; this is how it is found
+// cheaply; docs/sixel.md "Encoder only" has the figures):
+//  * One branch-free pass over the band fills each register's bits per
+//    column (a registers x width array, zero again after the band), its
+//    pixel count (four tallies by column) and its last column.
+//  * Which segment must precede which is found once a band, not once a cut:
+//    a pass's runs between blank runs form a group, which lies whole in one
+//    segment in every cut (a cut drops blank runs only). For each run, the
+//    columns where it sets bits of later registers' pixels are gathered
+//    column by column into one stretch per owner, and each stretch becomes
+//    an edge from the pass's group to the owner's group covering it (the
+//    owner's own non-blank runs cover its pixels); a cut only maps groups
+//    to its segments.
+//  * A cut that drops the same blank runs as the one before it is not laid
+//    out (same segments, same bytes; the first of equals is kept anyway).
+//  * planLines sorts by counting, skips to the first segment at or after
+//    the line's position, and reads a segment's run bytes from prefix sums.
+//
 // Tunable: kSplitGaps. Measured on Plate 6 (512x512, 16 and 256 colours,
 // bytes): no cut 51,717 and 167,605; 8 alone 53,730 and 163,272; 8 and no
 // cut 51,717 and 162,987; 8, 32, no cut (kept) 51,705 and 162,824; 4, 8, 16,
