@@ -205,6 +205,8 @@ void SixelBandEncoder::findOverwrites(const Pass& pass, std::span<const PaletteI
   // Each stretch becomes an edge between groups (findGroups): the owner's
   // pass covers a pixel of its own with a non-blank run, so a stretch of its
   // pixels lies in one group of its pass, and the edges are deduplicated.
+  std::size_t* const openStart = openStart_.data();  // locals: open_'s byte stores may alias members
+  std::size_t* const openEnd = openEnd_.data();
   std::size_t group = groupFirst_[static_cast<std::size_t>(pass.reg)];
   bool afterBlank = true, started = false;
   auto flush = [&] {
@@ -231,13 +233,13 @@ void SixelBandEncoder::findOverwrites(const Pass& pass, std::span<const PaletteI
       for (; others != 0; others &= others - 1) {
         const int row = std::countr_zero(others);
         const PaletteIndex owner = band[static_cast<std::size_t>(row) * w + x];
-        std::size_t& stretchEnd = openEnd_[owner];
+        std::size_t& stretchEnd = openEnd[owner];
         if (stretchEnd == 0) {  // not open since the last blank
           open_.push_back(owner);
-          openStart_[owner] = x;
+          openStart[owner] = x;
         } else if (stretchEnd < x) {  // a gap: the last stretch is done
-          addEdge(group, owner, openStart_[owner]);
-          openStart_[owner] = x;
+          addEdge(group, owner, openStart[owner]);
+          openStart[owner] = x;
         }
         stretchEnd = x + 1;
       }
@@ -337,14 +339,19 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
   // increment with no branch on the data; the counts go to four tallies by
   // column, so a run of one register does not make each increment wait for
   // the one before it.
+  // (Pointers in locals: a byte store may alias anything, so member
+  // vectors' data pointers would be reloaded at every pixel.)
+  std::uint8_t* const bits = bits_.data();
+  std::uint32_t* const tally = tally_.data();
+  const std::size_t regs = regs_;
   for (int r = 0; r < rows; ++r) {
     const PaletteIndex* row = band.data() + static_cast<std::size_t>(r) * w;
     const std::uint8_t bit = static_cast<std::uint8_t>(1u << r);
-    std::uint32_t* lastColumn = lastColumn_.data() + static_cast<std::size_t>(r) * regs_;
+    std::uint32_t* lastColumn = lastColumn_.data() + static_cast<std::size_t>(r) * regs;
     for (std::size_t x = 0; x < w; ++x) {
       const PaletteIndex reg = row[x];
-      bits_[reg * w + x] |= bit;
-      ++tally_[(x & 3) * regs_ + reg];
+      bits[reg * w + x] |= bit;
+      ++tally[(x & 3) * regs + reg];
       lastColumn[reg] = static_cast<std::uint32_t>(x + 1);  // columns rise along a row: the last store is the last
     }
   }
@@ -377,7 +384,8 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
   for (const int reg : order_) {
     const std::uint8_t* own = bits_.data() + static_cast<std::size_t>(reg) * w;
     const std::size_t end = end_[static_cast<std::size_t>(reg)];
-    for (std::size_t x = 0; x < end; ++x) later_[x] = static_cast<std::uint8_t>(later_[x] & ~own[x]);
+    std::uint8_t* const later = later_.data();
+    for (std::size_t x = 0; x < end; ++x) later[x] = static_cast<std::uint8_t>(later[x] & ~own[x]);
     passRuns(reg, end);
   }
   // Edges need every pass's groups, so they come after all the runs (bits_
