@@ -195,7 +195,35 @@ void SixelBandEncoder::addEdge(std::size_t group, PaletteIndex owner, std::size_
   edges_.push_back(Edge{group, to});
 }
 
-void SixelBandEncoder::findOverwrites(const Pass& pass, std::span<const PaletteIndex> band) {
+void SixelBandEncoder::edgesOfFullRun(std::size_t rank, std::size_t group, const SixelRun& run) {
+  // A run setting every row may set only its own and later registers'
+  // pixels, so it overwrites every later pixel in its columns: an edge to
+  // each later register's group holding one of its pixels there, found from
+  // the groups and the registers' bits instead of pixel by pixel.
+  const std::size_t w = static_cast<std::size_t>(width_);
+  const std::size_t start = run.start, end = run.start + run.count;
+  for (std::size_t later = rank + 1; later < passes_.size(); ++later) {
+    const auto reg = static_cast<std::size_t>(passes_[later].reg);
+    const std::size_t first = groupFirst_[reg], last = first + groupCount_[reg];
+    // The first of the register's groups ending after `start` (groups go left to right).
+    std::size_t g = first;
+    for (std::size_t step = last - first; step > 0;) {
+      const std::size_t half = step / 2;
+      if (groups_[g + half].end <= start) g += half + 1, step -= half + 1;
+      else step = half;
+    }
+    const std::uint8_t* own = bits_.data() + reg * w;
+    for (; g < last && groups_[g].start < end; ++g) {
+      const std::size_t from = std::max(start, groups_[g].start), to = std::min(end, groups_[g].end);
+      std::size_t x = from;
+      while (x < to && own[x] == 0) ++x;
+      if (x < to) addEdge(group, static_cast<PaletteIndex>(reg), x);
+    }
+  }
+}
+
+void SixelBandEncoder::findOverwrites(std::size_t rank, std::span<const PaletteIndex> band, std::uint8_t valid) {
+  const Pass& pass = passes_[rank];
   const std::size_t w = static_cast<std::size_t>(width_);
   const std::uint8_t* own = bits_.data() + static_cast<std::size_t>(pass.reg) * w;
   // Column by column, one open stretch per owner: a stretch grows while the
@@ -227,6 +255,13 @@ void SixelBandEncoder::findOverwrites(const Pass& pass, std::span<const PaletteI
       if (started) ++group;
       started = true;
       afterBlank = false;
+    }
+    if (run.value == valid && run.count > 1) {
+      // Stretches still open stay open: a stretch is only ever asked which
+      // group it lies in, and the pieces either side of this run lie in the
+      // same one.
+      edgesOfFullRun(rank, group, run);
+      continue;
     }
     for (std::size_t x = run.start, end = run.start + run.count; x < end; ++x) {
       unsigned others = run.value & ~unsigned(own[x]);
@@ -391,7 +426,7 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
   // Edges need every pass's groups, so they come after all the runs (bits_
   // still holds each register's own bits until the band is done).
   findGroups();
-  for (const Pass& pass : passes_) findOverwrites(pass, band);
+  for (std::size_t rank = 0; rank < passes_.size(); ++rank) findOverwrites(rank, band, valid);
   // What the runs cost, summed once for every cut's planLines.
   runBytesBefore_.resize(runs_.size() + 1);
   runBytesBefore_[0] = 0;

@@ -136,8 +136,10 @@ class SixelBandEncoder {
   void findGroups();  // groups_ of every pass, once a band
   std::size_t groupAt(PaletteIndex reg, std::size_t x);  // the register's group covering column x
   void addEdge(std::size_t group, PaletteIndex owner, std::size_t x);
-  // The pass's edges, for every cut: once a pass, after findGroups.
-  void findOverwrites(const Pass& pass, std::span<const PaletteIndex> band);
+  // The edges of the pass of rank `rank`, for every cut: once a pass, after
+  // findGroups. `valid`: the band's rows as bits.
+  void findOverwrites(std::size_t rank, std::span<const PaletteIndex> band, std::uint8_t valid);
+  void edgesOfFullRun(std::size_t rank, std::size_t group, const SixelRun& run);
   // Whether some pass has a blank run, not its first, of shorter <= count < longer
   // columns: else cutting at `shorter` and at `longer` gives the same segments.
   bool blankRunBetween(std::size_t shorter, std::size_t longer) const;
