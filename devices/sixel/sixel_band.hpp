@@ -53,7 +53,9 @@
 //    column by column into one stretch per owner, and each stretch becomes
 //    an edge from the pass's group to the owner's group covering it (the
 //    owner's own non-blank runs cover its pixels); a cut only maps groups
-//    to its segments.
+//    to its segments. A run that sets every row of the band overwrites
+//    every later pixel in its columns, so its edges are read from the later
+//    registers' groups and bits instead.
 //  * A cut that drops the same blank runs as the one before it is not laid
 //    out (same segments, same bytes; the first of equals is kept anyway).
 //  * planLines sorts by counting, skips to the first segment at or after
