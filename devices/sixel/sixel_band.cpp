@@ -102,44 +102,40 @@ void SixelBandEncoder::passRuns(int reg, std::size_t end) {
 }
 
 void SixelBandEncoder::cutPasses(std::size_t gap) {
+  // From the groups: between two groups of a pass lies exactly one blank
+  // run (a blank run ends only at a column its pass must set), of their
+  // distance in columns, and a leading blank run is dropped by every cut.
+  // A segment is a stretch of groups whose blanks are all shorter than gap.
   segments_.clear();
   segmentOfGroup_.resize(groups_.size());
-  for (std::size_t rank = 0; rank < passes_.size(); ++rank) {
-    const Pass& pass = passes_[rank];
-    Segment s;
-    s.reg = pass.reg;
-    s.firstRun = pass.firstRun;
-    auto close = [&](std::size_t lastRun) {
-      if (lastRun == s.firstRun) return;
-      s.lastRun = lastRun;
-      s.start = runs_[s.firstRun].start;
-      s.end = runs_[lastRun - 1].start + runs_[lastRun - 1].count;
+  for (const Pass& pass : passes_) {
+    const auto reg = static_cast<std::size_t>(pass.reg);
+    const std::size_t first = groupFirst_[reg], last = first + groupCount_[reg];
+    for (std::size_t g = first; g < last;) {
+      Segment s;
+      s.reg = pass.reg;
+      s.firstRun = groups_[g].firstRun;
+      s.start = groups_[g].start;
+      std::size_t h = g;
+      segmentOfGroup_[h] = segments_.size();
+      while (h + 1 < last && groups_[h + 1].start - groups_[h].end < gap) segmentOfGroup_[++h] = segments_.size();
+      s.lastRun = groups_[h].lastRun;
+      s.end = groups_[h].end;
       segments_.push_back(s);
-    };
-    std::size_t group = groupFirst_[static_cast<std::size_t>(pass.reg)];
-    bool afterBlank = true;
-    for (std::size_t i = pass.firstRun; i < pass.lastRun; ++i) {
-      if (runs_[i].value != 0) {
-        // A group lies whole in the segment being built, whose index is
-        // the next one (a segment is pushed only when it closes).
-        if (afterBlank) segmentOfGroup_[group++] = segments_.size();
-        afterBlank = false;
-        continue;
-      }
-      afterBlank = true;
-      if (runs_[i].count >= gap || i == pass.firstRun) {  // a long blank ends a segment, and is dropped
-        close(i);
-        s.firstRun = i + 1;
-      }
+      g = h + 1;
     }
-    close(pass.lastRun);
   }
 }
 
 bool SixelBandEncoder::blankRunBetween(std::size_t shorter, std::size_t longer) const {
-  for (const Pass& pass : passes_)
-    for (std::size_t i = pass.firstRun + 1; i < pass.lastRun; ++i)  // a leading blank is dropped by every cut
-      if (runs_[i].value == 0 && runs_[i].count >= shorter && runs_[i].count < longer) return true;
+  // The blank runs a cut may drop are those between a pass's groups.
+  for (const Pass& pass : passes_) {
+    const auto reg = static_cast<std::size_t>(pass.reg);
+    for (std::size_t g = groupFirst_[reg] + 1; g < groupFirst_[reg] + groupCount_[reg]; ++g) {
+      const std::size_t blank = groups_[g].start - groups_[g - 1].end;
+      if (blank >= shorter && blank < longer) return true;
+    }
+  }
   return false;
 }
 
@@ -155,8 +151,9 @@ void SixelBandEncoder::findGroups() {
         afterBlank = true;
         continue;
       }
-      if (afterBlank) groups_.push_back(Group{run.start, run.start});
+      if (afterBlank) groups_.push_back(Group{run.start, run.start, r, r});
       groups_.back().end = run.start + run.count;
+      groups_.back().lastRun = r + 1;
       afterBlank = false;
     }
     groupCount_[reg] = groups_.size() - groupFirst_[reg];

@@ -121,6 +121,7 @@ class SixelBandEncoder {
   // lies whole in one segment, whatever the cut.
   struct Group {
     std::size_t start = 0, end = 0;
+    std::size_t firstRun = 0, lastRun = 0;  // runs_[firstRun, lastRun)
   };
   // Group `from` sets a bit of a pixel whose register's group `to` paints.
   struct Edge {
