@@ -56,8 +56,10 @@
 //    to its segments. A run that sets every row of the band overwrites
 //    every later pixel in its columns, so its edges are read from the later
 //    registers' groups and bits instead.
-//  * A cut that drops the same blank runs as the one before it is not laid
-//    out (same segments, same bytes; the first of equals is kept anyway).
+//  * A cut is made from the groups: between two groups of a pass lies one
+//    blank run, of their distance. A cut that drops the same blank runs as
+//    the one before it is not laid out (same segments, same bytes; the
+//    first of equals is kept anyway).
 //  * planLines sorts by counting, skips to the first segment at or after
 //    the line's position, and reads a segment's run bytes from prefix sums.
 //
