@@ -46,7 +46,8 @@
 //  * One branch-free pass over the band fills each register's bits per
 //    column (a registers x width array, zero again after the band), its
 //    pixel count (four tallies by column) and its last column.
-//  * Which segment must precede which is found once a band, not once a cut:
+//  * Which segment must precede which is found once a band, not once a cut
+//    (sixel_band_edges.cpp):
 //    a pass's runs between blank runs form a group, which lies whole in one
 //    segment in every cut (a cut drops blank runs only). For each run, the
 //    columns where it sets bits of later registers' pixels are gathered
