@@ -22,4 +22,11 @@ namespace lattice::quantize {
 // maxColors (1..256) of them.
 std::optional<IndexedImage> exactPalette(const RgbImage& picture, int maxColors);
 
+// The same for a picture already indexed (a decoded stream, whose colour map
+// may hold unused or repeated colours): exactly exactPalette(toRgbImage(
+// picture), maxColors), the same palette in the same order and the same
+// indices, from a count per index and a 256-entry map instead of a hash a
+// pixel. Indices beyond the colour map leave it to the RGB path (none).
+std::optional<IndexedImage> exactPalette(const IndexedImage& picture, int maxColors);
+
 }  // namespace lattice::quantize

@@ -7,7 +7,10 @@
 # and x11-apps (xwd), for the sixel and Tek 4014 tests
 # (tests/support/xterm_capture.hpp; scripts/test.sh asks for them). `--bench`
 # adds the peers the benchmarks compare against (POV-Ray,
-# Embree, pngquant, GNU time); `--fuzz` adds clang 14, its runtime libraries
+# Embree, pngquant, GNU time, and libsixel-dev: libsixel's headers and library,
+# for bench/sixel_encoder_bench, which times libsixel's sixel_encode beside our
+# sixel encoder in one process; without it that benchmark is not built);
+# `--fuzz` adds clang 14, its runtime libraries
 # (libFuzzer, ASan, UBSan: libclang-rt-14-dev) and llvm-14 (llvm-symbolizer),
 # for scripts/fuzz.sh and the sanitizer build (scripts/test.sh asks for it);
 # `--firmware` adds the ARM Cortex-M toolchain (gcc-arm-none-eabi, newlib and
@@ -20,7 +23,7 @@ packages=(cmake ninja-build g++ make pkg-config git catch2 libglm-dev libpng-dev
 for option in "$@"; do
   case $option in
     --terminals) packages+=(libsixel-bin xterm xvfb x11-apps) ;;
-    --bench) packages+=(povray libembree-dev pngquant time python3) ;;
+    --bench) packages+=(povray libembree-dev pngquant time python3 libsixel-dev) ;;
     --fuzz) packages+=(clang-14 libclang-rt-14-dev llvm-14) ;;
     --firmware) packages+=(gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm) ;;
     *) echo "setup.sh: unknown option $option (known: --terminals, --bench, --fuzz, --firmware)" >&2; exit 2 ;;

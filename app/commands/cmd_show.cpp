@@ -4,7 +4,9 @@
 // the terminal's largest sixel picture if it is bigger, nearest pixel) keeps
 // its own colours when they fit in the terminal's colour registers
 // (quantize/exact_palette.hpp), else goes through the median cut, and then
-// through the sixel driver, to standard output or a file.
+// through the sixel driver, to standard output or a file. A decoded stream
+// that fits as it is goes from its indices straight to the driver (no RGB
+// picture between: the same palette and bytes, for less work).
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -12,6 +14,7 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -72,7 +75,8 @@ std::string guessDevice(const std::vector<std::uint8_t>& b, const std::string& p
 }
 
 // Nearest-pixel reduction to fit width x height, keeping the aspect.
-RgbImage fitWithin(const RgbImage& image, int width, int height) {
+// The picture itself when it fits (moved, not copied).
+RgbImage fitWithin(RgbImage image, int width, int height) {
   if (image.width <= width && image.height <= height) return image;
   const double scale = std::min(double(width) / image.width, double(height) / image.height);
   RgbImage out(std::max(1, int(image.width * scale)), std::max(1, int(image.height * scale)));
@@ -91,6 +95,11 @@ void runShow(const ShowOptions& o) {
   const std::vector<std::uint8_t> bytes = readInput(o.input);
   RgbImage picture;
   std::string what;
+  // A decoded stream that fits the terminal and its registers as it is: its
+  // indices go to the driver without the RGB round trip (the same palette
+  // and indices exactPalette gives the RGB picture, so the same bytes).
+  std::optional<IndexedImage> direct;
+  int width = 0, height = 0;
   if (o.as.empty() && isPng(bytes)) {
     picture = io::readPngBytes(bytes, o.input);
     what = "PNG";
@@ -105,28 +114,38 @@ void runShow(const ShowOptions& o) {
     if (report.unknownCommands + report.malformed > 0)
       fmt::print(stderr, "lattice show: {}: skipped {} unknown and {} malformed commands\n", o.input,
                  report.unknownCommands, report.malformed);
-    picture = toRgbImage(decoder->image());
+    const IndexedImage& decoded = decoder->image();
+    if (decoded.width <= profile.width && decoded.height <= profile.height)
+      direct = quantize::exactPalette(decoded, profile.registers);
+    if (!direct) picture = toRgbImage(decoded);
+    width = decoded.width, height = decoded.height;
     what = device + " stream";
   }
-  const RgbImage fitted = fitWithin(picture, profile.width, profile.height);
+  if (!direct) width = picture.width, height = picture.height;
   std::unique_ptr<ByteSink> out;
   if (o.stream.empty() || o.stream == "-") out = std::make_unique<io::StdoutSink>();
   else out = std::make_unique<AtomicFile>(o.stream);
   sixel::SixelDriver driver(*out, profile);
-  // A picture with no more colours than the registers (a recorded stream, a
-  // quantized PNG) is sent with its own colours; only a richer one is cut.
-  if (const auto exact = quantize::exactPalette(fitted, profile.registers)) {
-    sendPicture(*exact, driver);
+  int shownWidth = width, shownHeight = height;
+  if (direct) {
+    sendPicture(*direct, driver);
   } else {
-    RgbImageSource source(fitted);
-    quantize::PipelineOptions options;
-    options.progress = false;  // standard error is most likely the terminal being drawn on
-    quantize::runPipeline(source, driver, options);
+    const RgbImage fitted = fitWithin(std::move(picture), profile.width, profile.height);
+    shownWidth = fitted.width, shownHeight = fitted.height;
+    // A picture with no more colours than the registers (a quantized PNG)
+    // is sent with its own colours; only a richer one is cut.
+    if (const auto exact = quantize::exactPalette(fitted, profile.registers)) {
+      sendPicture(*exact, driver);
+    } else {
+      RgbImageSource source(fitted);
+      quantize::PipelineOptions options;
+      options.progress = false;  // standard error is most likely the terminal being drawn on
+      quantize::runPipeline(source, driver, options);
+    }
   }
   out->close();
-  fmt::print(stderr, "lattice show: {} ({}, {}x{}{}): {} bytes of sixel, {} registers, to {}\n", o.input, what,
-             picture.width, picture.height,
-             fitted.width != picture.width ? fmt::format(" shown at {}x{}", fitted.width, fitted.height) : "",
+  fmt::print(stderr, "lattice show: {} ({}, {}x{}{}): {} bytes of sixel, {} registers, to {}\n", o.input, what, width,
+             height, shownWidth != width ? fmt::format(" shown at {}x{}", shownWidth, shownHeight) : "",
              driver.stats().bytes, driver.stats().registers,
              o.stream.empty() || o.stream == "-" ? "standard output" : o.stream);
 }

@@ -74,14 +74,18 @@ std::size_t encodeRuns(std::span<const std::uint8_t> must, std::span<const std::
 
 SixelBandEncoder::SixelBandEncoder(int width, int registers)
     : width_(width),
+      regs_(static_cast<std::size_t>(registers)),
       count_(static_cast<std::size_t>(registers), 0),
-      must_(static_cast<std::size_t>(width)),
+      bits_(static_cast<std::size_t>(registers) * static_cast<std::size_t>(width), 0),
+      tally_(4 * static_cast<std::size_t>(registers), 0),
+      lastColumn_(static_cast<std::size_t>(kBandRows) * static_cast<std::size_t>(registers), 0),
       later_(static_cast<std::size_t>(width)),
-      regFirst_(static_cast<std::size_t>(registers), 0),
-      regCount_(static_cast<std::size_t>(registers), 0),
-      lastFound_(static_cast<std::size_t>(registers), 0),
+      groupFirst_(static_cast<std::size_t>(registers), 0),
+      groupCount_(static_cast<std::size_t>(registers), 0),
+      groupFound_(static_cast<std::size_t>(registers), 0),
       end_(static_cast<std::size_t>(registers), 0),
-      offset_(static_cast<std::size_t>(registers), 0) {}
+      openStart_(static_cast<std::size_t>(registers), 0),
+      openEnd_(static_cast<std::size_t>(registers), 0) {}
 
 void SixelBandEncoder::passRuns(int reg, std::size_t end) {
   // From column 0: left of its first must a pass may still set free bits, so
@@ -89,7 +93,7 @@ void SixelBandEncoder::passRuns(int reg, std::size_t end) {
   // two); a first run that stays blank is dropped by cutPasses. A pass may
   // set its own bits and those of pixels drawn later.
   Pass pass{reg, runs_.size(), 0};
-  const std::uint8_t* must = must_.data();
+  const std::uint8_t* must = bits_.data() + static_cast<std::size_t>(reg) * static_cast<std::size_t>(width_);
   const std::uint8_t* later = later_.data();
   appendRuns(must, [=](std::size_t x) { return static_cast<std::uint8_t>(must[x] | later[x]); }, end, runs_);
   pass.lastRun = runs_.size();
@@ -97,97 +101,51 @@ void SixelBandEncoder::passRuns(int reg, std::size_t end) {
 }
 
 void SixelBandEncoder::cutPasses(std::size_t gap) {
+  // From the groups: between two groups of a pass lies exactly one blank
+  // run (a blank run ends only at a column its pass must set), of their
+  // distance in columns, and a leading blank run is dropped by every cut.
+  // A segment is a stretch of groups whose blanks are all shorter than gap.
   segments_.clear();
-  for (std::size_t rank = 0; rank < passes_.size(); ++rank) {
-    const Pass& pass = passes_[rank];
+  segmentOfGroup_.resize(groups_.size());
+  for (const Pass& pass : passes_) {
     const auto reg = static_cast<std::size_t>(pass.reg);
-    regFirst_[reg] = segments_.size();
-    Segment s;
-    s.reg = pass.reg;
-    s.firstRun = pass.firstRun;
-    auto close = [&](std::size_t lastRun) {
-      if (lastRun == s.firstRun) return;
-      s.lastRun = lastRun;
-      s.start = runs_[s.firstRun].start;
-      s.end = runs_[lastRun - 1].start + runs_[lastRun - 1].count;
+    const std::size_t first = groupFirst_[reg], last = first + groupCount_[reg];
+    for (std::size_t g = first; g < last;) {
+      Segment s;
+      s.reg = pass.reg;
+      s.firstRun = groups_[g].firstRun;
+      s.start = groups_[g].start;
+      std::size_t h = g;
+      segmentOfGroup_[h] = segments_.size();
+      while (h + 1 < last && groups_[h + 1].start - groups_[h].end < gap) segmentOfGroup_[++h] = segments_.size();
+      s.lastRun = groups_[h].lastRun;
+      s.end = groups_[h].end;
       segments_.push_back(s);
-    };
-    for (std::size_t i = pass.firstRun; i < pass.lastRun; ++i)
-      if (runs_[i].value == 0 && (runs_[i].count >= gap || i == pass.firstRun)) {  // a long blank ends a segment, and is dropped
-        close(i);
-        s.firstRun = i + 1;
-      }
-    close(pass.lastRun);
-    regCount_[reg] = segments_.size() - regFirst_[reg];
-  }
-}
-
-std::size_t SixelBandEncoder::segmentAt(PaletteIndex reg, std::size_t x) {
-  std::size_t j = lastFound_[reg];  // runs go left to right: usually the one found last
-  if (j < segments_.size() && segments_[j].start <= x && x < segments_[j].end) return j;
-  // The register's segments are [regFirst_, regFirst_ + regCount_), by start:
-  // the last one starting at or before x.
-  j = regFirst_[reg];
-  for (std::size_t step = regCount_[reg]; step > 1;) {
-    const std::size_t half = step / 2;
-    if (segments_[j + half].start <= x) j += half, step -= half;
-    else step = half;
-  }
-  lastFound_[reg] = j;
-  return j;
-}
-
-void SixelBandEncoder::findOverwrites(std::span<const PaletteIndex> band, int rows) {
-  const std::size_t w = static_cast<std::size_t>(width_);
-  overwrites_.clear();
-  for (const Pass& pass : passes_)
-    for (std::size_t r = pass.firstRun; r < pass.lastRun; ++r) {
-      const SixelRun& run = runs_[r];
-      for (int row = 0; row < rows; ++row) {
-        if ((run.value >> row & 1) == 0) continue;
-        const PaletteIndex* line = band.data() + static_cast<std::size_t>(row) * w;
-        // Stretches of one owner along the row, other than the pass's own register.
-        for (std::size_t x = run.start, end = run.start + run.count; x < end;) {
-          const PaletteIndex owner = line[x];
-          std::size_t y = x + 1;
-          while (y < end && line[y] == owner) ++y;
-          if (owner != pass.reg) overwrites_.push_back(Overwrite{r, owner, x, y});
-          x = y;
-        }
-      }
-    }
-}
-
-void SixelBandEncoder::linkSegments() {
-  const std::size_t n = segments_.size();
-  if (after_.size() < n) after_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) after_[i].clear();
-  stamp_.assign(n, n);
-  std::fill(lastFound_.begin(), lastFound_.end(), n);
-  segmentOfRun_.assign(runs_.size(), n);  // n: a dropped blank
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t r = segments_[i].firstRun; r < segments_[i].lastRun; ++r) segmentOfRun_[r] = i;
-  // Where a segment sets a bit of a later register's pixel, that register's
-  // segments covering the stretch are written after it.
-  for (const Overwrite& o : overwrites_) {
-    const std::size_t i = segmentOfRun_[o.run];
-    if (i == n) continue;
-    for (std::size_t j = segmentAt(o.owner, o.start); j < n && segments_[j].reg == o.owner && segments_[j].start < o.end;
-         ++j) {
-      if (segments_[j].end <= o.start || stamp_[j] == i) continue;
-      stamp_[j] = i;
-      after_[i].push_back(j);
-      ++segments_[j].waitingFor;
+      g = h + 1;
     }
   }
+}
+
+bool SixelBandEncoder::blankRunBetween(std::size_t shorter, std::size_t longer) const {
+  // The blank runs a cut may drop are those between a pass's groups.
+  for (const Pass& pass : passes_) {
+    const auto reg = static_cast<std::size_t>(pass.reg);
+    for (std::size_t g = groupFirst_[reg] + 1; g < groupFirst_[reg] + groupCount_[reg]; ++g) {
+      const std::size_t blank = groups_[g].start - groups_[g - 1].end;
+      if (blank >= shorter && blank < longer) return true;
+    }
+  }
+  return false;
 }
 
 std::size_t SixelBandEncoder::planLines(int selected) {
   const std::size_t n = segments_.size();
+  // Leftmost first, ties in segments_' order: a counting sort by start column.
+  startCount_.assign(static_cast<std::size_t>(width_) + 1, 0);
+  for (const Segment& s : segments_) ++startCount_[s.start + 1];
+  for (std::size_t c = 1; c < startCount_.size(); ++c) startCount_[c] += startCount_[c - 1];
   byStart_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) byStart_[i] = i;
-  std::stable_sort(byStart_.begin(), byStart_.end(),
-                   [&](std::size_t a, std::size_t b) { return segments_[a].start < segments_[b].start; });
+  for (std::size_t i = 0; i < n; ++i) byStart_[startCount_[segments_[i].start]++] = i;
   plan_.clear();
   std::size_t bytes = 0;
   int reg = selected;
@@ -197,14 +155,23 @@ std::size_t SixelBandEncoder::planLines(int selected) {
   for (bool firstLine = true; left > 0; firstLine = false) {
     if (!firstLine) plan_.push_back(kLineBreak), ++bytes;
     std::size_t x = 0;
-    for (std::size_t i : byStart_) {
-      Segment& s = segments_[i];
-      if (s.written || s.waitingFor > 0 || s.start < x) continue;
+    for (std::size_t k = 0; k < byStart_.size(); ++k) {
+      Segment& s = segments_[byStart_[k]];
+      if (s.start < x) {  // none before the first starting at x or after can go next: skip to it
+        k = static_cast<std::size_t>(
+                std::partition_point(byStart_.begin() + static_cast<std::ptrdiff_t>(k), byStart_.end(),
+                                     [&](std::size_t j) { return segments_[j].start < x; }) -
+                byStart_.begin()) -
+            1;
+        continue;
+      }
+      if (s.written || s.waitingFor > 0) continue;
+      const std::size_t i = byStart_[k];
       plan_.push_back(i);
       if (s.start > x) bytes += runBytes(s.start - x);
       if (s.reg != reg) bytes += 1 + digitsOf(static_cast<std::size_t>(s.reg));
       reg = s.reg;
-      for (std::size_t r = s.firstRun; r < s.lastRun; ++r) bytes += runBytes(runs_[r].count);
+      bytes += runBytesBefore_[s.lastRun] - runBytesBefore_[s.firstRun];
       x = s.end;
       s.written = true;
       --left;
@@ -241,17 +208,41 @@ void SixelBandEncoder::writePlan(std::string& out) {
 
 void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std::string& out) {
   const std::size_t w = static_cast<std::size_t>(width_);
-  order_.clear();
+  // One pass over the pixels: each register's bits per column (its row of
+  // bits_), its pixel count and its last column. Every step is a store or an
+  // increment with no branch on the data; the counts go to four tallies by
+  // column, so a run of one register does not make each increment wait for
+  // the one before it.
+  // (Pointers in locals: a byte store may alias anything, so member
+  // vectors' data pointers would be reloaded at every pixel.)
+  std::uint8_t* const bits = bits_.data();
+  std::uint32_t* const tally = tally_.data();
+  const std::size_t regs = regs_;
   for (int r = 0; r < rows; ++r) {
     const PaletteIndex* row = band.data() + static_cast<std::size_t>(r) * w;
+    const std::uint8_t bit = static_cast<std::uint8_t>(1u << r);
+    std::uint32_t* lastColumn = lastColumn_.data() + static_cast<std::size_t>(r) * regs;
     for (std::size_t x = 0; x < w; ++x) {
       const PaletteIndex reg = row[x];
-      if (count_[reg]++ == 0) {
-        order_.push_back(reg);
-        end_[reg] = x + 1;
-      }
-      end_[reg] = std::max(end_[reg], x + 1);
+      bits[reg * w + x] |= bit;
+      ++tally[(x & 3) * regs + reg];
+      lastColumn[reg] = static_cast<std::uint32_t>(x + 1);  // columns rise along a row: the last store is the last
     }
+  }
+  order_.clear();
+  for (std::size_t reg = 0; reg < regs_; ++reg) {
+    const std::uint32_t n = tally_[reg] + tally_[regs_ + reg] + tally_[2 * regs_ + reg] + tally_[3 * regs_ + reg];
+    if (n == 0) continue;
+    count_[reg] = n;
+    std::size_t end = 0;
+    for (int r = 0; r < rows; ++r) {
+      std::uint32_t& last = lastColumn_[static_cast<std::size_t>(r) * regs_ + reg];
+      end = std::max<std::size_t>(end, last);
+      last = 0;
+    }
+    end_[reg] = end;
+    order_.push_back(static_cast<int>(reg));
+    for (std::size_t t = 0; t < 4; ++t) tally_[t * regs_ + reg] = 0;
   }
   std::sort(order_.begin(), order_.end(), [&](int a, int b) {
     return count_[static_cast<std::size_t>(a)] != count_[static_cast<std::size_t>(b)]
@@ -263,37 +254,31 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
   std::fill(later_.begin(), later_.end(), valid);
   runs_.clear();
   passes_.clear();
-  // Each register's pixels (column << 3 | row), by a counting sort, so
-  // that a pass touches only its own pixels and the columns its runs scan.
-  std::size_t next = 0;
+  edges_.clear();
   for (const int reg : order_) {
-    offset_[static_cast<std::size_t>(reg)] = next;
-    next += count_[static_cast<std::size_t>(reg)];
+    const std::uint8_t* own = bits_.data() + static_cast<std::size_t>(reg) * w;
+    const std::size_t end = end_[static_cast<std::size_t>(reg)];
+    std::uint8_t* const later = later_.data();
+    for (std::size_t x = 0; x < end; ++x) later[x] = static_cast<std::uint8_t>(later[x] & ~own[x]);
+    passRuns(reg, end);
   }
-  pixels_.resize(next);
-  for (int r = 0; r < rows; ++r) {
-    const PaletteIndex* row = band.data() + static_cast<std::size_t>(r) * w;
-    for (std::size_t x = 0; x < w; ++x) pixels_[offset_[row[x]]++] = static_cast<std::uint32_t>(x << 3 | unsigned(r));
-  }
-  std::size_t from = 0;
-  for (const int reg : order_) {
-    const std::size_t to = from + count_[static_cast<std::size_t>(reg)];
-    for (std::size_t i = from; i < to; ++i) {
-      const std::size_t x = pixels_[i] >> 3;
-      must_[x] = static_cast<std::uint8_t>(must_[x] | (1u << (pixels_[i] & 7)));
-    }
-    for (std::size_t i = from; i < to; ++i) {
-      const std::size_t x = pixels_[i] >> 3;
-      later_[x] = static_cast<std::uint8_t>(later_[x] & ~must_[x]);
-    }
-    passRuns(reg, end_[static_cast<std::size_t>(reg)]);
-    for (std::size_t i = from; i < to; ++i) must_[pixels_[i] >> 3] = 0;
-    from = to;
-  }
-  findOverwrites(band, rows);
-  // The band as lines for each cut; the shortest is written (the first of equals).
+  // Edges need every pass's groups, so they come after all the runs (bits_
+  // still holds each register's own bits until the band is done).
+  findGroups();
+  for (std::size_t rank = 0; rank < passes_.size(); ++rank) findOverwrites(rank, band, valid);
+  // What the runs cost, summed once for every cut's planLines.
+  runBytesBefore_.resize(runs_.size() + 1);
+  runBytesBefore_[0] = 0;
+  for (std::size_t r = 0; r < runs_.size(); ++r) runBytesBefore_[r + 1] = runBytesBefore_[r] + runBytes(runs_[r].count);
+  // The band as lines for each cut; the shortest is written (the first of
+  // equals). A cut that would drop the same blank runs as the one before it
+  // gives the same segments, so the same plan and bytes, and cannot win:
+  // it is not laid out.
   std::size_t best = SIZE_MAX;
+  std::size_t previousGap = 0;
   for (std::size_t gap : kSplitGaps) {
+    if (previousGap != 0 && !blankRunBetween(previousGap, gap)) continue;
+    previousGap = gap;
     cutPasses(gap);
     linkSegments();
     const std::size_t bytes = planLines(lastRegister_);
@@ -308,7 +293,10 @@ void SixelBandEncoder::encode(std::span<const PaletteIndex> band, int rows, std:
   if (out.size() - before != best)  // planLines' count and writePlan's bytes are two codings of one form
     throw Error(ErrorKind::Internal, "sixel band: the bytes written are not the plan's count");
   stats_.passes += order_.size();
-  for (int reg : order_) count_[static_cast<std::size_t>(reg)] = 0;
+  for (int reg : order_) {
+    count_[static_cast<std::size_t>(reg)] = 0;
+    std::fill_n(bits_.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(reg) * w), w, std::uint8_t{0});
+  }
 }
 
 }  // namespace lattice::sixel

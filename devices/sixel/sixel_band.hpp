@@ -41,6 +41,29 @@
 //  * `#Pc` is left out when it is the register already selected (the
 //    register stays selected across `$` and `-`).
 //
+// Work (the bytes above fix what is written; this is how it is found
+// cheaply; docs/sixel.md "Encoder only" has the figures):
+//  * One branch-free pass over the band fills each register's bits per
+//    column (a registers x width array, zero again after the band), its
+//    pixel count (four tallies by column) and its last column.
+//  * Which segment must precede which is found once a band, not once a cut
+//    (sixel_band_edges.cpp):
+//    a pass's runs between blank runs form a group, which lies whole in one
+//    segment in every cut (a cut drops blank runs only). For each run, the
+//    columns where it sets bits of later registers' pixels are gathered
+//    column by column into one stretch per owner, and each stretch becomes
+//    an edge from the pass's group to the owner's group covering it (the
+//    owner's own non-blank runs cover its pixels); a cut only maps groups
+//    to its segments. A run that sets every row of the band overwrites
+//    every later pixel in its columns, so its edges are read from the later
+//    registers' groups and bits instead.
+//  * A cut is made from the groups: between two groups of a pass lies one
+//    blank run, of their distance. A cut that drops the same blank runs as
+//    the one before it is not laid out (same segments, same bytes; the
+//    first of equals is kept anyway).
+//  * planLines sorts by counting, skips to the first segment at or after
+//    the line's position, and reads a segment's run bytes from prefix sums.
+//
 // Tunable: kSplitGaps. Measured on Plate 6 (512x512, 16 and 256 colours,
 // bytes): no cut 51,717 and 167,605; 8 alone 53,730 and 163,272; 8 and no
 // cut 51,717 and 162,987; 8, 32, no cut (kept) 51,705 and 162,824; 4, 8, 16,
@@ -96,11 +119,16 @@ class SixelBandEncoder {
     int reg = 0;
     std::size_t firstRun = 0, lastRun = 0;  // runs_[firstRun, lastRun)
   };
-  // Run `run` sets bits of register `owner`'s pixels in columns [start, end).
-  struct Overwrite {
-    std::size_t run = 0;
-    PaletteIndex owner = 0;
+  // A group: a pass's maximal stretch of runs with no blank run among them,
+  // columns [start, end). A cut drops blank runs only, so a group always
+  // lies whole in one segment, whatever the cut.
+  struct Group {
     std::size_t start = 0, end = 0;
+    std::size_t firstRun = 0, lastRun = 0;  // runs_[firstRun, lastRun)
+  };
+  // Group `from` sets a bit of a pixel whose register's group `to` paints.
+  struct Edge {
+    std::size_t from = 0, to = 0;
   };
   struct Segment {
     int reg = 0;
@@ -111,8 +139,16 @@ class SixelBandEncoder {
   };
   void passRuns(int reg, std::size_t end);
   void cutPasses(std::size_t gap);
-  std::size_t segmentAt(PaletteIndex reg, std::size_t x);  // the register's segment covering column x
-  void findOverwrites(std::span<const PaletteIndex> band, int rows);  // once a band, for every cut
+  void findGroups();  // groups_ of every pass, once a band
+  std::size_t groupAt(PaletteIndex reg, std::size_t x);  // the register's group covering column x
+  void addEdge(std::size_t group, PaletteIndex owner, std::size_t x);
+  // The edges of the pass of rank `rank`, for every cut: once a pass, after
+  // findGroups. `valid`: the band's rows as bits.
+  void findOverwrites(std::size_t rank, std::span<const PaletteIndex> band, std::uint8_t valid);
+  void edgesOfFullRun(std::size_t rank, std::size_t group, const SixelRun& run);
+  // Whether some pass has a blank run, not its first, of shorter <= count < longer
+  // columns: else cutting at `shorter` and at `longer` gives the same segments.
+  bool blankRunBetween(std::size_t shorter, std::size_t longer) const;
   void linkSegments();
   // Lays the segments out in lines (plan_) and returns the bytes they take,
   // `selected` being the register selected before the band.
@@ -122,25 +158,32 @@ class SixelBandEncoder {
 
   int width_;
   int lastRegister_ = -1;  // selected at the end of the previous band
+  std::size_t regs_;                  // registers the palette has
   std::vector<std::uint32_t> count_;  // pixels per register in this band
   std::vector<int> order_;            // registers present, most pixels first
-  std::vector<std::uint8_t> must_;    // this pass's bits per column
+  std::vector<std::uint8_t> bits_;    // per register, its pixels' bits per column (registers x width; zero between bands)
+  std::vector<std::uint32_t> tally_;  // 4 x registers pixel counts, by column mod 4 (zero between bands)
+  std::vector<std::uint32_t> lastColumn_;  // per row and register, one past its last pixel (zero between bands)
   std::vector<std::uint8_t> later_;   // per column, bits of pixels drawn by passes not yet done
   std::vector<SixelRun> runs_;        // every pass's runs, this band
+  std::vector<std::size_t> runBytesBefore_;  // bytes of runs_[0, r), for planLines
   std::vector<Pass> passes_;          // in order_
   std::vector<Segment> segments_;     // by pass, each pass's left to right
   std::vector<std::size_t> plan_, bestPlan_;  // segment indices and kLineBreak, in writing order
   std::vector<Segment> bestSegments_;
   std::vector<std::size_t> byStart_;  // segments_ indices, leftmost first
+  std::vector<std::size_t> startCount_;  // planLines' counting sort, per start column
   std::vector<std::vector<std::size_t>> after_;  // per segment, the segments waiting for it
-  std::vector<Overwrite> overwrites_;
-  std::vector<std::size_t> segmentOfRun_;        // per run, its segment in this cut
-  std::vector<std::size_t> stamp_;               // per segment, the last one linked to it
-  std::vector<std::size_t> regFirst_, regCount_;  // per register, its segments in segments_
-  std::vector<std::size_t> lastFound_;           // per register, the segment linkSegments found last
+  std::vector<Group> groups_;                     // by pass, each pass's left to right
+  std::vector<Edge> edges_;                       // this band's, for every cut
+  std::vector<std::size_t> groupStamp_;           // per group, the last group an edge came from
+  std::vector<std::size_t> segmentOfGroup_;       // per group, its segment in this cut
+  std::vector<std::size_t> stamp_;                // per segment, the last one linked to it
+  std::vector<std::size_t> groupFirst_, groupCount_;  // per register, its groups in groups_
+  std::vector<std::size_t> groupFound_;           // per register, the group groupAt found last
   std::vector<std::size_t> end_;                 // per register, one past its last column in this band
-  std::vector<std::size_t> offset_;              // per register, where its pixels start in pixels_
-  std::vector<std::uint32_t> pixels_;            // the band's pixels (column << 3 | row), by register
+  std::vector<std::size_t> openStart_, openEnd_;  // per register, findOverwrites' open stretch (end 0: none)
+  std::vector<PaletteIndex> open_;               // registers with an open stretch
   SixelBandStats stats_;
 };
 

@@ -1,7 +1,8 @@
 #pragma once
 // The sixel driver: an IndexedSink writing DEC sixel graphics to a ByteSink,
 // band by band as the rows arrive. It holds one six-row band (width x 6
-// bytes) and the band encoder's per-column arrays, never the frame.
+// bytes) and the band encoder's per-column arrays (one byte a column for
+// each register: at most 256 x 1000), never the frame.
 //
 // Stream: DCS [P1;P2;P3] q, raster attributes "1;1;W;H (square pixels, the
 // picture's size), one `#i;2;r;g;b` per palette entry (register i = palette

@@ -178,3 +178,42 @@ TEST_CASE("a segment never overwrites a later register's pixel after that regist
                     wide);
   }
 }
+
+TEST_CASE("flat patches and short last bands come back exactly") {
+  // A sweep: large patches make many runs that set all of a band's rows
+  // (their edges come from the later registers' groups, not pixel by
+  // pixel), and heights that are not multiples of 6 a last band of fewer
+  // rows. The case after this one is the one built to fail if such a run's
+  // edges were lost.
+  SixelProfile wide;
+  wide.registers = 256;
+  for (std::uint32_t seed = 50; seed < 62; ++seed) {
+    INFO("seed " << seed);
+    const int height = 7 + static_cast<int>(seed % 6);  // last band of 1..6 rows
+    checkReproduces(patchyNoise(180, height, 3 + static_cast<int>(seed % 3) * 6, 12 + static_cast<int>(seed % 4) * 8, seed));
+    checkReproduces(patchyNoise(140, height, 60 + static_cast<int>(seed % 3) * 60, 16, seed), wide);
+  }
+}
+
+TEST_CASE("a run over every row goes before the later register it paints under, though that one starts left of it") {
+  // Register 0 fills columns 0-19, register 1 columns 22-39 but for 28-29,
+  // register 2 columns 20-21 and 28-29. Register 1's pass is one run over
+  // every row, !18~ from column 22, painting under register 2's pixels at
+  // 28-29; register 2's one segment (its blank of 6 is never cut) starts
+  // at 20, left of it, so only the edge from that run keeps register 2 off
+  // the first line: without it the first line would be 2 bytes shorter and
+  // register 1 would overwrite columns 28-29. For a last band of fewer rows
+  // too, where every row is fewer bits.
+  for (int height : {6, 4, 10}) {
+    INFO("height " << height);
+    IndexedImage img(40, height, 3);
+    img.colormap = spreadPalette(3);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < 40; ++x)
+        img.at(x, y) = x < 20 ? 0 : x < 22 || (x >= 28 && x < 30) ? 2 : 1;
+    checkReproduces(img);
+    const std::string band = "#0!20~??#1!18~$!20?#2~~!6?~~";
+    const std::string s = text(driveFrame(img));
+    if (height == 6) CHECK(s.substr(s.size() - band.size() - 2, band.size()) == band);
+  }
+}
