@@ -43,7 +43,8 @@ name="$(basename "$scene" .toml)-$size"
 set_args=()
 for kv in "${sets[@]}"; do set_args+=(--set "$kv"); name+="-${kv//[^A-Za-z0-9]/}"; done
 start=$SECONDS
-FIRMWARE_TIMEOUT=${FIRMWARE_TIMEOUT:-7200} same=byte-identical
+export FIRMWARE_TIMEOUT=${FIRMWARE_TIMEOUT:-7200}  # exported: scripts/firmware.sh reads it
+same=byte-identical
 bash scripts/firmware.sh "$scene" --board "$board" --size "$size" --icount --ram "$ram" "${set_args[@]}" \
   --out "$out" || { status=$?; grep -q DIFFERENT "$out/$name.compare" 2>/dev/null && same=DIFFERENT || exit $status; }
 wall=$((SECONDS - start))

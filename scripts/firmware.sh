@@ -107,7 +107,7 @@ if ((status != 0)); then
   echo "firmware.sh: the firmware exited with status $status (124: QEMU timed out)" >&2
   exit 1
 fi
-"$lattice" emulate --device tek4125 "${sets[@]}" "$out/$name.tek" -o "$out/$name.png"
+"$lattice" emulate "$out/$name.tek" --device tek4125 "${sets[@]}" -o "$out/$name.png"
 echo "firmware.sh: $out/$name.tek ($(stat -c %s "$out/$name.tek") bytes), $out/$name.png"
 # The host's stream with the same flags: the firmware's must be the same bytes.
 w=${size%x*} h=${size#*x}
