@@ -90,7 +90,7 @@ class LeafDesc {
 // A build that renders only in fixed point (the firmware defines
 // LATTICE_FIXED_POINT_ONLY) instantiates buildAs for Fixed32 alone: the float
 // and double leaves, CSG nodes and BVHs it would never call are then not
-// linked (docs/firmware.md, "Flash"); asking for them throws.
+// linked (docs/firmware.md, "Memory: before and after"); asking throws.
 [[noreturn]] void throwArithmeticLeftOut(std::string_view arithmetic);
 
 template <typename Derived>
