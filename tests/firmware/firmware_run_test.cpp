@@ -1,7 +1,9 @@
 // The firmware end to end (docs/firmware.md): two example scenes, one with a
 // lattice, baked, built for the Cortex-M3 and run under QEMU's mps2-an385
 // by scripts/firmware.sh, and the lattice one again on the STM32F405 of
-// QEMU's netduinoplus2 (its USART1, the part's 128 KiB). Asserted: the firmware exits 0; its UART stream is
+// QEMU's netduinoplus2 (its USART1, the part's 128 KiB), beside Plate 6
+// (1000 lattice instances baked as constant data, the 4125 driver streaming
+// with --set strategy=runs). Asserted: the firmware exits 0; its UART stream is
 // byte for byte what the host writes with `lattice render --arith fixed
 // --device tek4125` at the same size with the same (small) histogram; the
 // report's RAM high-water mark is within the board's budget (256 KiB, or
