@@ -100,6 +100,11 @@ void runScene(const std::string& scene, const std::string& board = "mps2-an385",
   REQUIRE(std::regex_search(report, m, std::regex(R"(RAM peak (\d+) B of (\d+))")));
   CHECK(std::stoull(m[2]) == budget);
   CHECK(std::stoull(m[1]) <= budget);
+  // What the set-up leaves on the heap: with a scatter baked as constant data
+  // it is a few NodeDescs and primitives, not one object per instance.
+  std::smatch setUp;
+  REQUIRE(std::regex_search(report, setUp, std::regex(R"(the scene set up holds (\d+) B of heap)")));
+  CHECK(std::stoull(setUp[1]) <= 16384);
 
   if (!golden) return;
   // The picture the stream draws, cut out of the screen, is the golden.
