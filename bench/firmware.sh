@@ -2,7 +2,11 @@
 # Plate 6 (scenes/fuzzy-sphere-1000.toml, 1000 lattice hairs) at 512x512 on
 # an emulated board (docs/firmware.md, "Benchmark"), beside the thesis's
 # 12.1 hours on a Sun 3/60.
-#   bench/firmware.sh [--board NAME] [--ram budget|board] [--size WxH] [--scene FILE]
+#   bench/firmware.sh [--board NAME] [--ram budget|board] [--size WxH] [--scene FILE] [--set key=value ...]
+# --set: a Tek 4125 profile setting, given to the bake and to the host's
+# render alike; on netduinoplus2 the default is strategy=runs, the strategy
+# that streams rows with no frame (a 512x512 frame is 256 KiB, twice the
+# part's RAM; docs/firmware.md, "The driver without a frame").
 # --board: mps2-an385 (default; projected at 72 MHz, an STM32F103-class M3;
 # linked with --ram board unless told) or netduinoplus2 (the STM32F405,
 # projected at its 168 MHz; linked with the part's 128 KiB and 1 MiB, so a
@@ -26,19 +30,22 @@
 set -euo pipefail
 source "$(dirname "$0")/lib.sh"
 cd "$root"
-size=512x512 scene=scenes/fuzzy-sphere-1000.toml board=mps2-an385 ram=""
-bench_parse --board=board --ram=ram --size=size --scene=scene -- "$@"
+size=512x512 scene=scenes/fuzzy-sphere-1000.toml board=mps2-an385 ram="" sets=()
+bench_parse --board=board --ram=ram --size=size --scene=scene --set+=sets -- "$@"
 cpi=${FIRMWARE_CPI:-1.5}
 case $board in
   mps2-an385) mhz=72 budget=262144 ram=${ram:-board} ;;
-  netduinoplus2) mhz=168 budget=131072 ram=${ram:-budget} ;;
+  netduinoplus2) mhz=168 budget=131072 ram=${ram:-budget}; ((${#sets[@]})) || sets=(strategy=runs) ;;
   *) echo "bench/firmware.sh: --board is mps2-an385 or netduinoplus2" >&2; exit 2 ;;
 esac
 out=out/bench-firmware/$board
 name="$(basename "$scene" .toml)-$size"
+set_args=()
+for kv in "${sets[@]}"; do set_args+=(--set "$kv"); name+="-${kv//[^A-Za-z0-9]/}"; done
 start=$SECONDS
-FIRMWARE_TIMEOUT=${FIRMWARE_TIMEOUT:-7200} same=byte-identical
-bash scripts/firmware.sh "$scene" --board "$board" --size "$size" --icount --ram "$ram" \
+export FIRMWARE_TIMEOUT=${FIRMWARE_TIMEOUT:-7200}  # exported: scripts/firmware.sh reads it
+same=byte-identical
+bash scripts/firmware.sh "$scene" --board "$board" --size "$size" --icount --ram "$ram" "${set_args[@]}" \
   --out "$out" || { status=$?; grep -q DIFFERENT "$out/$name.compare" 2>/dev/null && same=DIFFERENT || exit $status; }
 wall=$((SECONDS - start))
 report="$out/$name.report"

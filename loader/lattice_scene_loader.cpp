@@ -13,6 +13,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "lht/leaf/baked_lattice.hpp"
+#include "lht/leaf/baked_lattice_union.hpp"
 #include "loader/canonical_toml.hpp"
 #include "lht/leaf/lattice_leaf.hpp"
 #include "lht/raster/lattice_object.hpp"
@@ -61,6 +62,13 @@ class LatticeLeafDesc final : public LeafTemplate<LatticeLeafDesc> {
   std::string bake(SceneBaker& baker) const override {
     return bakeLatticeLeaf(baker, *tables_->table(definition_), definition_->shadows, definition_->name,
                            definition_->objectBounds());
+  }
+  // A scatter's instances as constant data (lht/leaf/baked_lattice_union.hpp),
+  // when they are looked up the thesis's way (the firmware's).
+  std::string bakeUnion(SceneBaker& baker, const NodeDesc& unionNode, const Mat4d& parentToWorld,
+                        MaterialId inherited) const override {
+    if (definition_->lookupUnder(tables_->settings()) != LatticeLookup::Thesis) return {};
+    return bakeLatticeUnion(baker, definition_->name, unionNode, parentToWorld, inherited);
   }
 
   LeafShape shape() const override {

@@ -10,6 +10,7 @@
 #include "quantize/median_cut.hpp"
 #include "quantize/row_mapper.hpp"
 #include "foundation/error.hpp"
+#include "foundation/palette_counts.hpp"
 #include "foundation/progress.hpp"
 
 namespace lattice::quantize {
@@ -86,6 +87,19 @@ PipelineReport runPipeline(RowSource18& source, IndexedSink& sink, const Pipelin
   info.height = height;
   info.palette = medianCut(histogram, colorBudget(sink, options), options.quantize);
   report.paletteSize = info.palette.size();
+  // Every pixel of the mapping pass is one the histogram counted (the same
+  // rows, no sampling) and goes to the entry its colour maps to (no
+  // dithering), so the histogram's counts give each entry's share exactly -
+  // unless a 32-bit count could have saturated.
+  const bool countsExact = options.mode != PipelineMode::Sample && options.quantize.dither == Dither::None &&
+                           static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) < UINT32_MAX;
+  auto* countsSink = dynamic_cast<PaletteCountsSink*>(&sink);
+  std::vector<std::uint64_t> counts;
+  if (countsExact && countsSink && countsSink->wantsPaletteCounts()) {
+    InverseColorMap nearest = InverseColorMap::uncached(info.palette);
+    counts.assign(info.palette.size(), 0);
+    histogram.forEach([&](Color18 c, std::uint32_t n) { counts[nearest.nearest(c)] += n; });
+  }
 
   InverseColorMap map = options.quantize.histogram == HistogramForm::Full
                             ? InverseColorMap(info.palette, histogram.releaseStorage())
@@ -94,6 +108,7 @@ PipelineReport runPipeline(RowSource18& source, IndexedSink& sink, const Pipelin
   RowMapper mapper(map, width, options.quantize.dither);
   std::vector<PaletteIndex> indices(w);
 
+  if (!counts.empty()) countsSink->paletteCounts(counts);
   sink.begin(info);
   Progress progress("quantize", static_cast<std::uint64_t>(height), "rows");
   if (!options.progress) progress.setEnabled(false);

@@ -11,6 +11,10 @@ BandCache::BandCache(int width, int height, int threads, ShadeRow shadeRow)
 BandCache::~BandCache() = default;
 
 int BandCache::bandRowsAt(int y0) const {
+  // One thread gains nothing from a band (no row is rendered ahead while the
+  // consumer reads), so it keeps one row: 2 KiB at 512 wide instead of 16,
+  // what the firmware's 128 KiB notices (docs/firmware.md).
+  if (threads_ <= 1) return std::min(height_ - y0, 1);
   return std::min(height_ - y0, std::max(1, threads_ * kBandRowsPerThread));
 }
 

@@ -78,8 +78,12 @@ if ! cmake --build "$build" --target "firmware-$name" -j "$(nproc)" >"$build/$na
   if grep -qE "will not fit|overflowed|exceeded" "$build/$name.log" && [[ -f $build/firmware-$name.map ]]; then
     # What does not fit: the largest input sections of the failed link.
     echo "firmware.sh: the image does not fit $board; its largest input sections:" >&2
-    awk 'NF >= 3 && $1 ~ /^\./ && $2 ~ /^0x/ && $3 ~ /^0x/ {print strtonum($3), $1, $4}
-         NF == 3 && $1 ~ /^0x/ && $2 ~ /^0x/ && prev ~ /^ \./ {split(prev, p, " "); print strtonum($2), p[1], $3}
+    # hex() instead of gawk's strtonum: Debian's default awk is mawk.
+    awk 'function hex(s,   n, i, c) { n = 0; s = tolower(substr(s, 3))
+           for (i = 1; i <= length(s); i++) { c = index("0123456789abcdef", substr(s, i, 1)); n = n * 16 + c - 1 }
+           return n }
+         NF >= 3 && $1 ~ /^\./ && $2 ~ /^0x/ && $3 ~ /^0x/ {print hex($3), $1, $4}
+         NF == 3 && $1 ~ /^0x/ && $2 ~ /^0x/ && prev ~ /^ \./ {split(prev, p, " "); print hex($2), p[1], $3}
          {prev = $0}' "$build/firmware-$name.map" | sort -rn | head -12 >&2
   fi
   exit 1
@@ -103,7 +107,7 @@ if ((status != 0)); then
   echo "firmware.sh: the firmware exited with status $status (124: QEMU timed out)" >&2
   exit 1
 fi
-"$lattice" emulate --device tek4125 "${sets[@]}" "$out/$name.tek" -o "$out/$name.png"
+"$lattice" emulate "$out/$name.tek" --device tek4125 "${sets[@]}" -o "$out/$name.png"
 echo "firmware.sh: $out/$name.tek ($(stat -c %s "$out/$name.tek") bytes), $out/$name.png"
 # The host's stream with the same flags: the firmware's must be the same bytes.
 w=${size%x*} h=${size#*x}

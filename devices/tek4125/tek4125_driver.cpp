@@ -35,6 +35,34 @@ Tek4125Driver::Tek4125Driver(ByteSink& sink, const Tek4125Profile& profile, Tek4
   profile_.validate();
 }
 
+// The stream being written: header sent, rows planned as they arrive. The
+// writer keeps a reference to the form set, so both live here together.
+struct Tek4125Driver::Stream {
+  Stream(const Tek4125Forms& f, ByteSink& sink, const Tek4125RowLayout& l, const Tek4125DriverOptions& o)
+      : forms(f), layout(l), options(o), out(forms, sink), planner(out, layout, options),
+        row(static_cast<std::size_t>(layout.width)) {}
+  Tek4125Forms forms;
+  Tek4125RowLayout layout;
+  Tek4125DriverOptions options;
+  Tek4125Writer out;
+  Tek4125RowPlanner planner;
+  std::vector<int> row;  // one image row of device indices
+  Tek4125StreamStats stats;
+};
+
+Tek4125Driver::~Tek4125Driver() = default;
+
+bool Tek4125Driver::streams() const {
+  // "shortest" encodes the picture once per candidate and progressive draws
+  // it coarse to fine: both need the whole frame. Every other strategy writes
+  // rows in order once the background is known, so no frame is kept.
+  return !options_.shortest && !profile_.progressive;
+}
+
+bool Tek4125Driver::wantsPaletteCounts() const { return streams() && options_.skipBackground; }
+
+void Tek4125Driver::paletteCounts(std::span<const std::uint64_t> counts) { counts_.assign(counts.begin(), counts.end()); }
+
 void Tek4125Driver::begin(const FrameInfo& frame) {
   if (frame.width < 1 || frame.height < 1 || frame.width > profile_.width || frame.height > profile_.height)
     throw Error(ErrorKind::Usage,
@@ -48,10 +76,20 @@ void Tek4125Driver::begin(const FrameInfo& frame) {
                             "reserved); quantize to at most {} colours or change planes=/reserved=",
                             frame.palette.size(), maxColors(), profile_.planes, profile_.reserved, maxColors()));
   frame_ = frame;
-  pixels_.assign(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0);
   nextRow_ = 0;
   stats_ = {};
   begun_ = true;
+  stream_.reset();
+  pixels_.clear();
+  // Counts for another palette (a caller that skipped paletteCounts for
+  // this picture) are not used: the frame is kept instead.
+  const bool countsKnown = counts_.size() == frame.palette.size();
+  if (streams() && (!options_.skipBackground || countsKnown)) {
+    const int background = options_.skipBackground ? mostFrequent(counts_) : -1;
+    stream_ = openStream(options_, sink_, background);
+  } else {
+    pixels_.assign(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height), 0);
+  }
 }
 
 void Tek4125Driver::row(int y, std::span<const PaletteIndex> indices) {
@@ -64,18 +102,26 @@ void Tek4125Driver::row(int y, std::span<const PaletteIndex> indices) {
       throw Error(ErrorKind::Internal,
                   fmt::format("tek4125: row {} pixel {} has index {} beyond the {}-entry palette", y, x,
                               indices[x], frame_.palette.size()));
-  std::copy(indices.begin(), indices.end(),
-            pixels_.begin() + static_cast<long>(y) * static_cast<long>(frame_.width));
+  if (stream_)
+    streamRow(*stream_, y, indices);
+  else
+    std::copy(indices.begin(), indices.end(),
+              pixels_.begin() + static_cast<long>(y) * static_cast<long>(frame_.width));
   ++nextRow_;
+}
+
+int Tek4125Driver::mostFrequent(std::span<const std::uint64_t> counts) {
+  return static_cast<int>(std::max_element(counts.begin(), counts.end()) - counts.begin());
 }
 
 int Tek4125Driver::mostFrequentIndex() const {
   std::vector<std::uint64_t> count(frame_.palette.size(), 0);
   for (PaletteIndex p : pixels_) ++count[p];
-  return static_cast<int>(std::max_element(count.begin(), count.end()) - count.begin());
+  return mostFrequent(count);
 }
 
-void Tek4125Driver::encode(const Tek4125DriverOptions& options, ByteSink& sink, Tek4125StreamStats& stats) const {
+std::unique_ptr<Tek4125Driver::Stream> Tek4125Driver::openStream(const Tek4125DriverOptions& options, ByteSink& sink,
+                                                                 int backgroundIndex) const {
   Tek4125Forms forms = profile_.formSet();
   forms.shortHighXy = forms.fullXy && profile_.xyShort;  // the short forms of compact already go further
   const int reserved = profile_.reserved;
@@ -93,7 +139,7 @@ void Tek4125Driver::encode(const Tek4125DriverOptions& options, ByteSink& sink, 
   layout.bits = profile_.pixelBitsFor(paletteSize);
   layout.raster = layout.bits == 4 || !forms.rasterOnlyAtFourBits;
   layout.runLength = forms.runLength && (options.runLength || !layout.raster);
-  layout.background = options.skipBackground ? mostFrequentIndex() + reserved : -1;
+  layout.background = options.skipBackground ? backgroundIndex + reserved : -1;
   if (forms.screenViewport) {
     layout.viewportX = 0;
     layout.viewportY = 0;
@@ -103,7 +149,8 @@ void Tek4125Driver::encode(const Tek4125DriverOptions& options, ByteSink& sink, 
   }
   const int right = place.left + width - 1, top = place.bottom + height - 1;
 
-  Tek4125Writer out(forms, sink);
+  auto stream = std::make_unique<Stream>(forms, sink, layout, options);
+  Tek4125Writer& out = stream->out;
   out.bytes({tek4125::kEsc, '%', '!', '0'});  // enter Tek mode
   out.command("LV");                      // dialog area invisible, so text cannot cover the picture
   out.integer(0);
@@ -150,46 +197,61 @@ void Tek4125Driver::encode(const Tek4125DriverOptions& options, ByteSink& sink, 
     out.xy(place.left, place.bottom);
     out.xy(right, top);
   }
-  stats = {};
   // The picture's background: one RR unless the clear already painted it.
   if (layout.background >= 0 && (forms.explicitBackground || layout.background != 0)) {
     out.command("RR");
     out.xy(place.left, place.bottom);
     out.xy(right, top);
     out.integer(layout.background);
-    ++stats.rectangleFills;
+    ++stream->stats.rectangleFills;
   }
+  return stream;
+}
 
-  Tek4125RowPlanner planner(out, layout, options);
-  if (!profile_.progressive) {
-    std::vector<int> row(static_cast<std::size_t>(width));
-    for (int y = 0; y < height; ++y) {
-      for (int x = 0; x < width; ++x)
-        row[static_cast<std::size_t>(x)] = pixels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                                                   static_cast<std::size_t>(x)] +
-                                           reserved;
-      planner.row(y, row);
-    }
-  }
-  planner.finish();
-  const Tek4125RowStats r =
-      profile_.progressive ? drawProgressive(out, layout, options, pixels_, frame_.palette, reserved) : planner.stats();
+void Tek4125Driver::streamRow(Stream& stream, int y, std::span<const PaletteIndex> indices) const {
+  for (std::size_t x = 0; x < indices.size(); ++x) stream.row[x] = indices[x] + profile_.reserved;
+  stream.planner.row(y, stream.row);
+}
+
+void Tek4125Driver::closeStream(Stream& stream, Tek4125StreamStats& stats) const {
+  stream.planner.finish();
+  const Tek4125RowStats r = profile_.progressive ? drawProgressive(stream.out, stream.layout, stream.options, pixels_,
+                                                                   frame_.palette, profile_.reserved)
+                                                 : stream.planner.stats();
+  stats = stream.stats;
   stats.rasterWrites = r.rasterWrites;
   stats.runLengthWrites = r.runLengthWrites;
   stats.rectangleFills += r.rectangleFills;
   stats.skippedPixels = r.skippedPixels;
-  stats.rasterBits = layout.bits;
-  stats.candidate = describeOptions(Tek4125DriverOptions{options.skipBackground, options.rectangles,
-                                                         options.mergeRows, layout.runLength, false});
-  out.finish();
-  stats.bytes = out.size();
+  stats.rasterBits = stream.layout.bits;
+  stats.candidate = describeOptions(Tek4125DriverOptions{stream.options.skipBackground, stream.options.rectangles,
+                                                         stream.options.mergeRows, stream.layout.runLength, false});
+  stream.out.finish();
+  stats.bytes = stream.out.size();
   stats.seconds = transmitSeconds(stats.bytes, profile_.line());
+}
+
+void Tek4125Driver::encode(const Tek4125DriverOptions& options, ByteSink& sink, Tek4125StreamStats& stats) const {
+  const std::unique_ptr<Stream> stream = openStream(options, sink, options.skipBackground ? mostFrequentIndex() : -1);
+  if (!profile_.progressive) {
+    const auto width = static_cast<std::size_t>(frame_.width);
+    for (int y = 0; y < frame_.height; ++y)
+      streamRow(*stream, y, std::span<const PaletteIndex>(pixels_).subspan(static_cast<std::size_t>(y) * width, width));
+  }
+  closeStream(*stream, stats);
 }
 
 void Tek4125Driver::end() {
   if (!begun_ || nextRow_ != frame_.height)
     throw Error(ErrorKind::Internal, fmt::format("tek4125: end() after {} of {} rows", nextRow_, frame_.height));
   begun_ = false;
+  counts_.clear();
+  if (stream_) {
+    closeStream(*stream_, stats_);
+    stream_.reset();
+    sink_.flush();
+    return;
+  }
   std::vector<Tek4125DriverOptions> candidates{options_};
   if (options_.shortest) {
     // The row planner is optimal per row for estimated costs; these variants

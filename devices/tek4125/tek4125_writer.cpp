@@ -35,19 +35,26 @@ void Tek4125Writer::xy(int x, int y) {
 
 void Tek4125Writer::spill() {
   if (out_.empty()) return;
-  const tek4125::Bytes* ready = &out_;
+  const std::span<const std::uint8_t> all(out_);
   if (forms_.escapeDel && dels_ > 0) {
     // Command names are capitals and raster characters stay below 0x60, so
-    // every DEL here is inside an integer or a coordinate.
-    escaped_.clear();
-    for (std::uint8_t c : out_) {
-      if (c == kDel) escaped_.insert(escaped_.end(), {tek4125::kEsc, '?'});
-      else escaped_.push_back(c);
+    // every DEL here is inside an integer or a coordinate. The pieces
+    // between DELs go to the sink as they are, each DEL as ESC ?: no second
+    // buffer.
+    static constexpr std::uint8_t kEscapedDel[] = {tek4125::kEsc, '?'};
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      if (all[i] != kDel) continue;
+      if (i > start) sink_.write(all.subspan(start, i - start));
+      sink_.write(std::span<const std::uint8_t>(kEscapedDel));
+      start = i + 1;
     }
-    ready = &escaped_;
+    if (start < all.size()) sink_.write(all.subspan(start));
+    spilled_ += all.size() + dels_;
+  } else {
+    sink_.write(all);
+    spilled_ += all.size();
   }
-  sink_.write(std::span<const std::uint8_t>(*ready));
-  spilled_ += ready->size();
   out_.clear();
   dels_ = 0;
 }

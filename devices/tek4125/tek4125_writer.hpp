@@ -19,11 +19,21 @@
 
 namespace lattice::tek4125 {
 
+// LATTICE_TEK4125_SPILL_BYTES: what a build with little RAM holds instead
+// (the firmware's 1 KiB, docs/firmware.md); the bytes sent are the same, in
+// more pieces.
+#ifndef LATTICE_TEK4125_SPILL_BYTES
+#define LATTICE_TEK4125_SPILL_BYTES (16 * 1024)
+#endif
+
 class Tek4125Writer {
  public:
-  static constexpr std::size_t kSpillBytes = 16 * 1024;
+  static constexpr std::size_t kSpillBytes = LATTICE_TEK4125_SPILL_BYTES;
 
-  Tek4125Writer(const Tek4125Forms& forms, ByteSink& sink) : forms_(forms), sink_(sink) {}
+  // The buffer is reserved once: no doubling leaves twice kSpillBytes held.
+  Tek4125Writer(const Tek4125Forms& forms, ByteSink& sink) : forms_(forms), sink_(sink) {
+    out_.reserve(kSpillBytes + kLongestPiece);
+  }
 
   void command(std::string_view name) {
     tek4125::appendCommand(out_, name);
@@ -60,6 +70,8 @@ class Tek4125Writer {
   }
   void spill();
   void countDels(std::size_t from);
+  // More than one call adds between spills (a command name, an integer, an xy).
+  static constexpr std::size_t kLongestPiece = 64;
 
   const Tek4125Forms& forms_;
   ByteSink& sink_;
@@ -67,7 +79,6 @@ class Tek4125Writer {
   bool pixelCommand_ = false;          // the command being written is RR or RH
   bool lastXyInPixelCommand_ = false;  // the last xy sent belonged to one
   tek4125::Bytes out_;      // not yet handed on, DELs not yet escaped
-  tek4125::Bytes escaped_;  // spill()'s scratch, kept for its capacity
   std::size_t dels_ = 0;    // DELs in out_: the bytes escaping will add, so size() is exact
   std::uint64_t spilled_ = 0;
 };

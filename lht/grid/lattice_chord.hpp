@@ -32,6 +32,11 @@ template <typename T>
 class LatticeAffine {
  public:
   explicit LatticeAffine(const Mat4<T>& m) : x_(m[0]), y_(m[1]), z_(m[2]), w_(m[3]) {}
+  // From the columns column(0..3) gave (a baked scene's constant data).
+  constexpr LatticeAffine(const Vec3<T>& x, const Vec3<T>& y, const Vec3<T>& z, const Vec3<T>& w)
+      : x_(x), y_(y), z_(z), w_(w) {}
+  // Columns 0..2 (the linear part) and 3 (the translation).
+  const Vec3<T>& column(int i) const { return i == 0 ? x_ : i == 1 ? y_ : i == 2 ? z_ : w_; }
 
   Ray<T> apply(const Ray<T>& ray) const {
     const Vec3<T>& o = ray.origin;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "foundation/error.hpp"
+#include "lht/leaf/baked_lattice_union.hpp"
 #include "lht/leaf/lattice_leaf.hpp"
 #include "render/scene/scene_baker.hpp"
 
@@ -25,6 +26,10 @@ class BakedLatticeLeafDesc final : public LeafTemplate<BakedLatticeLeafDesc> {
   std::string describe() const override { return fmt::format("baked lattice '{}'", name_); }
   std::string bake(SceneBaker& baker) const override {
     return bakeLatticeLeaf(baker, *table_, shadows_, name_, bounds_);
+  }
+  std::string bakeUnion(SceneBaker& baker, const NodeDesc& unionNode, const Mat4d& parentToWorld,
+                        MaterialId inherited) const override {
+    return bakeLatticeUnion(baker, name_, unionNode, parentToWorld, inherited);
   }
 
  private:
@@ -55,13 +60,20 @@ std::shared_ptr<const LhtFile> makeBakedLhtFile(std::uint32_t version, const Lat
 
 std::string bakeLatticeLeaf(SceneBaker& baker, const LhtFile& lht, bool castsShadows, const std::string& name,
                             const Bounds<double>& objectBounds) {
+  const std::string file = bakedTableExpression(baker, lht, name);
+  return fmt::format("lattice::lht::makeBakedLatticeLeafDesc({}, {}, \"{}\", lattice::Bounds<double>{{{}, {}}})",
+                     file, castsShadows ? "true" : "false", name, baker.vec3(objectBounds.lo),
+                     baker.vec3(objectBounds.hi));
+}
+
+std::string bakedTableExpression(SceneBaker& baker, const LhtFile& lht, const std::string& name) {
   baker.include("lht/leaf/baked_lattice.hpp");
   if (lht.form() != LhtForm::Hashed)
     throw Error(ErrorKind::Usage, fmt::format("lattice '{}': only the hashed table form can be baked for the firmware "
                                               "(docs/firmware.md); bake without a compressed or on-demand form",
                                               name));
   // One table in flash for every instance of the lattice.
-  const std::string file = baker.shared(&lht, [&] {
+  return baker.shared(&lht, [&] {
     const LatticeBox& box = lht.box;
     const LatticeHashTable& table = lht.hashed();
     const std::string slots = baker.flashBytes(table.slotView(), fmt::format("lattice '{}' table slots", name));
@@ -72,9 +84,6 @@ std::string bakeLatticeLeaf(SceneBaker& baker, const LhtFile& lht, bool castsSha
         baker.number(box.oversample()), baker.vec3(box.origin()), lht.objectHash, lht.pairs, lht.hits,
         static_cast<int>(table.precision()), slots, table.capacity(), table.entryCount());
   });
-  return fmt::format("lattice::lht::makeBakedLatticeLeafDesc({}, {}, \"{}\", lattice::Bounds<double>{{{}, {}}})",
-                     file, castsShadows ? "true" : "false", name, baker.vec3(objectBounds.lo),
-                     baker.vec3(objectBounds.hi));
 }
 
 }  // namespace lattice::lht

@@ -25,4 +25,9 @@ std::shared_ptr<const LhtFile> makeBakedLhtFile(std::uint32_t version, const Lat
 std::string bakeLatticeLeaf(SceneBaker& baker, const LhtFile& table, bool castsShadows, const std::string& name,
                             const Bounds<double>& objectBounds);
 
+// The expression of the shared std::shared_ptr<const LhtFile> of `table` in
+// a baked scene (written once however many leaves use it); throws
+// lattice::Error(Usage) for a form other than hashed.
+std::string bakedTableExpression(SceneBaker& baker, const LhtFile& table, const std::string& name);
+
 }  // namespace lattice::lht

@@ -28,6 +28,9 @@ class EntryReader {
   // latticeToWorld (the generic arithmetics always can).
   EntryReader(const LhtLookup& table, const Mat4d& latticeToWorld)
       : table_(table), normalToWorld_(glm::transpose(Mat3<double>(glm::inverse(latticeToWorld)))) {}
+  // With the map normalMap() of a reader built as above (a baked placement).
+  EntryReader(const LhtLookup& table, const Mat3<T>& normalMap) : table_(table), normalToWorld_(normalMap) {}
+  const Mat3<T>& normalMap() const { return normalToWorld_; }
 
   // The entry of (from, to), or null.
   const std::uint8_t* find(const LatticePoint& from, const LatticePoint& to) const { return table_.payload(from, to); }

@@ -51,6 +51,11 @@ class EntryReader<Fixed32> {
     directionToWorld_ = Mat3<Fixed32>(normalToWorld * std::ldexp(1.0, -extraBits));
   }
 
+  // With the map normalMap() of a reader built as above (a baked placement).
+  EntryReader(const LhtLookup& table, const Mat3<Fixed32>& normalMap)
+      : table_(table), precision_(table.precision()), directionToWorld_(normalMap) {}
+  const Mat3<Fixed32>& normalMap() const { return directionToWorld_; }
+
   const std::uint8_t* find(const LatticePoint& from, const LatticePoint& to) const { return table_.payload(from, to); }
   Fixed32 s(const std::uint8_t* entry) const {
     const EntryFraction f = decodePayloadFraction(entry, precision_);

@@ -4,7 +4,12 @@
 // normal scene). Built top-down with the surface area heuristic over binned
 // centroids [MacDonald & Booth 1990]; children with infinite boxes are kept
 // out of it by the caller (their box would cover every node).
+//
+// A tree may also be a view of nodes and items built elsewhere (a baked
+// scene's constant arrays in flash, docs/firmware.md): Bvh::view, traversed
+// by the same code, so a view answers as the tree it was built from.
 #include <cstdint>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -48,9 +53,19 @@ class Bvh {
   // boxes[n] is the box of item n; every box must be finite and non-empty.
   explicit Bvh(const std::vector<Bounds<T>>& boxes);
 
-  bool empty() const { return nodes_.empty(); }
-  const std::vector<Node>& nodes() const { return nodes_; }
-  const std::vector<std::uint32_t>& items() const { return items_; }
+  // A tree over nodes and items that outlive it (constant data): what
+  // nodes() and items() of a built tree held.
+  static Bvh view(std::span<const Node> nodes, std::span<const std::uint32_t> items, int depth) {
+    Bvh b;
+    b.viewNodes_ = nodes;
+    b.viewItems_ = items;
+    b.depth_ = depth;
+    return b;
+  }
+
+  bool empty() const { return nodeSpan().empty(); }
+  std::span<const Node> nodes() const { return nodeSpan(); }
+  std::span<const std::uint32_t> items() const { return itemSpan(); }
   int depth() const { return depth_; }
 
   // Calls visit(item) for every item whose box the segment (tmin, tmax)
@@ -58,20 +73,22 @@ class Bvh {
   // Returns whether it stopped.
   template <typename Visit>
   bool visitAll(const Ray<T>& ray, T tmin, T tmax, Visit&& visit) const {
-    if (nodes_.empty()) return false;
+    const std::span<const Node> nodes = nodeSpan();
+    const std::span<const std::uint32_t> items = itemSpan();
+    if (nodes.empty()) return false;
     const SlabTest<T> slab(ray);
     std::uint32_t stack[kMaxDepth];
     int top = 0;
     stack[top++] = 0;
     while (top > 0) {
-      const Node& node = nodes_[stack[--top]];
+      const Node& node = nodes[stack[--top]];
       T t0;
       if (!slab.clip(node.box, tmin, tmax, t0)) continue;
       if (node.count > 0) {
         for (std::uint32_t n = 0; n < node.count; ++n)
-          if (visit(items_[node.first + n])) return true;
+          if (visit(items[node.first + n])) return true;
       } else {
-        std::uint32_t self = static_cast<std::uint32_t>(&node - nodes_.data());
+        std::uint32_t self = static_cast<std::uint32_t>(&node - nodes.data());
         stack[top++] = node.first;
         stack[top++] = self + 1;
       }
@@ -84,7 +101,9 @@ class Bvh {
   // beyond limit are skipped.
   template <typename Visit>
   void visitFrontToBack(const Ray<T>& ray, T tmin, T& limit, Visit&& visit) const {
-    if (nodes_.empty()) return;
+    const std::span<const Node> nodes = nodeSpan();
+    const std::span<const std::uint32_t> items = itemSpan();
+    if (nodes.empty()) return;
     struct Entry {
       std::uint32_t node;
       T t;
@@ -93,20 +112,20 @@ class Bvh {
     Entry stack[kMaxDepth];
     int top = 0;
     T t0;
-    if (!slab.clip(nodes_[0].box, tmin, limit, t0)) return;
+    if (!slab.clip(nodes[0].box, tmin, limit, t0)) return;
     stack[top++] = {0, t0};
     while (top > 0) {
       Entry e = stack[--top];
       if (e.t >= limit) continue;  // starts beyond the nearest hit found since it was pushed
-      const Node& node = nodes_[e.node];
+      const Node& node = nodes[e.node];
       if (node.count > 0) {
-        for (std::uint32_t n = 0; n < node.count; ++n) visit(items_[node.first + n], limit);
+        for (std::uint32_t n = 0; n < node.count; ++n) visit(items[node.first + n], limit);
         continue;
       }
       std::uint32_t left = e.node + 1, right = node.first;
       T l0 = T(0), r0 = T(0);
-      bool hitL = slab.clip(nodes_[left].box, tmin, limit, l0);
-      bool hitR = slab.clip(nodes_[right].box, tmin, limit, r0);
+      bool hitL = slab.clip(nodes[left].box, tmin, limit, l0);
+      bool hitR = slab.clip(nodes[right].box, tmin, limit, r0);
       if (hitL && hitR) {
         // Push the farther one first so the nearer one is popped next.
         if (l0 <= r0) {
@@ -132,8 +151,16 @@ class Bvh {
   std::uint32_t build(std::vector<Bounds<T>>& centroids, const std::vector<Bounds<T>>& boxes, std::uint32_t begin,
                       std::uint32_t end, int depth);
 
+  // A built tree's own arrays, or the view's (never both).
+  std::span<const Node> nodeSpan() const { return viewNodes_.empty() ? std::span<const Node>(nodes_) : viewNodes_; }
+  std::span<const std::uint32_t> itemSpan() const {
+    return viewNodes_.empty() ? std::span<const std::uint32_t>(items_) : viewItems_;
+  }
+
   std::vector<Node> nodes_;
   std::vector<std::uint32_t> items_;
+  std::span<const Node> viewNodes_;
+  std::span<const std::uint32_t> viewItems_;
   int depth_ = 0;
 };
 

@@ -20,7 +20,7 @@ template <typename T>
 WideBvh<T>::WideBvh(const std::vector<Bounds<T>>& boxes) {
   if (boxes.empty()) return;
   const Bvh<T> binary(boxes);
-  items_ = binary.items();
+  items_.assign(binary.items().begin(), binary.items().end());
   binaryDepth_ = binary.depth();
   nodes_.reserve(binary.nodes().size() / 2 + 1);
   collapse(binary, 0, 1);

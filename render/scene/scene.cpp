@@ -14,6 +14,14 @@ std::string LeafDesc::bake(SceneBaker&) const {
                                             "a baked scene can hold)", describe()));
 }
 
+void throwArithmeticLeftOut(std::string_view arithmetic) {
+  throw Error(ErrorKind::Usage, fmt::format("this build renders in fixed point only, not in {} (it is built with "
+                                            "LATTICE_FIXED_POINT_ONLY, as the firmware is): use --arith fixed",
+                                            arithmetic));
+}
+
+std::string LeafDesc::bakeUnion(SceneBaker&, const NodeDesc&, const Mat4d&, MaterialId) const { return {}; }
+
 NodeDesc NodeDesc::makeLeaf(LeafDescPtr leafDesc, std::string where) {
   NodeDesc n;
   n.kind = Kind::Leaf;

@@ -64,6 +64,13 @@ class LeafDesc {
   // scene (render/scene/scene_baker.hpp, docs/firmware.md). The default refuses
   // with lattice::Error(Usage) naming the leaf.
   virtual std::string bake(SceneBaker& baker) const;
+  // A C++ expression of type LeafDescPtr standing for the whole of
+  // `unionNode`, a union every child of which is a leaf of this very
+  // description (a scatter's instances), placed by parentToWorld with the
+  // material `inherited`: the instances as constant data instead of a node
+  // each. Empty (the default): the union is baked node by node.
+  virtual std::string bakeUnion(SceneBaker& baker, const NodeDesc& unionNode, const Mat4d& parentToWorld,
+                                MaterialId inherited) const;
   // What it is made of, for writing the scene for another renderer
   // (render/shapes/leaf_geometry.hpp); Opaque unless the leaf type says.
   virtual LeafShape shape() const { return {}; }
@@ -79,6 +86,13 @@ class LeafDesc {
 //   PrimitivePtr<T> buildAs(const Mat4d& objectToWorld, MaterialId, const BuildOptions&) const;
 // and this class dispatches every arithmetic of the list to it, so adding an
 // arithmetic touches no leaf.
+//
+// A build that renders only in fixed point (the firmware defines
+// LATTICE_FIXED_POINT_ONLY) instantiates buildAs for Fixed32 alone: the float
+// and double leaves, CSG nodes and BVHs it would never call are then not
+// linked (docs/firmware.md, "Memory: before and after"); asking throws.
+[[noreturn]] void throwArithmeticLeftOut(std::string_view arithmetic);
+
 template <typename Derived>
 class LeafTemplate : public LeafDesc {
  protected:
@@ -86,7 +100,11 @@ class LeafTemplate : public LeafDesc {
                  ArithmeticVariant<BuiltLeaf>& out) const final {
     std::visit(
         [&]<typename T>(BuiltLeaf<T>& slot) {
-          slot.primitive = static_cast<const Derived&>(*this).template buildAs<T>(objectToWorld, material, options);
+#ifdef LATTICE_FIXED_POINT_ONLY
+          if constexpr (!std::is_same_v<T, Fixed32>) throwArithmeticLeftOut(arithmeticName<T>());
+          else
+#endif
+            slot.primitive = static_cast<const Derived&>(*this).template buildAs<T>(objectToWorld, material, options);
         },
         out);
   }

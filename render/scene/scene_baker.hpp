@@ -41,6 +41,13 @@ class SceneBaker {
   virtual std::string shared(const void* identity, const std::function<std::string()>& expression) = 0;
   // A header the generated file must include ("render/scene/builtin_leaves.hpp").
   virtual void include(std::string_view header) = 0;
+  // Definitions of constant data (constexpr arrays) written before every
+  // use, counted as `bytes` of flash.
+  virtual void constantData(std::string definitions, std::size_t bytes) = 0;
+  // A name no other definition of the file has: prefix + a number.
+  virtual std::string freshName(std::string_view prefix) = 0;
+  // True the first time `key` is asked: helpers to define once per file.
+  virtual bool defineOnce(std::string_view key) = 0;
 };
 
 }  // namespace lattice

@@ -6,6 +6,7 @@
 
 #include "render/accel/wide_bvh.hpp"
 #include "render/shapes/span_ops.hpp"
+#include "render/shapes/union_core.hpp"
 #include "foundation/error.hpp"
 #include "foundation/arithmetics.hpp"
 
@@ -89,10 +90,13 @@ class DifferenceNode final : public CsgNode<T> {
 // Inside any child. Children with finite boxes live in a BVH (4-wide with
 // float boxes for float and double, binary for fixed point: UnionBvh), the
 // others (half-spaces, cylinders...) in a flat list that every ray visits.
+// The queries are render/shapes/union_core.hpp's.
 template <typename T>
-class UnionNode final : public CsgNode<T> {
+class UnionNode final : public UnionCore<T, UnionNode<T>, CsgNode<T>> {
+  using Core = UnionCore<T, UnionNode<T>, CsgNode<T>>;
+
  public:
-  explicit UnionNode(std::vector<PrimitivePtr<T>> children) : CsgNode<T>(std::move(children)) {
+  explicit UnionNode(std::vector<PrimitivePtr<T>> children) : Core(std::move(children)) {
     std::vector<Bounds<T>> boxes;
     std::vector<std::uint32_t> finiteIndex;
     for (std::uint32_t n = 0; n < this->children_.size(); ++n) {
@@ -118,71 +122,7 @@ class UnionNode final : public CsgNode<T> {
     bvh_ = UnionBvh<T>(boxes);
   }
 
-  void spans(const Ray<T>& ray, T tmin, T tmax, SpanList<T>& out) const override {
-    if (outsideBox(ray, tmin, tmax)) return;
-    SpanList<T> all;
-    auto add = [&](const Primitive<T>& child) {
-      SpanList<T> list;
-      child.spans(ray, tmin, tmax, list);
-      for (const Span<T>& s : list) all.push_back(s);
-    };
-    for (std::uint32_t n : unbounded_) add(*this->children_[n]);
-    bvh_.visitAll(ray, tmin, tmax, [&](std::uint32_t item) {
-      add(*finite_[item]);
-      return false;
-    });
-    coalesceSpans(all);
-    for (const Span<T>& s : all) out.push_back(s);
-  }
-
-  // Front to back with early termination. While no child contains the ray at
-  // tmin, the union's first crossing is the earliest enter of any child, so
-  // subtrees starting beyond the best enter so far are skipped. A ray that
-  // starts inside a child (rare: shadow rays start on surfaces, cameras
-  // outside) takes the exact path through spans().
-  bool firstHit(const Ray<T>& ray, T tmin, T tmax, Hit<T>& hit) const override {
-    bool inside = false;
-    if (firstEnter(ray, tmin, tmax, hit, inside)) return true;
-    if (!inside) return false;
-    SpanList<T> all;
-    spans(ray, tmin, tmax, all);
-    return firstCrossing(all, tmin, tmax, hit);
-  }
-
-  // The earliest enter of any child, each child asked for its own first enter
-  // only up to the best so far (a nested union recurses without span lists).
-  // A child that contains the ray at tmin has a box containing the ray's
-  // point at tmin, so the front-to-back walk reaches it whatever the limit.
-  bool firstEnter(const Ray<T>& ray, T tmin, T tmax, Hit<T>& hit, bool& inside) const override {
-    if (outsideBox(ray, tmin, tmax)) return false;
-    T limit = tmax;
-    bool found = false;
-    Hit<T> child;
-    auto visit = [&](const Primitive<T>& c, T& lim) {
-      if (inside) return;
-      if (c.firstEnter(ray, tmin, lim, child, inside)) {
-        lim = child.t;
-        hit = child;
-        found = true;
-      }
-      if (inside) lim = tmin;  // stops the traversal
-    };
-    for (std::uint32_t n : unbounded_) visit(*this->children_[n], limit);
-    if (!inside)
-      bvh_.visitFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) { visit(*finite_[item], lim); });
-    return found && !inside;
-  }
-
-  bool anyHit(const Ray<T>& ray, T tmin, T tmax) const override {
-    if (outsideBox(ray, tmin, tmax)) return false;
-    for (std::uint32_t n : unbounded_)
-      if (this->children_[n]->anyHit(ray, tmin, tmax)) return true;
-    // In tree order, not nearest first: with a handful of children per shadow
-    // ray, sorting them cost as much as it saved (docs/benchmarks.md, Step 4).
-    return bvh_.visitAll(ray, tmin, tmax, [&](std::uint32_t item) { return finite_[item]->anyHit(ray, tmin, tmax); });
-  }
-
- private:
+  // What UnionCore asks.
   // Where the union's box is just the union of its children's boxes and all
   // of them are in the tree, the tree's first node tests those same boxes,
   // so testing the union's box first would only repeat the work (three
@@ -194,7 +134,18 @@ class UnionNode final : public CsgNode<T> {
     T t0, t1;
     return !this->bounds_.clip(ray, tmin, tmax, t0, t1);
   }
+  std::size_t unboundedCount() const { return unbounded_.size(); }
+  template <typename F>
+  decltype(auto) withUnbounded(std::size_t k, F f) const {
+    return f(*this->children_[unbounded_[k]]);
+  }
+  const UnionBvh<T>& bvh() const { return bvh_; }
+  template <typename F>
+  decltype(auto) withItem(std::uint32_t item, F f) const {
+    return f(*finite_[item]);
+  }
 
+ private:
   UnionBvh<T> bvh_;
   std::vector<const Primitive<T>*> finite_;  // BVH item -> child
   std::vector<std::uint32_t> unbounded_;  // children every ray visits: the unbounded ones, or a lone bounded one

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "geometry_checks.hpp"
+#include "foundation/fixed.hpp"
 #include "render/accel/bvh.hpp"
 #include "render/shapes/csg.hpp"
 #include "render/shapes/quartic_presets.hpp"
@@ -121,4 +122,48 @@ TEMPLATE_TEST_CASE("a union over a BVH equals a flat union of thousands of rando
     }
   }
   REQUIRE(hits > 50);
+}
+
+// Bvh::view (a baked scene's constant arrays, docs/firmware.md): a tree over
+// another tree's nodes and items visits the same items in the same order,
+// front to back and all, stopping where the built one stops.
+TEMPLATE_TEST_CASE("a BVH view over a built tree's arrays answers as the tree", "[bvh]", float, Fixed32) {
+  using T = TestType;
+  std::vector<Bounds<T>> boxes;
+  for (const Ball& b : randomBalls(500, 9))
+    boxes.push_back({Vec3<T>(b.centre - b.radius), Vec3<T>(b.centre + b.radius)});
+  const Bvh<T> built(boxes);
+  const std::vector<typename Bvh<T>::Node> nodes(built.nodes().begin(), built.nodes().end());
+  const std::vector<std::uint32_t> items(built.items().begin(), built.items().end());
+  const Bvh<T> view = Bvh<T>::view(nodes, items, built.depth());
+  REQUIRE(view.nodes().data() == nodes.data());  // the arrays given, not a copy
+  CHECK(view.depth() == built.depth());
+  CHECK(Bvh<T>::view({}, {}, 0).empty());
+
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> pos(-12, 12);
+  int visited = 0;
+  for (int n = 0; n < 300; ++n) {
+    const Vec3d from(pos(rng), pos(rng), pos(rng)), to(pos(rng), pos(rng), pos(rng));
+    const Ray<T> ray{Vec3<T>(from), Vec3<T>(to - from)};
+    std::vector<std::uint32_t> a, b;
+    built.visitAll(ray, T(0), T(1), [&](std::uint32_t i) { a.push_back(i); return false; });
+    view.visitAll(ray, T(0), T(1), [&](std::uint32_t i) { b.push_back(i); return false; });
+    REQUIRE(a == b);
+    visited += static_cast<int>(a.size());
+    // Front to back, lowering the limit at every third item.
+    std::vector<std::uint32_t> fa, fb;
+    T limitA(1), limitB(1);
+    built.visitFrontToBack(ray, T(0), limitA, [&](std::uint32_t i, T& lim) {
+      fa.push_back(i);
+      if (fa.size() % 3 == 0) lim = lim * T(0.5);
+    });
+    view.visitFrontToBack(ray, T(0), limitB, [&](std::uint32_t i, T& lim) {
+      fb.push_back(i);
+      if (fb.size() % 3 == 0) lim = lim * T(0.5);
+    });
+    REQUIRE(fa == fb);
+    CHECK(limitA == limitB);
+  }
+  CHECK(visited > 50);  // the rays met boxes, not only empty space (90 item visits in all, measured)
 }

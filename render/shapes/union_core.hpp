@@ -1,0 +1,107 @@
+#pragma once
+// The queries of a union over a BVH (render/shapes/csg.hpp), written once for
+// every union that keeps its children its own way: the CSG tree's UnionNode
+// (children built in RAM) and a baked scene's union of lattice instances
+// (constant data in flash, lht/leaf/baked_lattice_union.hpp). Both answer
+// every ray the same way because this is the one copy of the walk.
+//
+// Method: CRTP. Derived provides
+//   bool outsideBox(const Ray<T>&, T tmin, T tmax) const;   // the union's own box test
+//   std::size_t unboundedCount() const;                     // children every ray visits
+//   template <typename F> decltype(auto) withUnbounded(std::size_t k, F f) const;  // f(const Primitive<T>&)
+//   const UnionBvh<T>& bvh() const;                        // the finite children
+//   template <typename F> decltype(auto) withItem(std::uint32_t item, F f) const;  // f(const Primitive<T>&)
+// and Base is the class UnionCore derives from (Primitive<T>, or a CSG node
+// base holding the children).
+//
+// While no child contains the ray at tmin, the union's first crossing is the
+// earliest enter of any child, so subtrees starting beyond the best enter so
+// far are skipped. A ray that starts inside a child (rare: shadow rays start
+// on surfaces, cameras outside) takes the exact path through spans().
+//
+// Tunables: none.
+#include <cstdint>
+
+#include "render/accel/wide_bvh.hpp"
+#include "render/shapes/primitive.hpp"
+#include "render/shapes/span_ops.hpp"
+
+namespace lattice {
+
+template <typename T, typename Derived, typename Base>
+class UnionCore : public Base {
+ public:
+  using Base::Base;
+
+  void spans(const Ray<T>& ray, T tmin, T tmax, SpanList<T>& out) const override {
+    const Derived& self = derived();
+    if (self.outsideBox(ray, tmin, tmax)) return;
+    SpanList<T> all;
+    auto add = [&](const Primitive<T>& child) {
+      SpanList<T> list;
+      child.spans(ray, tmin, tmax, list);
+      for (const Span<T>& s : list) all.push_back(s);
+    };
+    for (std::size_t k = 0; k < self.unboundedCount(); ++k) self.withUnbounded(k, add);
+    self.bvh().visitAll(ray, tmin, tmax, [&](std::uint32_t item) {
+      self.withItem(item, add);
+      return false;
+    });
+    coalesceSpans(all);
+    for (const Span<T>& s : all) out.push_back(s);
+  }
+
+  bool firstHit(const Ray<T>& ray, T tmin, T tmax, Hit<T>& hit) const override {
+    bool inside = false;
+    if (firstEnter(ray, tmin, tmax, hit, inside)) return true;
+    if (!inside) return false;
+    SpanList<T> all;
+    spans(ray, tmin, tmax, all);
+    return firstCrossing(all, tmin, tmax, hit);
+  }
+
+  // The earliest enter of any child, each child asked for its own first enter
+  // only up to the best so far (a nested union recurses without span lists).
+  // A child that contains the ray at tmin has a box containing the ray's
+  // point at tmin, so the front-to-back walk reaches it whatever the limit.
+  bool firstEnter(const Ray<T>& ray, T tmin, T tmax, Hit<T>& hit, bool& inside) const override {
+    const Derived& self = derived();
+    if (self.outsideBox(ray, tmin, tmax)) return false;
+    T limit = tmax;
+    bool found = false;
+    Hit<T> child;
+    auto visit = [&](const Primitive<T>& c, T& lim) {
+      if (inside) return;
+      if (c.firstEnter(ray, tmin, lim, child, inside)) {
+        lim = child.t;
+        hit = child;
+        found = true;
+      }
+      if (inside) lim = tmin;  // stops the traversal
+    };
+    for (std::size_t k = 0; k < self.unboundedCount(); ++k)
+      self.withUnbounded(k, [&](const Primitive<T>& c) { visit(c, limit); });
+    if (!inside)
+      self.bvh().visitFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) {
+        self.withItem(item, [&](const Primitive<T>& c) { visit(c, lim); });
+      });
+    return found && !inside;
+  }
+
+  bool anyHit(const Ray<T>& ray, T tmin, T tmax) const override {
+    const Derived& self = derived();
+    if (self.outsideBox(ray, tmin, tmax)) return false;
+    for (std::size_t k = 0; k < self.unboundedCount(); ++k)
+      if (self.withUnbounded(k, [&](const Primitive<T>& c) { return c.anyHit(ray, tmin, tmax); })) return true;
+    // In tree order, not nearest first: with a handful of children per shadow
+    // ray, sorting them cost as much as it saved (docs/benchmarks.md, Step 4).
+    return self.bvh().visitAll(ray, tmin, tmax, [&](std::uint32_t item) {
+      return self.withItem(item, [&](const Primitive<T>& c) { return c.anyHit(ray, tmin, tmax); });
+    });
+  }
+
+ private:
+  const Derived& derived() const { return static_cast<const Derived&>(*this); }
+};
+
+}  // namespace lattice
