@@ -87,15 +87,19 @@ PipelineReport runPipeline(RowSource18& source, IndexedSink& sink, const Pipelin
   info.height = height;
   info.palette = medianCut(histogram, colorBudget(sink, options), options.quantize);
   report.paletteSize = info.palette.size();
-  // Every pixel of the mapping pass is one the histogram counted (the same
-  // rows, no sampling) and goes to the entry its colour maps to (no
-  // dithering), so the histogram's counts give each entry's share exactly -
-  // unless a 32-bit count could have saturated.
-  const bool countsExact = options.mode != PipelineMode::Sample && options.quantize.dither == Dither::None &&
+  // Every colour the histogram counted goes to the entry it maps to (no
+  // dithering), so its counts give each entry's share of the mapped picture:
+  // exactly when the histogram saw every row, and the sample's share after
+  // --mode sample, which is the share the pass that chose the palette saw
+  // (the issue-24 firmware renders Plate 6 so: the driver then takes its
+  // background from that pass and keeps no frame). Host and firmware run this
+  // same rule with the same flags, so their streams stay byte for byte the
+  // same. Not where a 32-bit count could have saturated.
+  const bool countsKnown = options.quantize.dither == Dither::None &&
                            static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) < UINT32_MAX;
   auto* countsSink = dynamic_cast<PaletteCountsSink*>(&sink);
   std::vector<std::uint64_t> counts;
-  if (countsExact && countsSink && countsSink->wantsPaletteCounts()) {
+  if (countsKnown && countsSink && countsSink->wantsPaletteCounts()) {
     InverseColorMap nearest = InverseColorMap::uncached(info.palette);
     counts.assign(info.palette.size(), 0);
     histogram.forEach([&](Color18 c, std::uint32_t n) { counts[nearest.nearest(c)] += n; });
