@@ -5,6 +5,7 @@
 // set, and the quantizer must hand it counts exactly when they are exact.
 #include <catch2/catch.hpp>
 
+#include "devices/tek4125/tek4125_decoder.hpp"
 #include "foundation/indexed_image.hpp"
 #include "quantize/run_pipeline.hpp"
 #include "tests/devices/tek4125/tek_test_support.hpp"
@@ -128,4 +129,37 @@ TEST_CASE("the pipeline gives the 4125 driver exact counts without dithering, no
       CHECK(sink.data() == framed(collect.image(), profile));
     }
   }
+}
+
+TEST_CASE("after a sampled histogram the 4125 driver streams from the sample's counts, the framed picture") {
+  // --mode sample (what the issue-24 firmware runs): the palette comes from
+  // every 4th row and column, and so do the counts the driver ranks for its
+  // background. It must stream, and draw exactly the picture a driver that
+  // kept the frame draws from the same indices (only the background it
+  // skips may differ, which changes bytes, never pixels).
+  const int w = 70, h = 45;
+  testing::FunctionSource source(w, h, [&](int x, int y) { return testing::photoLike(x, y, w, h); });
+  Tek4125Profile profile;
+  profile.strategy = "runs";
+  quantize::PipelineOptions options;
+  options.progress = false;
+  options.mode = quantize::PipelineMode::Sample;
+  MemorySink sink;
+  Tek4125Driver driver(sink, profile);
+  quantize::runPipeline(source, driver, options);
+  CHECK(driver.frameBytes() == 0);
+  IndexedImageSink collect(profile.maxColors());
+  quantize::runPipeline(source, collect, options);
+  const std::vector<std::uint8_t> reference = framed(collect.image(), profile);
+  const auto screenOf = [&](const std::vector<std::uint8_t>& bytes) {
+    Tek4125Decoder decoder(profile);
+    decoder.feed(bytes);
+    decoder.finish();
+    CHECK(decoder.report().malformed == 0);
+    return cutPicture(decoder.image(), profile, w, h);
+  };
+  const IndexedImage streamedScreen = screenOf(sink.data());
+  const IndexedImage framedScreen = screenOf(reference);
+  REQUIRE(streamedScreen.pixels.size() == collect.image().pixels.size());
+  CHECK(streamedScreen.pixels == framedScreen.pixels);
 }
