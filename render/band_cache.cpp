@@ -10,8 +10,14 @@ BandCache::BandCache(int width, int height, int threads, ShadeRow shadeRow)
 
 BandCache::~BandCache() = default;
 
+// One thread has no pool to keep busy, so its band is the row asked: a
+// consumer that skips rows (the sample pass of --mode sample, every 4th row)
+// renders only those, where a band of 8 rendered them all (measured: the
+// same 23,432 rays for Plate 6 at 64x64 in both modes). Pixels are the same
+// either way (rows are independent).
 int BandCache::bandRowsAt(int y0) const {
-  return std::min(height_ - y0, std::max(1, threads_ * kBandRowsPerThread));
+  if (threads_ <= 1) return 1;
+  return std::min(height_ - y0, threads_ * kBandRowsPerThread);
 }
 
 // One thread (and the firmware): the band in the caller, row after row.
