@@ -13,6 +13,8 @@
 #include "render/shapes/quartic_presets.hpp"
 
 using namespace lattice;
+using lattice::testing::makeRay;
+using lattice::testing::spansOf;
 
 namespace {
 
@@ -45,7 +47,7 @@ TEMPLATE_TEST_CASE("quartic leaves answer firstHit, firstEnter and anyHit as spa
       const Ray<T> ray = makeRay<T>(origin, target - origin);
       double a = window(rng), b = window(rng);
       if (a > b) std::swap(a, b);
-      const T tmin(n % 4 == 0 ? 0.0 : a), tmax = n % 3 == 0 ? std::numeric_limits<T>::infinity() : T(b);
+      const T tmin = static_cast<T>(n % 4 == 0 ? 0.0 : a), tmax = n % 3 == 0 ? std::numeric_limits<T>::infinity() : static_cast<T>(b);
       const SpanList<T> list = spansOf(*leaf, ray, tmin, tmax);
 
       Hit<T> expected, got;
