@@ -21,6 +21,9 @@
 // * multiplyRaw / divideRaw: Fixed<F>'s rounded, saturated product and
 //   quotient of raw values (round half away from zero, symmetric saturation
 //   to +-(2^63 - 1)), from the magnitudes, the sign applied last.
+//   Operands below 2^32 (magnitudes below 1.0 in Q31.32: unit vectors,
+//   cosines) take shorter paths: one 32x32->64 product, or a 96/32-bit
+//   division in two divide64By32 digits.
 #include <cstdint>
 
 namespace lattice::wide {
@@ -117,12 +120,20 @@ constexpr std::int64_t subtractRaw(std::int64_t a, std::int64_t b) {
 template <int F>
 constexpr std::int64_t multiplyRaw(std::int64_t a, std::int64_t b) {
   static_assert(F > 0 && F < 64, "fraction bits of a 64-bit raw value");
-  const U128 p = multiply64(magnitude(a), magnitude(b));
+  const std::uint64_t ua = magnitude(a), ub = magnitude(b);
+  const bool negative = (a < 0) != (b < 0);
+  if ((ua | ub) >> 32 == 0) {
+    // Both below 2^32 (|x| < 1 in Q31.32): one 32x32->64 product, which
+    // cannot saturate for F >= 1.
+    const std::uint64_t p = std::uint64_t(static_cast<std::uint32_t>(ua)) * static_cast<std::uint32_t>(ub);
+    return signedRaw(((p >> (F - 1)) + 1) >> 1, negative);  // round(p / 2^F): halves up
+  }
+  const U128 p = multiply64(ua, ub);
   // + 2^(F-1), then the bits from F up.
   const std::uint64_t low = p.low + (std::uint64_t(1) << (F - 1));
   const std::uint64_t high = p.high + (low < p.low ? 1 : 0);
-  if (high >> (F - 1) != 0) return signedRaw(~std::uint64_t(0), (a < 0) != (b < 0));  // >= 2^63 after the shift
-  return signedRaw(high << (64 - F) | low >> F, (a < 0) != (b < 0));
+  if (high >> (F - 1) != 0) return signedRaw(~std::uint64_t(0), negative);  // >= 2^63 after the shift
+  return signedRaw(high << (64 - F) | low >> F, negative);
 }
 
 // round(a 2^F / b), halves away from zero, saturated; b == 0 gives the
@@ -140,6 +151,24 @@ constexpr std::int64_t divideRaw(std::int64_t a, std::int64_t b) {
   const std::uint64_t nHigh = (ua >> (64 - F)) + (nLow < nLow0 ? 1 : 0);
   // The quotient is at least 2^63 (saturated) iff floor(n / 2^63) >= ud.
   if ((nHigh << 1 | nLow >> 63) >= ud) return signedRaw(~std::uint64_t(0), negative);
+  if ((nHigh | ud) >> 32 == 0) {
+    // A 96-bit n over a 32-bit divisor (both operands below 1.0 in Q31.32):
+    // two 32-bit digits, the high one by one UDIV, the low one by
+    // divide64By32 on the normalised divisor.
+    const auto d = static_cast<std::uint32_t>(ud);
+    const auto n2 = static_cast<std::uint32_t>(nHigh), n1 = static_cast<std::uint32_t>(nLow >> 32);
+    const auto n0 = static_cast<std::uint32_t>(nLow);
+    const int s = __builtin_clz(d);
+    const std::uint32_t dn = d << s;
+    // n2 < d (the quotient is below 2^63), so the quotient's top digit is 0
+    // and the next two come from (n2:n1:n0) 2^s over dn.
+    const std::uint32_t top = s == 0 ? n2 : (n2 << s | n1 >> (32 - s));
+    const std::uint32_t middle = s == 0 ? n1 : (n1 << s | n0 >> (32 - s));
+    std::uint32_t rest = 0;
+    const std::uint32_t qHigh = divide64By32(top, middle, dn, rest);
+    const std::uint32_t qLow = divide64By32(rest, n0 << s, dn, rest);
+    return signedRaw(std::uint64_t(qHigh) << 32 | qLow, negative);
+  }
   // Normalised: n 2^s < 2^63 (ud 2^s), so its high half is below ud 2^s.
   const int s = __builtin_clzll(ud);
   const std::uint64_t high = s == 0 ? nHigh : (nHigh << s | nLow >> (64 - s));
