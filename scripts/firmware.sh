@@ -5,11 +5,12 @@
 # stream with the host's `lattice render --arith fixed` (it prints
 # "identical" or the first differing byte, and fails on a difference), and
 # decode it with our Tek 4125 emulator to a PNG.
-#   scripts/firmware.sh SCENE [--board NAME] [--size WxH] [--set key=value ...] [--mode MODE] [--out DIR] [--icount] [--ram board]
+#   scripts/firmware.sh SCENE [--board NAME] [--size WxH] [--set key=value ...] [--mode MODE] [--sample N] [--out DIR] [--icount] [--ram board]
 # --board: mps2-an385 (the default; Cortex-M3) or netduinoplus2 (STM32F405).
 # --mode: the quantizer pipeline's mode, given to the bake and the host render
 # alike: passes (the default: every row rendered twice) or sample (the
-# histogram from every 4th row, then one full pass: 1.25 renders a pixel).
+# histogram from every 4th row, then one full pass: 1.25 renders a pixel);
+# --sample N: sample mode's step (the pipeline's --sample, default 4).
 # Writes DIR/NAME.tek (the UART bytes), DIR/NAME.png, DIR/NAME.report (the
 # firmware's own report: stream bytes, palette, RAM high-water marks) and,
 # with --icount, the report's virtual time is the instruction count (QEMU
@@ -23,14 +24,15 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-usage() { sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit "${1:-0}"; }
-scene="" board=mps2-an385 size="64x64" out="out/firmware" icount=0 ram=budget sets=() mode=passes
+usage() { sed -n '2,23p' "$0" | sed 's/^# \{0,1\}//'; exit "${1:-0}"; }
+scene="" board=mps2-an385 size="64x64" out="out/firmware" icount=0 ram=budget sets=() mode=passes sample=
 while (($#)); do
   case $1 in
     --size) size=$2; shift 2 ;;
     --board) board=$2; shift 2 ;;
     --set) sets+=(--set "$2"); shift 2 ;;
     --mode) mode=$2; shift 2 ;;
+    --sample) sample=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --icount) icount=1; shift ;;
     --ram) ram=$2; shift 2 ;;
@@ -60,6 +62,7 @@ name="$(basename "$scene" .toml)-$size"
 for kv in "${sets[@]}"; do [[ $kv == --set ]] || name+="-${kv//[^A-Za-z0-9]/}"; done
 [[ $mode == passes ]] || name+="-$mode"
 pipeline=(--mode "$mode")
+[[ -z $sample ]] || { pipeline+=(--sample "$sample"); name+="$sample"; }
 build=${FIRMWARE_BUILD:-build-firmware}
 [[ $board == mps2-an385 ]] || build+="-$board"
 [[ $ram == budget || $ram == board ]] || { echo "firmware.sh: --ram is budget or board" >&2; exit 2; }
