@@ -21,9 +21,9 @@
 // * multiplyRaw / divideRaw: Fixed<F>'s rounded, saturated product and
 //   quotient of raw values (round half away from zero, symmetric saturation
 //   to +-(2^63 - 1)), from the magnitudes, the sign applied last.
-//   Operands below 2^32 (magnitudes below 1.0 in Q31.32: unit vectors,
-//   cosines) take shorter paths: one 32x32->64 product, or a 96/32-bit
-//   division in two divide64By32 digits.
+//   Magnitudes below 2^32 (below 1.0 in Q31.32: unit vectors, cosines)
+//   take shorter paths: a product of two of them is one 32x32->64 product;
+//   a quotient by one (n below 2^96) is two divide64By32 digits.
 #include <cstdint>
 
 namespace lattice::wide {
@@ -152,9 +152,9 @@ constexpr std::int64_t divideRaw(std::int64_t a, std::int64_t b) {
   // The quotient is at least 2^63 (saturated) iff floor(n / 2^63) >= ud.
   if ((nHigh << 1 | nLow >> 63) >= ud) return signedRaw(~std::uint64_t(0), negative);
   if ((nHigh | ud) >> 32 == 0) {
-    // A 96-bit n over a 32-bit divisor (both operands below 1.0 in Q31.32):
-    // two 32-bit digits, the high one by one UDIV, the low one by
-    // divide64By32 on the normalised divisor.
+    // A 96-bit n over a 32-bit divisor (a divisor below 1.0 in Q31.32):
+    // two 32-bit quotient digits, each one divide64By32 on the normalised
+    // divisor, instead of two rounds of the 128/64 long division.
     const auto d = static_cast<std::uint32_t>(ud);
     const auto n2 = static_cast<std::uint32_t>(nHigh), n1 = static_cast<std::uint32_t>(nLow >> 32);
     const auto n0 = static_cast<std::uint32_t>(nLow);
