@@ -16,6 +16,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "foundation/wide_kernels.hpp"
+
 namespace lattice {
 
 // 128-bit intermediates: GCC's __int128 where the target has it (__extension__
@@ -26,7 +28,9 @@ namespace lattice {
 #if defined(__SIZEOF_INT128__) && !defined(LATTICE_PORTABLE_INT128)
 __extension__ typedef __int128 Int128;
 __extension__ typedef unsigned __int128 UInt128;
+inline constexpr bool kNativeInt128 = true;
 #else
+inline constexpr bool kNativeInt128 = false;
 }  // namespace lattice
 #include "foundation/int128.hpp"  // only here: the host's objects never depend on it
 namespace lattice {
@@ -62,11 +66,23 @@ class Fixed {
   constexpr explicit operator int() const { return static_cast<int>(raw_ >> F); }  // floor
   constexpr bool saturated() const { return raw_ == kMaxRaw || raw_ == kMinRaw; }
 
-  friend constexpr Fixed operator+(Fixed a, Fixed b) { return fromRaw(saturate(static_cast<Int128>(a.raw_) + b.raw_)); }
-  friend constexpr Fixed operator-(Fixed a, Fixed b) { return fromRaw(saturate(static_cast<Int128>(a.raw_) - b.raw_)); }
+  // Without __int128 every operator below runs foundation/wide_kernels.hpp's
+  // 32-bit-step kernels, which give these definitions' bits
+  // (tests/foundation/wide_kernels_test.cpp) without the portable class's
+  // general 128-bit sums, products, negations and compares (docs/firmware.md,
+  // "Speed, bit for bit").
+  friend constexpr Fixed operator+(Fixed a, Fixed b) {
+    if constexpr (!kNativeInt128) return fromRaw(wide::addRaw(a.raw_, b.raw_));
+    return fromRaw(saturate(static_cast<Int128>(a.raw_) + b.raw_));
+  }
+  friend constexpr Fixed operator-(Fixed a, Fixed b) {
+    if constexpr (!kNativeInt128) return fromRaw(wide::subtractRaw(a.raw_, b.raw_));
+    return fromRaw(saturate(static_cast<Int128>(a.raw_) - b.raw_));
+  }
   constexpr Fixed operator-() const { return fromRaw(-raw_); }
   constexpr Fixed operator+() const { return *this; }
   friend constexpr Fixed operator*(Fixed a, Fixed b) {
+    if constexpr (!kNativeInt128) return fromRaw(wide::multiplyRaw<F>(a.raw_, b.raw_));
     Int128 p = static_cast<Int128>(a.raw_) * b.raw_;
     // Round to nearest, ties away from zero, so a*b and (-a)*b are mirror images.
     Int128 half = static_cast<Int128>(1) << (F - 1);
@@ -74,6 +90,7 @@ class Fixed {
     return fromRaw(saturate(p));
   }
   friend constexpr Fixed operator/(Fixed a, Fixed b) {
+    if constexpr (!kNativeInt128) return fromRaw(wide::divideRaw<F>(a.raw_, b.raw_));
     if (b.raw_ == 0) return fromRaw(a.raw_ > 0 ? kMaxRaw : (a.raw_ < 0 ? kMinRaw : 0));
     Int128 n = static_cast<Int128>(a.raw_) << F;
     Int128 d = b.raw_;
@@ -125,12 +142,34 @@ constexpr int bitLength(UInt128 n) {
   return low != 0 ? 64 - __builtin_clzll(low) : 0;
 }
 
-// floor(sqrt(n)) of a 128-bit integer by Newton iteration from a power of
-// two at or above the root (Newton then descends monotonically, so the seed
-// changes the number of steps, never the result).
+// floor(sqrt(x)) of a 32-bit integer, digit by digit (two bits of x a
+// result bit, from the leading pair CLZ finds): shifts, compares and
+// subtracts only.
+constexpr std::uint32_t isqrt32(std::uint32_t x) {
+  if (x == 0) return 0;
+  std::uint32_t result = 0, bit = std::uint32_t(1) << ((31 - __builtin_clz(x)) & ~1);
+  for (; bit != 0; bit >>= 2) {
+    if (x >= result + bit) {
+      x -= result + bit;
+      result = (result >> 1) + bit;
+    } else {
+      result >>= 1;
+    }
+  }
+  return result;
+}
+
+// floor(sqrt(n)) of a 128-bit integer by Newton iteration from a seed at or
+// above the root: from any such seed Newton descends monotonically to
+// floor(sqrt(n)) and stops there, so the seed changes the number of steps,
+// never the result. The seed is (isqrt32(top) + 1) 2^k for top = n / 4^k,
+// the leading 31 or 32 bits: (isqrt32(top) + 1)^2 4^k > (top + 1) 4^k > n.
+// It is good to about 15 bits, so two or three 128-bit divisions follow
+// where a power-of-two seed (good to one bit) took five or six.
 constexpr UInt128 isqrt(UInt128 n) {
   if (n == 0) return 0;
-  UInt128 r = static_cast<UInt128>(1) << ((bitLength(n) + 1) / 2);
+  const int half = bitLength(n) > 32 ? (bitLength(n) - 31) / 2 : 0;  // k: top = n / 4^k < 2^32
+  UInt128 r = static_cast<UInt128>(isqrt32(static_cast<std::uint32_t>(n >> (2 * half))) + 1) << half;
   while (true) {
     UInt128 next = (r + n / r) >> 1;
     if (next >= r) break;

@@ -9,12 +9,11 @@
 // Method: two 64-bit halves in two's complement. Multiplication is the
 // schoolbook product of 32-bit digits (four 32x32->64 multiplies for the low
 // half, the cross terms modulo 2^64). Division: the 64-bit hardware (or
-// libgcc) division when both operands fit in 64 bits; a divisor that fits in
-// 64 bits (all of Fixed32's quotients and square roots) by schoolbook long
-// division in base 2^32 on the normalised divisor (Knuth, TAOCP vol. 2,
-// 4.3.1, algorithm D: each quotient digit estimated from the top digits and
-// corrected at most twice), two 64/32-bit steps instead of one loop turn a
-// quotient bit; wider divisors by shift-and-subtract over the quotient's
+// libgcc) division when both operands fit in 64 bits (libgcc's has quick
+// paths for small operands); a divisor that fits in 64 bits (all of
+// Fixed32's quotients and square roots) by foundation/wide_kernels.hpp's
+// long division in base 2^32 on the normalised divisor (Knuth, TAOCP vol.
+// 2, 4.3.1, algorithm D), each digit estimated with 32/16-bit UDIVs; wider divisors by shift-and-subtract over the quotient's
 // possible bits. Bit lengths come from count-leading-zeros (one CLZ on ARMv7-M). Semantics follow GCC's
 // __int128: wrap-around modulo 2^128, division truncates towards zero,
 // right shifts of signed values are arithmetic. Shift counts are 0..127.
@@ -23,6 +22,8 @@
 #include <concepts>
 #include <cstdint>
 #include <type_traits>
+
+#include "foundation/wide_kernels.hpp"
 
 namespace lattice {
 
@@ -110,32 +111,15 @@ class Wide128 {
   }
   static constexpr int bitLength64(std::uint64_t v) { return v == 0 ? 0 : 64 - __builtin_clzll(v); }
   static constexpr int bitLength(Wide128 v) { return v.hi_ != 0 ? 64 + bitLength64(v.hi_) : bitLength64(v.lo_); }
-  // (high:low) / d and its remainder for high < d, d != 0: algorithm D with
-  // two base-2^32 quotient digits. d is shifted left until its top bit is
-  // set, so each digit's estimate from the top two dividend digits over the
-  // top divisor digit is at most 2 too large.
+  // (high:low) / d and its remainder for high < d, d != 0: d shifted left
+  // until its top bit is set, then foundation/wide_kernels.hpp's algorithm D
+  // in 32-bit steps (no 64-bit library division).
   static constexpr std::uint64_t divide128By64(std::uint64_t high, std::uint64_t low, std::uint64_t d,
                                                std::uint64_t& remainder) {
-    constexpr std::uint64_t kBase = std::uint64_t(1) << 32, kDigit = kBase - 1;
     const int s = __builtin_clzll(d);
-    d <<= s;
-    const std::uint64_t dHigh = d >> 32, dLow = d & kDigit;
     const std::uint64_t top = s == 0 ? high : (high << s | low >> (64 - s));  // < d after the shift
-    low <<= s;
-    const std::uint64_t lowDigits[2] = {low >> 32, low & kDigit};
-    std::uint64_t partial = top, quotient = 0;
-    for (const std::uint64_t next : lowDigits) {
-      // Estimate the digit from partial / dHigh, lower it while it is too large.
-      std::uint64_t q = partial / dHigh, r = partial - q * dHigh;
-      while (q >= kBase || q * dLow > (r << 32 | next)) {
-        --q;
-        r += dHigh;
-        if (r >= kBase) break;
-      }
-      partial = (partial << 32 | next) - q * d;  // modulo 2^64: the true rest is below d
-      quotient = quotient << 32 | q;
-    }
-    remainder = partial >> s;
+    const std::uint64_t quotient = wide::divide128By64(top, low << s, d << s, remainder);
+    remainder >>= s;
     return quotient;
   }
   // Unsigned magnitudes; the quotient or the remainder (remainder = true).
@@ -146,10 +130,16 @@ class Wide128 {
     }
     if (n < d) return remainder ? n : Wide128<false>();
     if (d.high() == 0) {
-      // Long division by a 64-bit divisor: the high half first, then the rest.
-      const std::uint64_t qHigh = n.high() / d.low();
+      // Long division by a 64-bit divisor: the high half first (a 64-bit
+      // division only when the quotient needs more than 64 bits, which
+      // Fixed32 never asks), then the rest in 32-bit steps.
+      std::uint64_t qHigh = 0, top = n.high();
+      if (top >= d.low()) {
+        qHigh = top / d.low();
+        top %= d.low();
+      }
       std::uint64_t r = 0;
-      const std::uint64_t qLow = divide128By64(n.high() % d.low(), n.low(), d.low(), r);
+      const std::uint64_t qLow = divide128By64(top, n.low(), d.low(), r);
       return remainder ? Wide128<false>(r) : Wide128<false>::fromHalves(qHigh, qLow);
     }
     const int shift = bitLength(Wide128(n)) - bitLength(Wide128(d));

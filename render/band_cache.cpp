@@ -10,10 +10,15 @@ BandCache::BandCache(int width, int height, int threads, ShadeRow shadeRow)
 
 BandCache::~BandCache() = default;
 
+// One thread has no pool to keep busy, so its band is the row asked: a
+// consumer that skips rows (the sample pass of --mode sample, every 4th row)
+// renders only those, where a band of 8 rendered them all (measured: the
+// same 23,432 rays for Plate 6 at 64x64 in both modes). Pixels are the same
+// either way (rows are independent).
 int BandCache::bandRowsAt(int y0) const {
-  // One thread gains nothing from a band (no row is rendered ahead while the
-  // consumer reads), so it keeps one row: 2 KiB at 512 wide instead of 16,
-  // what the firmware's 128 KiB notices (docs/firmware.md).
+  // Also: no row is rendered ahead while the consumer reads, so one row is
+  // all one thread needs: 2 KiB at 512 wide instead of 16, what the
+  // firmware's 128 KiB notices (docs/firmware.md).
   if (threads_ <= 1) return std::min(height_ - y0, 1);
   return std::min(height_ - y0, std::max(1, threads_ * kBandRowsPerThread));
 }

@@ -3,15 +3,16 @@
 // that reads one row at a time still keeps every core busy.
 //
 // Method: rows are rendered a band at a time and the band is kept. With one
-// thread (or none: the firmware) a row outside the band renders the band
-// starting there in the caller. With more, a worker pool started on first
+// thread (or none: the firmware) the band is one row, rendered in the
+// caller when asked (so a consumer that skips rows renders only those). With more, a worker pool started on first
 // use renders the band after the current one while the consumer reads this
 // one, handing rows out one at a time from a shared counter (which thread
 // shades a row never changes its pixels); a band ahead that does not hold
 // the row asked (rows out of order, a second pass from the top) is finished
 // and dropped.
 //
-// Tunables: kBandRowsPerThread rows per thread in a band: enough that the
+// Tunables: kBandRowsPerThread rows per thread in a band (with two or more
+// threads): enough that the
 // rows' uneven costs even out before the band's last row (a thread idles
 // until then), few enough that a streaming consumer sees rows early.
 #include <atomic>

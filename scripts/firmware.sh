@@ -5,8 +5,12 @@
 # stream with the host's `lattice render --arith fixed` (it prints
 # "identical" or the first differing byte, and fails on a difference), and
 # decode it with our Tek 4125 emulator to a PNG.
-#   scripts/firmware.sh SCENE [--board NAME] [--size WxH] [--set key=value ...] [--out DIR] [--icount] [--ram board]
+#   scripts/firmware.sh SCENE [--board NAME] [--size WxH] [--set key=value ...] [--mode MODE] [--sample N] [--out DIR] [--icount] [--ram board]
 # --board: mps2-an385 (the default; Cortex-M3) or netduinoplus2 (STM32F405).
+# --mode: the quantizer pipeline's mode, given to the bake and the host render
+# alike: passes (the default: every row rendered twice) or sample (the
+# histogram from every 4th row, then one full pass: 1.25 renders a pixel);
+# --sample N: sample mode's step (the pipeline's --sample, default 4).
 # Writes DIR/NAME.tek (the UART bytes), DIR/NAME.png, DIR/NAME.report (the
 # firmware's own report: stream bytes, palette, RAM high-water marks) and,
 # with --icount, the report's virtual time is the instruction count (QEMU
@@ -20,13 +24,15 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-usage() { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit "${1:-0}"; }
-scene="" board=mps2-an385 size="64x64" out="out/firmware" icount=0 ram=budget sets=()
+usage() { sed -n '2,23p' "$0" | sed 's/^# \{0,1\}//'; exit "${1:-0}"; }
+scene="" board=mps2-an385 size="64x64" out="out/firmware" icount=0 ram=budget sets=() mode=passes sample=
 while (($#)); do
   case $1 in
     --size) size=$2; shift 2 ;;
     --board) board=$2; shift 2 ;;
     --set) sets+=(--set "$2"); shift 2 ;;
+    --mode) mode=$2; shift 2 ;;
+    --sample) sample=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --icount) icount=1; shift ;;
     --ram) ram=$2; shift 2 ;;
@@ -54,13 +60,16 @@ lattice=${LATTICE_EXE:-build/app/lattice}
 
 name="$(basename "$scene" .toml)-$size"
 for kv in "${sets[@]}"; do [[ $kv == --set ]] || name+="-${kv//[^A-Za-z0-9]/}"; done
+[[ $mode == passes ]] || name+="-$mode"
+pipeline=(--mode "$mode")
+[[ -z $sample ]] || { pipeline+=(--sample "$sample"); name+="$sample"; }
 build=${FIRMWARE_BUILD:-build-firmware}
 [[ $board == mps2-an385 ]] || build+="-$board"
 [[ $ram == budget || $ram == board ]] || { echo "firmware.sh: --ram is budget or board" >&2; exit 2; }
 [[ $ram == budget ]] || build+="-$ram"
 build=$(realpath -m "$build")
 mkdir -p "$build/scenes" "$out"
-"$lattice" bake "$scene" --size "$size" "${sets[@]}" -q -o "$build/scenes/$name.cpp.new"
+"$lattice" bake "$scene" --size "$size" "${sets[@]}" "${pipeline[@]}" -q -o "$build/scenes/$name.cpp.new"
 # Only a changed scene relinks (cmp keeps the old file's time stamp).
 if cmp -s "$build/scenes/$name.cpp.new" "$build/scenes/$name.cpp"; then rm "$build/scenes/$name.cpp.new"
 else mv "$build/scenes/$name.cpp.new" "$build/scenes/$name.cpp"; fi
@@ -112,7 +121,7 @@ echo "firmware.sh: $out/$name.tek ($(stat -c %s "$out/$name.tek") bytes), $out/$
 # The host's stream with the same flags: the firmware's must be the same bytes.
 w=${size%x*} h=${size#*x}
 "$lattice" render "$scene" --arith fixed --device tek4125 --width "$w" --height "$h" --histogram small --threads 1 \
-  "${sets[@]}" -q --stream "$out/$name.host.tek"
+  "${sets[@]}" "${pipeline[@]}" -q --stream "$out/$name.host.tek"
 if cmp -s "$out/$name.tek" "$out/$name.host.tek"; then
   echo "firmware.sh: identical: the $board stream equals the host's ($(stat -c %s "$out/$name.tek") bytes)" |
     tee "$out/$name.compare"

@@ -225,6 +225,61 @@ class QuarticLeaf final : public Primitive<T> {
   const Bounds<T>& bounds() const override { return bounds_; }
 
   void spans(const Ray<T>& worldRay, T tmin, T tmax, SpanList<T>& out) const override {
+    walk(worldRay, tmin, tmax, [&](const SpanAt& at) {
+      out.push_back({at.enterHit(*this), at.leaveHit(*this)});
+      return false;
+    });
+  }
+
+  // The three queries the defaults derive from spans(), with the same
+  // results bit for bit: the same spans in the same order, but a normal (a
+  // gradient, a matrix product and a square root) only for the crossing
+  // returned, none for a shadow ray.
+  bool firstHit(const Ray<T>& worldRay, T tmin, T tmax, Hit<T>& hit) const override {
+    bool found = false;
+    walk(worldRay, tmin, tmax, [&](const SpanAt& at) {
+      // firstCrossing's test on this span (render/shapes/primitive.hpp).
+      if (at.enterT > tmin && at.enterT < tmax) hit = at.enterHit(*this), found = true;
+      else if (at.leaveT > tmin && at.leaveT < tmax) hit = at.leaveHit(*this), found = true;
+      return found;
+    });
+    return found;
+  }
+
+  bool firstEnter(const Ray<T>& worldRay, T tmin, T tmax, Hit<T>& hit, bool& inside) const override {
+    bool found = false;
+    walk(worldRay, tmin, tmax, [&](const SpanAt& at) {
+      // Primitive::firstEnter's test on the first span.
+      if (at.enterT <= tmin) inside = true;
+      else if (at.enterT < tmax) hit = at.enterHit(*this), found = true;
+      return true;
+    });
+    return found;
+  }
+
+  bool anyHit(const Ray<T>& worldRay, T tmin, T tmax) const override {
+    bool found = false;
+    walk(worldRay, tmin, tmax, [&](const SpanAt& at) {
+      found = (at.enterT > tmin && at.enterT < tmax) || (at.leaveT > tmin && at.leaveT < tmax);
+      return found;
+    });
+    return found;
+  }
+
+ private:
+  // A span as walk() finds it: its ends' t, and what their hits need.
+  struct SpanAt {
+    const Vec3<T>& base;
+    const Vec3<T>& u;
+    T enterS, leaveS, enterT, leaveT;  // an infinite s has no normal (hitAt)
+    Hit<T> enterHit(const QuarticLeaf& leaf) const { return leaf.hitAt(base, u, enterS, enterT, T(-1)); }
+    Hit<T> leaveHit(const QuarticLeaf& leaf) const { return leaf.hitAt(base, u, leaveS, leaveT, T(1)); }
+  };
+
+  // Calls visit(SpanAt) for each span spans() gives, in order, until visit
+  // returns true.
+  template <typename Visit>
+  void walk(const Ray<T>& worldRay, T tmin, T tmax, Visit&& visit) const {
     T c0, c1;
     if (!bounds_.clip(worldRay, tmin, tmax, c0, c1)) return;
     // The ray in object space as base + u s, u unit, re-based near the pivot.
@@ -249,9 +304,8 @@ class QuarticLeaf final : public Primitive<T> {
     if (degree < 0) return;  // the ray lies in the surface: no volume crossed
     if (degree == 0) {
       if (coeff[0] < T(0)) {
-        Hit<T> enter{-std::numeric_limits<T>::infinity(), Vec3<T>(0), material_};
-        Hit<T> leave{std::numeric_limits<T>::infinity(), Vec3<T>(0), material_};
-        out.push_back({enter, leave});
+        const T inf = std::numeric_limits<T>::infinity();
+        visit(SpanAt{base, u, -inf, inf, -inf, inf});
       }
       return;
     }
@@ -274,13 +328,12 @@ class QuarticLeaf final : public Primitive<T> {
       bool next = (r + 1 < n) ? evaluatePolynomial<T>(poly, (roots[r] + roots[r + 1]) * T(0.5)) < T(0)
                               : coeff[degree] < T(0);
       if (!inside && next) enterS = roots[r];
-      if (inside && !next) emit(base, u, t0, len, enterS, roots[r], tmin, tmax, out);
+      if (inside && !next && emit(base, u, t0, len, enterS, roots[r], tmin, tmax, visit)) return;
       inside = next;
     }
-    if (inside) emit(base, u, t0, len, enterS, std::numeric_limits<T>::infinity(), tmin, tmax, out);
+    if (inside) emit(base, u, t0, len, enterS, std::numeric_limits<T>::infinity(), tmin, tmax, visit);
   }
 
- private:
   // Converts a double box to T, rounding outwards so it still contains the
   // solid (and saturating to +-inf instead of an undefined out-of-range cast).
   static Bounds<T> toScalarOutward(const Bounds<double>& b) {
@@ -338,16 +391,16 @@ class QuarticLeaf final : public Primitive<T> {
 
   T sToT(T s, T len) const { return arithmetic_.sToT(s, len); }
 
-  // `facing` is -1 for an enter and +1 for a leave: the side a normal must
-  // face when the gradient vanishes.
-  Hit<T> hitAt(const Vec3<T>& base, const Vec3<T>& u, T t0, T len, T s, T facing) const {
+  // The t of a crossing at s (s itself when it is not finite).
+  T tAt(T t0, T len, T s) const { return finite(s) ? t0 + sToT(s, len) : s; }
+
+  // The hit at s whose t is tAt(s). `facing` is -1 for an enter and +1 for a
+  // leave: the side a normal must face when the gradient vanishes.
+  Hit<T> hitAt(const Vec3<T>& base, const Vec3<T>& u, T s, T t, T facing) const {
     Hit<T> h;
     h.material = material_;
-    if (!finite(s)) {
-      h.t = s;
-      return h;
-    }
-    h.t = t0 + sToT(s, len);
+    h.t = t;
+    if (!finite(s)) return h;
     Vec3<T> g = gradientTerms(terms_, base + u * s);
     Vec3<T> n = normalMatrix_ * g;
     T nl = lattice::length(n);
@@ -361,13 +414,15 @@ class QuarticLeaf final : public Primitive<T> {
     return h;
   }
 
-  void emit(const Vec3<T>& base, const Vec3<T>& u, T t0, T len, T s0, T s1, T tmin, T tmax, SpanList<T>& out) const {
-    if (!(s1 > s0)) return;  // a tangent touch encloses no volume
-    Hit<T> enter = hitAt(base, u, t0, len, s0, T(-1));
-    Hit<T> leave = hitAt(base, u, t0, len, s1, T(1));
-    if (!(leave.t > tmin && enter.t < tmax)) return;
-    if (!(leave.t > enter.t)) return;
-    out.push_back({enter, leave});
+  // The span (s0, s1) to visit() when spans() keeps it; true when visit()
+  // asks to stop.
+  template <typename Visit>
+  bool emit(const Vec3<T>& base, const Vec3<T>& u, T t0, T len, T s0, T s1, T tmin, T tmax, Visit& visit) const {
+    if (!(s1 > s0)) return false;  // a tangent touch encloses no volume
+    const T enterT = tAt(t0, len, s0), leaveT = tAt(t0, len, s1);
+    if (!(leaveT > tmin && enterT < tmax)) return false;
+    if (!(leaveT > enterT)) return false;
+    return visit(SpanAt{base, u, s0, s1, enterT, leaveT});
   }
 
   std::vector<Term<T>> terms_;
