@@ -9,7 +9,9 @@
 # fresh machine sees. With --rev REV the same is done on a checkout of REV (a
 # temporary git worktree) in turn with the working tree, A B A B ..., so a
 # comparison holds when the machine's speed drifts. Prints each build's wall
-# seconds, the median per contender and target, and the load average.
+# and CPU seconds (user + system of the configure and the build, from GNU
+# time: on a shared machine the CPU figure moves far less with the load than
+# the wall one), the medians per contender and target, and the load average.
 source "$(dirname "$0")/lib.sh"
 cd "$root"
 runs=1 rev="" jobs=$(nproc) targets="lattice all"
@@ -28,33 +30,37 @@ contenders=("$root")
 generator=()
 command -v ninja >/dev/null && generator=(-G Ninja)
 
-# One clean configure + build of TARGET from SOURCE; prints the wall seconds.
+# One clean configure + build of TARGET from SOURCE; prints "WALL CPU" seconds.
 build_once() {
-  local source=$1 target=$2 dir=$work/build start
+  local source=$1 target=$2 dir=$work/build
   rm -rf "$dir"
-  start=$(date +%s.%N)
-  CCACHE_DISABLE=1 cmake -S "$source" -B "$dir" -DCMAKE_BUILD_TYPE=Release -DLATTICE_WERROR=ON \
-    "${generator[@]}" >/dev/null
-  CCACHE_DISABLE=1 cmake --build "$dir" -j "$jobs" --target "$target" >"$work/log" 2>&1 ||
+  /usr/bin/time -f '%e %U %S' -o "$work/time" bash -c '
+    CCACHE_DISABLE=1 cmake -S "$1" -B "$2" -DCMAKE_BUILD_TYPE=Release -DLATTICE_WERROR=ON "${@:5}" >/dev/null &&
+    CCACHE_DISABLE=1 cmake --build "$2" -j "$3" --target "$4"' _ "$source" "$dir" "$jobs" "$target" \
+    "${generator[@]}" >"$work/log" 2>&1 ||
     { tail -20 "$work/log" >&2; bench_die "the build of $target in $source failed" 1; }
-  awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }'
+  awk '{ printf "%.1f %.1f", $1, $2 + $3 }' "$work/time"
 }
 
-declare -A times
+bench_need_time
+declare -A times cpus
 echo "$bench_name: $runs run(s), $jobs jobs, generator ${generator[*]:-Unix Makefiles}, load $(bench_loadavg)"
 for ((run = 1; run <= runs; run++)); do
   for source in "${contenders[@]}"; do
     name=working-tree
     [[ $source == "$root" ]] || name=$rev
     for target in $targets; do
-      seconds=$(build_once "$source" "$target")
+      result=$(build_once "$source" "$target") || exit 1
+      read -r seconds cpu <<<"$result"
       times[$name/$target]+="$seconds "
-      printf '  run %d  %-14s %-8s %7.1f s\n' "$run" "$name" "$target" "$seconds"
+      cpus[$name/$target]+="$cpu "
+      printf '  run %d  %-14s %-8s %7.1f s wall %7.1f s CPU\n' "$run" "$name" "$target" "$seconds" "$cpu"
     done
   done
 done
 echo "medians (load now $(bench_loadavg)):"
 for key in "${!times[@]}"; do
   # shellcheck disable=SC2086 # the list is whitespace-separated numbers
-  printf '  %-24s %7s s\n' "$key" "$(bench_median -f '%.1f' ${times[$key]})"
+  printf '  %-24s %7s s wall %7s s CPU\n' "$key" "$(bench_median -f '%.1f' ${times[$key]})" \
+    "$(bench_median -f '%.1f' ${cpus[$key]})"
 done | sort
