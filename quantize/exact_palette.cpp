@@ -13,6 +13,15 @@ namespace {
 constexpr std::uint32_t kSlots = 512;  // a power of two, twice the most colours asked
 constexpr std::uint32_t kEmpty = 0xFFFFFFFFu;
 
+// The colours' positions by falling count, ties in the order met (a stable
+// sort keeps it): the palette order both paths give.
+std::vector<std::uint16_t> byFallingCount(const std::vector<std::uint64_t>& counts) {
+  std::vector<std::uint16_t> order(counts.size());
+  std::iota(order.begin(), order.end(), std::uint16_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::uint16_t a, std::uint16_t b) { return counts[a] > counts[b]; });
+  return order;
+}
+
 }  // namespace
 
 std::optional<IndexedImage> exactPalette(const RgbImage& picture, int maxColors) {
@@ -46,10 +55,7 @@ std::optional<IndexedImage> exactPalette(const RgbImage& picture, int maxColors)
     first[i] = lastColor;
     ++counts[lastColor];
   }
-  // Falling count, ties in the order met (a stable sort keeps it).
-  std::vector<std::uint16_t> order(colors.size());
-  std::iota(order.begin(), order.end(), std::uint16_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::uint16_t a, std::uint16_t b) { return counts[a] > counts[b]; });
+  const std::vector<std::uint16_t> order = byFallingCount(counts);
   std::vector<PaletteIndex> indexOf(colors.size());
   IndexedImage out(picture.width, picture.height, colors.size());
   for (std::size_t k = 0; k < order.size(); ++k) {
@@ -107,10 +113,7 @@ std::optional<IndexedImage> exactPalette(const IndexedImage& picture, int maxCol
     counts[j] += indexCount[k];
     colorOf[k] = static_cast<std::uint16_t>(j);
   }
-  // Falling count, ties in the order met, as the RGB path.
-  std::vector<std::uint16_t> order(colors.size());
-  std::iota(order.begin(), order.end(), std::uint16_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::uint16_t a, std::uint16_t b) { return counts[a] > counts[b]; });
+  const std::vector<std::uint16_t> order = byFallingCount(counts);
   std::vector<PaletteIndex> rank(colors.size());
   IndexedImage out(picture.width, picture.height, colors.size());
   for (std::size_t r = 0; r < order.size(); ++r) {
