@@ -80,7 +80,7 @@ TEST_CASE("fixed point: the lattice leaf's per-pixel code has no floating point"
                                                 "lht::decodePayloadFraction(",
                                                 "lht::decodeOctahedral(", "lht::CompressedTable::findPayload("};
   const testing::FixedPointScan scan =
-      testing::scanFixedPointCode(std::string(LATTICE_BINARY_DIR) + "/lht/liblattice_lht.a", integerPath);
+      testing::scanFixedPointCode(LATTICE_BINARY_DIR "/lht/liblattice_lht.a", integerPath);
   const auto seen = [&](const std::string& name) {
     return std::any_of(scan.fixedFunctions.begin(), scan.fixedFunctions.end(),
                        [&](const std::string& f) { return f.find(name) != std::string::npos; });
