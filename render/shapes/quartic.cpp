@@ -206,17 +206,12 @@ inline std::optional<RevolutionForm> revolutionForm(const QuarticPolynomial& f) 
   const auto at = [&](int i, int j, int k) { return f.a[static_cast<std::size_t>(QuarticPolynomial::index(i, j, k))]; };
   const RevolutionForm r{at(4, 0, 0), at(2, 0, 0), at(0, 0, 2), at(0, 0, 0)};
   if (r.a == 0.0) return std::nullopt;
-  const double expected[][4] = {{4, 0, 0, r.a}, {0, 4, 0, r.a}, {0, 0, 4, r.a}, {2, 2, 0, 2 * r.a}, {2, 0, 2, 2 * r.a},
-                                {0, 2, 2, 2 * r.a}, {2, 0, 0, r.b}, {0, 2, 0, r.b}, {0, 0, 2, r.c}, {0, 0, 0, r.d}};
-  int matched = 0;
-  for (const auto& e : expected) {
-    if (at(int(e[0]), int(e[1]), int(e[2])) != e[3]) return std::nullopt;
-    ++matched;
-  }
-  int nonZero = 0;
-  for (double v : f.a) nonZero += v != 0.0;
-  const int zeroExpected = (r.b == 0.0) * 2 + (r.c == 0.0) + (r.d == 0.0);
-  if (nonZero != matched - zeroExpected) return std::nullopt;  // another term is present
+  // The form rebuilt from a, b, c, d must be f, every one of the 35 terms.
+  QuarticPolynomial form;
+  form.addTerm(r.a, 4, 0, 0).addTerm(r.a, 0, 4, 0).addTerm(r.a, 0, 0, 4);
+  form.addTerm(2 * r.a, 2, 2, 0).addTerm(2 * r.a, 2, 0, 2).addTerm(2 * r.a, 0, 2, 2);
+  form.addTerm(r.b, 2, 0, 0).addTerm(r.b, 0, 2, 0).addTerm(r.c, 0, 0, 2).addTerm(r.d, 0, 0, 0);
+  if (form.a != f.a) return std::nullopt;
   return r;
 }
 
