@@ -3,12 +3,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 
 #include "devices/work_budget.hpp"
 #include "foundation/error.hpp"
+#include "foundation/number_text.hpp"
+#include "app/output_check.hpp"
 #include "io/png.hpp"
 
 namespace lattice::app {
@@ -19,25 +20,36 @@ std::vector<StreamPoint> parseStreamPoints(const std::string& text, std::uint64_
   while (from <= text.size()) {
     const std::size_t comma = std::min(text.find(',', from), text.size());
     const std::string item = text.substr(from, comma - from);
+    if (points.size() == kMaxStreamPoints)
+      throw Error(ErrorKind::Usage, fmt::format("--at: more than {} points; each writes a full screen, so choose "
+                                                "at most {}, e.g. --at 10%,25%,50%",
+                                                kMaxStreamPoints, kMaxStreamPoints));
     const bool percent = !item.empty() && item.back() == '%';
     const std::string number = percent ? item.substr(0, item.size() - 1) : item;
-    double value = -1;
-    const auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
-    if (number.empty() || ec != std::errc() || end != number.data() + number.size() || value < 0 ||
-        (percent && value > 100) || (!percent && value != std::floor(value)))
-      throw Error(ErrorKind::Usage, fmt::format("--at {}: \"{}\" is neither a percentage of the stream (0%..100%) "
-                                                "nor a whole byte offset; e.g. --at 10%,25%,50% or --at 4096,20000",
-                                                text, item));
-    if (percent)
+    const std::string what = fmt::format("--at {} (a percentage 0%..100% or a whole byte offset)",
+                                         item.empty() ? "''" : item);
+    if (percent) {
+      const double value = parseNumberText(what, number, {0, 100});
       points.push_back({static_cast<std::uint64_t>(std::llround(value / 100.0 * double(total))),
                         fmt::format("{:g}pct", value)});
-    else
+    } else {
+      const double value = parseNumberText(what, number, {0, double(kMaxStreamBytes), true});
       points.push_back({std::min(total, static_cast<std::uint64_t>(value)), fmt::format("{:.0f}B", value)});
+    }
     from = comma + 1;
   }
   std::stable_sort(points.begin(), points.end(),
                    [](const StreamPoint& a, const StreamPoint& b) { return a.offset < b.offset; });
   return points;
+}
+
+std::vector<std::string> checkStreamPointOutputs(const std::string& text, const std::string& output, bool force) {
+  std::vector<std::string> paths;
+  for (const StreamPoint& p : parseStreamPoints(text, 0)) {
+    paths.push_back(pointPngPath(output, p.tag));
+    checkOutputPath(paths.back(), "--at", force);
+  }
+  return paths;
 }
 
 std::string pointPngPath(const std::string& output, const std::string& tag) {

@@ -4,6 +4,7 @@
 // the terminal sees that many seconds in (bytes = seconds * baud / 10 at 8N1).
 // Each point's screen is written beside the output: OUT.png gives
 // OUT-at25pct.png and OUT-at4096B.png; the whole stream's screen goes to OUT.png.
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -18,9 +19,20 @@ struct StreamPoint {
   std::string tag;           // "25pct", "4096B": names the file
 };
 
+// At most this many points: each is a full-screen PNG.
+inline constexpr std::size_t kMaxStreamPoints = 32;
+
 // "10%,25%" and/or "4096,20000" against a stream of `total` bytes, in
-// stream order. Error(Usage) names a bad item and the forms allowed.
+// stream order. Every item is read by the one number parser
+// (foundation/number_text.hpp): a percentage 0..100, a byte offset a whole
+// number within kMaxStreamBytes (past the stream's end it is the end).
+// Error(Usage) names the bad item, the range and the forms allowed.
 std::vector<StreamPoint> parseStreamPoints(const std::string& text, std::uint64_t total);
+
+// The files the points of `text` will be written to (any stream length gives
+// the same names), each checked as -o is (app/output_check.hpp): called
+// before the stream is read, so a bad --at costs nothing.
+std::vector<std::string> checkStreamPointOutputs(const std::string& text, const std::string& output, bool force);
 
 // OUT.png and "25pct" -> OUT-at25pct.png.
 std::string pointPngPath(const std::string& output, const std::string& tag);

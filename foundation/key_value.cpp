@@ -2,11 +2,10 @@
 
 #include <fmt/format.h>
 
-#include <charconv>
-#include <cmath>
 #include <string>
 
 #include "foundation/error.hpp"
+#include "foundation/number_text.hpp"
 
 namespace lattice {
 
@@ -17,28 +16,14 @@ KeyValue splitKeyValue(std::string_view context, std::string_view text, std::str
   return {text.substr(0, eq), text.substr(eq + 1)};
 }
 
+// Both go through the one number parser (foundation/number_text.hpp); the
+// profile's validate() then checks the value against its own range.
 int parseIntSetting(std::string_view context, const KeyValue& kv) {
-  int v = 0;
-  auto [end, ec] = std::from_chars(kv.value.data(), kv.value.data() + kv.value.size(), v);
-  if (kv.value.empty() || ec != std::errc() || end != kv.value.data() + kv.value.size())
-    throw Error(ErrorKind::Usage,
-                fmt::format("{}: '{}={}' needs a whole number, e.g. {}=8", context, kv.key, kv.value, kv.key));
-  return v;
+  return parseIntText(fmt::format("{}: {}", context, kv.key), kv.value, {});
 }
 
 double parseNumberSetting(std::string_view context, const KeyValue& kv) {
-  std::string text(kv.value);
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (text.empty() || used != text.size() || !std::isfinite(v))
-    throw Error(ErrorKind::Usage,
-                fmt::format("{}: '{}={}' needs a finite number, e.g. {}=400", context, kv.key, kv.value, kv.key));
-  return v;
+  return parseNumberText(fmt::format("{}: {}", context, kv.key), kv.value, {});
 }
 
 bool parseSwitchSetting(std::string_view context, const KeyValue& kv) {

@@ -47,7 +47,7 @@ std::shared_ptr<LatticeTables::Slot> LatticeTables::slotOf(const LatticeDefiniti
           std::make_shared<const LhtFile>(readLhtFile(*cache, lattice->hashFor(form), form, lattice->formUnder(settings_)));
     } else {
       auto built = std::make_shared<const LhtFile>(buildLatticeTable(*lattice, settings_).lht);
-      if (cache && built->precision() == form) writeLhtFile(*cache, *built);
+      if (cache && built->precision() == form) writeLhtFile(*cache, *built, AtomicFile::Landing::Now);
       slot->table = std::move(built);
     }
     if (settings_.stats) slot->stats = settings_.stats->add(lattice->name, slot->table);

@@ -5,6 +5,8 @@
 
 #include <vector>
 
+#include "app/cli/number_flags.hpp"
+
 #include "foundation/error.hpp"
 
 namespace lattice::app {
@@ -14,7 +16,7 @@ void addPipelineOptions(CLI::App* cmd, PipelineArgs& args, const std::string& gr
   cmd->add_option("-k,--colors", args.colors,
                   "Palette size K, 1..256 (fewer if the image has fewer colours or the device shows fewer)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 256));
+      ->check(numberIn({1, 256, true}));
   cmd->add_option("--dither", args.dither, "none | fs (Floyd-Steinberg, serpentine) | bayer (ordered 8x8)")
       ->check(CLI::IsMember(nameList(quantize::kDitherNames)))
       ->capture_default_str();
@@ -23,13 +25,14 @@ void addPipelineOptions(CLI::App* cmd, PipelineArgs& args, const std::string& gr
       ->capture_default_str();
   cmd->add_option("--refine", args.refine, "k-means refinement iterations after the cut, 0..100")
       ->capture_default_str()
-      ->check(CLI::Range(0, 100));
+      ->check(numberIn({0, 100, true}));
   cmd->add_option("--mode", args.mode,
                   "passes (render twice: least memory) | frame (keep the 18-bit frame: fastest) | sample "
                   "(histogram of a subsampled pre-pass)")
       ->check(CLI::IsMember(nameList(quantize::kPipelineModeNames)))
       ->capture_default_str();
-  cmd->add_option("--sample", args.sample, "sample mode: histogram from every Nth row and column (default 4)");
+  cmd->add_option("--sample", args.sample, "sample mode: histogram from every Nth row and column (default 4)")
+      ->check(numberIn({1, 16384, true}));
   cmd->add_option("--histogram", args.histogram,
                   "full (a counter per 18-bit colour, 1 MiB) | small (only the colours present, at most 64 KiB and "
                   "6144 colours: the firmware's form, docs/firmware.md); the same palette either way")

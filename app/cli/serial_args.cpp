@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "app/cli/number_flags.hpp"
+
 namespace lattice::app {
 
 void addSerialOptions(CLI::App* cmd, io::SerialOptions& options, bool portRequired, const std::string& baudDefault) {
@@ -13,7 +15,7 @@ void addSerialOptions(CLI::App* cmd, io::SerialOptions& options, bool portRequir
                                "adapter (`lattice ports` lists them)");
   if (portRequired) port->required();
   auto* baud = cmd->add_option("--baud", options.baud, "Line speed; match the terminal's setup (9600, 19200, 38400...)")
-                   ->check(CLI::Range(50, 4000000));
+                   ->check(numberIn({50, 4000000, true}));
   if (baudDefault.empty())
     baud->capture_default_str();
   else
@@ -24,18 +26,18 @@ void addSerialOptions(CLI::App* cmd, io::SerialOptions& options, bool portRequir
       ->check(CLI::IsMember(nameList(io::kFlowControlNames)));
   cmd->add_option("--data-bits", options.dataBits, "Data bits per character: 7 or 8")
       ->capture_default_str()
-      ->check(CLI::IsMember({7, 8}));
+      ->check(numberIn({7, 8, true}));
   cmd->add_option_function<std::string>(
          "--parity", [&options](const std::string& text) { options.parity = io::parseParity(text); },
          "Parity: none, even or odd [none]")
       ->check(CLI::IsMember(nameList(io::kParityNames)));
   cmd->add_option("--stop-bits", options.stopBits, "Stop bits: 1 or 2")
       ->capture_default_str()
-      ->check(CLI::IsMember({1, 2}));
+      ->check(numberIn({1, 2, true}));
   cmd->add_option("--stall-timeout", options.stallTimeoutSeconds,
                   "Give up (exit 6, resumable) when flow control holds the line this many seconds")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(numberIn({0.001, 1e6}));
   cmd->add_flag("--pace", options.pace,
                 "Limit the rate to the baud rate ourselves, for lines that do not (a pty, a network bridge)");
   const std::vector<CLI::Option*> added = cmd->get_options();

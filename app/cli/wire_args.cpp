@@ -2,6 +2,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/cli/number_flags.hpp"
+
 #include "foundation/system/resident_memory.hpp"
 #include "foundation/error.hpp"
 
@@ -12,13 +14,13 @@ void addWireOptions(CLI::App* cmd, WireArgs& args) {
   cmd->add_option("--rd-lambda", args.lambda,
                   "Devices: rate-distortion runs, squared 8-bit RGB error a byte is worth (0: lossless, the "
                   "stream as always; 1000s give fewer, longer runs; docs/wire.md)")
-      ->check(CLI::Range(0.0, 1e12))
+      ->check(numberIn({0.0, 1e12}))
       ->group(group);
   cmd->add_option("--wire-seconds", args.seconds,
                   "Devices: send the most accurate picture whose stream takes at most S seconds at --baud (default: "
                   "the profile's); searches palette size, dithering and --rd-lambda with the real encoder; exits 8 "
                   "with the smallest stream if nothing fits")
-      ->check(CLI::Range(0.001, 1e9))
+      ->check(numberIn({0.001, 1e9}))
       ->group(group);
   cmd->add_option("--wire-bytes", args.bytes, "Devices: as --wire-seconds, a budget of N bytes (57600, 56K)")
       ->group(group);

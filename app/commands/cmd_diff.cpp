@@ -10,6 +10,7 @@
 #include <string>
 
 #include "app/commands/commands.hpp"
+#include "app/cli/number_flags.hpp"
 #include "io/image_metrics.hpp"
 #include "io/png.hpp"
 #include "foundation/error.hpp"
@@ -61,8 +62,10 @@ void addDiff(CLI::App& root) {
   cmd->add_option("a", o->a, "First PNG (e.g. the lattice render)")->required();
   cmd->add_option("b", o->b, "Second PNG (e.g. the --full render)")->required();
   cmd->add_option("-o,--output", o->output, "Write the amplified difference image here (PNG, atomically)");
-  cmd->add_option("--block", o->block, "Block size N for the worst/mean block figure (default 8)");
-  cmd->add_option("--gain", o->gain, "Multiply |A - B| by this in the difference image (default 8)");
+  cmd->add_option("--block", o->block, "Block size N for the worst/mean block figure (default 8)")
+      ->check(lattice::app::numberIn({1, 16384, true}));
+  cmd->add_option("--gain", o->gain, "Multiply |A - B| by this in the difference image (default 8)")
+      ->check(lattice::app::numberIn({0, 1e6}));
   cmd->footer(
       "Errors are per channel on the 0..255 scale; PSNR is against a peak of 255. A block's figure is the\n"
       "mean |A - B| over its pixels and channels, so one bad region shows even when the whole-image RMS is small.\n"

@@ -33,9 +33,11 @@ struct EmulateOptions {
   std::string at;  // --at: screens part-way (app/stream_points.hpp)
 };
 
-void runEmulate(const EmulateOptions& o) {
+void runEmulate(const EmulateOptions& o, bool force) {
   using lattice::Error;
   using lattice::ErrorKind;
+  // The --at items and the files they name are checked before anything is read.
+  if (!o.at.empty()) (void)lattice::app::checkStreamPointOutputs(o.at, o.output, force);
   const lattice::devices::Device device = lattice::devices::makeDevice(o.device, o.settings);
   std::unique_ptr<lattice::StreamDecoder> decoder = device.makeEmulator();
   // Refuses a PNG, a scene, an empty file... before it becomes a picture of noise.
@@ -86,7 +88,8 @@ void addEmulate(CLI::App& root) {
                 "an empty file or another device's stream is refused with exit 3)");
   cmd->add_option("--at", o->at,
                   "Also write the screen part-way, at percentages of the stream or byte offsets (10%,25%,50% or "
-                  "4096,20000): OUT-at25pct.png, OUT-at4096B.png beside OUT.png");
+                  "4096,20000), at most 32: OUT-at25pct.png, OUT-at4096B.png beside OUT.png, written with OUT.png "
+                  "only if the whole command succeeds");
   cmd->footer(
       "The stream is checked first: a file that does not look like the device's stream (a PNG, a scene, an\n"
       "empty file, another device's stream) is refused with exit 3 saying what it is; --raw decodes it anyway.\n"
@@ -94,7 +97,8 @@ void addEmulate(CLI::App& root) {
       "next command) and counted. Streams over 256 MiB, or asking for more than 2^30 pixels of drawing, are\n"
       "refused with exit 3 (docs/limits.md). Example:\n"
       "  lattice emulate --device tek4125 fuzzy.tek -o fuzzy.png --report");
-  cmd->callback([o] { runEmulate(*o); });
+  // --force is added to every command with outputs (app/output_check.hpp) after this runs.
+  cmd->callback([o, cmd] { runEmulate(*o, cmd->count("--force") > 0); });
 }
 
 }  // namespace lattice::app

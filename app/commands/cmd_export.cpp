@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/commands/commands.hpp"
+#include "app/cli/number_flags.hpp"
 #include "exporter/pov_export.hpp"
 
 namespace {
@@ -42,9 +43,9 @@ void addExport(CLI::App& root) {
   pov->add_option("scene", o->scene, "Scene file (TOML)")->required();
   pov->add_option("-o,--output", o->output, "The .pov file to write (atomically)")->required();
   pov->add_option("--width", o->pov.width, "Image width the camera is written for (default: the scene's)")
-      ->check(CLI::Range(1, 65535));
+      ->check(lattice::app::numberIn({1, 65535, true}));
   pov->add_option("--height", o->pov.height, "Image height the camera is written for (default: the scene's)")
-      ->check(CLI::Range(1, 65535));
+      ->check(lattice::app::numberIn({1, 65535, true}));
   pov->add_flag("--sphere-sweep", o->pov.sphereSweep,
                 "Polylines and capsules (lattice hair) as POV's sphere_sweep instead of spheres + cylinders");
   pov->add_flag("-q,--quiet", o->quiet, "Print nothing but notes and errors");

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/commands/commands.hpp"
+#include "app/cli/number_flags.hpp"
 #include "io/port_discovery.hpp"
 #include "io/usb_hotplug.hpp"
 #include "foundation/error.hpp"
@@ -100,7 +101,7 @@ void addPorts(CLI::App& root) {
   auto* wait = cmd->add_flag("--wait", args->wait,
                 "Wait until a USB-serial adapter is present (returns at once if one already is), then list");
   cmd->add_option("--timeout", args->timeout, "With --wait: give up after this many seconds (exit 5); default: wait for ever")
-      ->check(CLI::NonNegativeNumber)
+      ->check(lattice::app::numberIn({0, 1e6}))
       ->needs(wait);
   cmd->add_flag("--json", args->json, "Print a JSON array instead of text");
   cmd->callback([args] { runPorts(*args); });

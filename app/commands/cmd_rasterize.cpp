@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "app/commands/commands.hpp"
+#include "app/cli/number_flags.hpp"
 #include "foundation/error.hpp"
 #include "loader/table_build.hpp"
 
@@ -56,10 +57,13 @@ void addRasterize(CLI::App& root) {
   cmd->add_option("--scene", args->scene, "Scene file whose [[lattices]] entry to rasterize")->check(CLI::ExistingFile);
   cmd->add_option("--name", args->name, "Name of the [[lattices]] entry (with --scene)");
   cmd->add_option("--shape", args->shape, "sphere (centred) or capsule (axis along z from 0 to --length)");
-  cmd->add_option("--radius", args->radius, "Radius in lambda (default 0.5)");
-  cmd->add_option("--length", args->length, "Capsule axis length in lambda, caps excluded (default 10)");
+  // A lattice spans at most 255 cells a side (thesis 2.3: one byte a coordinate).
+  cmd->add_option("--radius", args->radius, "Radius in lambda (default 0.5)")->check(lattice::app::numberIn({1e-3, 127}));
+  cmd->add_option("--length", args->length, "Capsule axis length in lambda, caps excluded (default 10)")
+      ->check(lattice::app::numberIn({0, 253}));
   auto* oversample = cmd->add_option("--oversample", args->oversample,
-                                     "Lattice oversampling f_lat >= 1 (default 1, or the scene's)");
+                                     "Lattice oversampling f_lat >= 1 (default 1, or the scene's)")
+                        ->check(lattice::app::numberIn({1, 255}));
   cmd->add_option("-o,--output", args->output, "The .lht file to write (atomically)")->required();
   cmd->add_option("--precision", args->precision,
                   fmt::format("LHT entry precision: {} (default: the scene's `precision`, else thesis)",
@@ -70,7 +74,8 @@ void addRasterize(CLI::App& root) {
                               lhtFormChoices()));
   cmd->add_flag("--stats", args->stats,
                 "Print one line: pairs= hits= entries= bytes= precision= build_ms= form= (bytes: the table in memory)");
-  cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)");
+  cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
+      ->check(lattice::app::numberIn({1, 256, true}));
   cmd->callback([args, oversample] { runRasterize(*args, oversample->count() > 0); });
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "app/commands/commands.hpp"
+#include "app/cli/number_flags.hpp"
 #include "app/cli/pipeline_args.hpp"
 #include "app/render_job.hpp"
 #include "app/cli/serial_args.hpp"
@@ -95,13 +96,13 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
       ->capture_default_str()
       ->group(kOutputGroup);
   cmd.add_option("--width", j.width, "Image width in pixels (default: the scene's, fitted to the device)")
-      ->check(CLI::Range(1, 16384))
+      ->check(numberIn({1, 16384, true}))
       ->group(kPictureGroup);
   cmd.add_option("--height", j.height, "Image height in pixels (default: the scene's, fitted to the device)")
-      ->check(CLI::Range(1, 16384))
+      ->check(numberIn({1, 16384, true}))
       ->group(kPictureGroup);
   cmd.add_option("--threads", j.threads, "Threads for rendering and rasterizing (default: all cores); same image")
-      ->check(CLI::Range(1, 256))
+      ->check(numberIn({1, 256, true}))
       ->group(kPictureGroup);
   cmd.add_option("--arith", j.arithmetic,
                  fmt::format("Arithmetic of the whole per-pixel path: {} (fixed: Q31.32 integers, no FPU; "

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/commands/commands.hpp"
+#include "app/cli/number_flags.hpp"
 #include "app/output_check.hpp"
 #include "app/cli/serial_args.hpp"
 #include "app/virtual_terminal.hpp"
@@ -168,7 +169,7 @@ void addSend(CLI::App& root) {
   cmd->add_option("--set", args->settings,
                   "With --device: override a profile assumption, key=value (repeatable), as for render");
   cmd->add_option("--resume", args->resume, "Start at this byte offset, as printed by a failed send")
-      ->check(CLI::NonNegativeNumber);
+      ->check(lattice::app::numberIn({0, 9.0e15, true}));
   cmd->add_option("-o,--output", args->screen,
                   "With --port virtual:DEVICE: the PNG of the screen the virtual terminal drew (default "
                   "virtual-DEVICE.png)");

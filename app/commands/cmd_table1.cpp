@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "app/commands/commands.hpp"
+#include "app/cli/number_flags.hpp"
 #include "lht/raster/thesis_table1.hpp"
 
 namespace {
@@ -43,7 +44,8 @@ void addTable1(CLI::App& root) {
   auto quick = std::make_shared<bool>(false);
   auto threads = std::make_shared<unsigned>(0);
   cmd->add_flag("--quick", *quick, "Skip the rows with more than a million pairs");
-  cmd->add_option("--threads", *threads, "Worker threads (default: all cores)");
+  cmd->add_option("--threads", *threads, "Worker threads (default: all cores)")
+      ->check(lattice::app::numberIn({1, 256, true}));
   cmd->callback([=] { runTable1(*quick, *threads); });
 }
 

@@ -1,72 +1,7 @@
-// The `lattice` command. Subcommands live in app/commands/cmd_*.cpp; exit codes are
-// documented in docs/cli.md and defined by lattice::ErrorKind.
-#include <fmt/format.h>
+// The `lattice` command: everything it does is app/commands/run_lattice.hpp,
+// which the command-line fuzzer calls too. Subcommands live in
+// app/commands/cmd_*.cpp; exit codes are documented in docs/cli.md and
+// defined by lattice::ErrorKind.
+#include "app/commands/run_lattice.hpp"
 
-#include <CLI/CLI.hpp>
-#include <cstdio>
-#include <exception>
-#include <cstdint>
-#include <new>
-#include <span>
-#include <string_view>
-#include <string>
-#include <vector>
-
-#include "app/cli/cli_errors.hpp"
-#include "app/commands/commands.hpp"
-#include "app/cli/help_export.hpp"
-#include "app/output_check.hpp"
-#include "foundation/system/atomic_file.hpp"
-#include "foundation/error.hpp"
-
-int main(int argc, char** argv) {
-  // Named here, so usage lines say `lattice`, not the path it was run by.
-  CLI::App root{"lattice: three-dimensional texturing using lattices (Lewis 1988), rendered to\n"
-                "PNG, Tektronix 4125/4027 command streams and a simulated Apollo DN660.",
-                "lattice"};
-  root.set_version_flag("--version", LATTICE_VERSION);
-  root.require_subcommand(1);
-  root.footer("Run `lattice COMMAND --help` for a command's options. Exit codes: docs/cli.md.");
-  for (auto adder : lattice::app::kCommands) adder(root);
-  lattice::app::guardOutputs(root);
-  // The build's man page and completion (app/cli/help_export.hpp); hidden flags.
-  if (argc == 3 && (std::string_view(argv[1]) == "--generate-man" ||
-                    std::string_view(argv[1]) == "--generate-bash-completion")) {
-    try {
-      const std::string text = std::string_view(argv[1]) == "--generate-man"
-                                   ? lattice::app::manPage(root, LATTICE_VERSION)
-                                   : lattice::app::bashCompletion(root);
-      lattice::writeFileAtomically(argv[2], std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
-      return 0;
-    } catch (const lattice::Error& e) {
-      fmt::print(stderr, "lattice: error: {}\n", e.what());
-      return e.exitCode();
-    }
-  }
-
-  try {
-    root.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return root.exit(e);  // --help, --version
-    const std::vector<std::string> arguments(argv + 1, argv + argc);
-    fmt::print(stderr, "lattice: error: {}\n", lattice::app::describeParseError(root, e, arguments));
-    return static_cast<int>(lattice::ErrorKind::Usage);
-  } catch (const lattice::Error& e) {
-    std::fflush(stdout);
-    fmt::print(stderr, "lattice: error: {}\n", e.what());
-    return e.exitCode();
-  } catch (const std::bad_alloc&) {
-    // Memory runs out when an input asks for more than the machine (or a
-    // ulimit) gives: a property of the input, so exit 3, not a bug (70).
-    std::fflush(stdout);
-    fmt::print(stderr,
-               "lattice: error: out of memory: the input asks for more memory than is available (limits: "
-               "docs/limits.md; a smaller --width/--height or count, or more memory, may help)\n");
-    return static_cast<int>(lattice::ErrorKind::Input);
-  } catch (const std::exception& e) {
-    std::fflush(stdout);
-    fmt::print(stderr, "lattice: internal error: {}\n(please report this with the command line that caused it)\n", e.what());
-    return static_cast<int>(lattice::ErrorKind::Internal);
-  }
-  return 0;
-}
+int main(int argc, char** argv) { return lattice::app::runLattice(argc, argv); }

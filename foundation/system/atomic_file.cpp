@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "foundation/error.hpp"
+#include "foundation/system/output_transaction.hpp"
 #include "foundation/system/temp_file_registry.hpp"
 
 namespace lattice {
@@ -24,7 +25,7 @@ constexpr std::size_t kBufferSize = 1 << 16;
 
 }  // namespace
 
-AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
+AtomicFile::AtomicFile(std::filesystem::path target, Landing landing) : target_(std::move(target)), landing_(landing) {
   temp_ = target_;
   temp_ += fmt::format(".tmp-{}-{}", ::getpid(), tempCounter.fetch_add(1));
   registrySlot_ = TempFileRegistry::add(temp_.c_str());  // before the file exists: a signal never misses it
@@ -84,6 +85,10 @@ void AtomicFile::close() {
     failOutput(target_, "close");  // the destructor releases the registry slot
   }
   fd_ = -1;
+  if (landing_ == Landing::WithCommand && OutputTransaction::keep(temp_, target_, registrySlot_)) {
+    registrySlot_ = -1;  // the transaction renames or unlinks it, and releases the slot
+    return;
+  }
   const int renamed = ::rename(temp_.c_str(), target_.c_str());
   const int saved = errno;
   if (renamed != 0) ::unlink(temp_.c_str());
@@ -93,8 +98,9 @@ void AtomicFile::close() {
   if (renamed != 0) failOutput(target_, "rename the finished file into place");
 }
 
-void writeFileAtomically(const std::filesystem::path& target, std::span<const std::uint8_t> bytes) {
-  AtomicFile file(target);
+void writeFileAtomically(const std::filesystem::path& target, std::span<const std::uint8_t> bytes,
+                         AtomicFile::Landing landing) {
+  AtomicFile file(target, landing);
   file.write(bytes);
   file.close();
 }

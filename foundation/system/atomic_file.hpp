@@ -3,6 +3,8 @@
 // fsync'd, then renamed over it. A crash or an error leaves either the old file
 // or the new one, never half of one; SIGINT, SIGTERM and SIGHUP unlink the
 // temporary before the process dies (foundation/system/temp_file_registry.hpp).
+// While a command's OutputTransaction is open, close() leaves the rename to
+// it, so all of a command's outputs land together (output_transaction.hpp).
 #include <cstdint>
 #include <filesystem>
 #include <span>
@@ -14,7 +16,10 @@ namespace lattice {
 
 class AtomicFile final : public ByteSink {
  public:
-  explicit AtomicFile(std::filesystem::path target);
+  // WithCommand: renamed with the command's other outputs when it succeeds;
+  // Now: renamed at close() (a cache that is worth keeping whatever follows).
+  enum class Landing { WithCommand, Now };
+  explicit AtomicFile(std::filesystem::path target, Landing landing = Landing::WithCommand);
   ~AtomicFile() override;  // discards the temporary if close() was not reached
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
@@ -32,13 +37,15 @@ class AtomicFile final : public ByteSink {
   std::filesystem::path target_;
   std::filesystem::path temp_;
   int fd_ = -1;
+  Landing landing_;
   int registrySlot_ = -1;
   std::uint64_t written_ = 0;
   std::vector<std::uint8_t> buffer_;
 };
 
 // Whole-file helpers.
-void writeFileAtomically(const std::filesystem::path& target, std::span<const std::uint8_t> bytes);
+void writeFileAtomically(const std::filesystem::path& target, std::span<const std::uint8_t> bytes,
+                         AtomicFile::Landing landing = AtomicFile::Landing::WithCommand);
 std::vector<std::uint8_t> readWholeFile(const std::filesystem::path& path);  // Error(Input) if unreadable
 // The same for a file from outside, refused (Error(Input), naming `what` and
 // docs/limits.md) when it holds more than maxBytes: a regular file by its

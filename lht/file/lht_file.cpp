@@ -282,9 +282,9 @@ LhtFile parseLht(std::span<const std::uint8_t> bytes, const std::string& name,
                   expectedPrecision, expectedForm);
 }
 
-void writeLhtFile(const std::filesystem::path& path, const LhtFile& lht) {
+void writeLhtFile(const std::filesystem::path& path, const LhtFile& lht, AtomicFile::Landing landing) {
   const std::vector<std::uint8_t> bytes = serializeLht(lht);
-  writeFileAtomically(path, bytes);
+  writeFileAtomically(path, bytes, landing);
 }
 
 LhtFile readLhtFile(const std::filesystem::path& path, std::optional<std::uint64_t> expectedObjectHash,

@@ -55,6 +55,7 @@
 #include <vector>
 
 #include "foundation/fnv1a.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "lht/grid/lattice_box.hpp"
 #include "lht/table/table_forms.hpp"
 
@@ -110,7 +111,10 @@ LhtFile parseLht(std::span<const std::uint8_t> bytes, const std::string& name,
                  std::optional<LhtPrecision> expectedPrecision = std::nullopt,
                  std::optional<LhtForm> expectedForm = std::nullopt);
 
-void writeLhtFile(const std::filesystem::path& path, const LhtFile& lht);  // atomically
+// Atomically; a cache beside a scene says Landing::Now, so it is kept even
+// when the command that built it fails later (foundation/system/output_transaction.hpp).
+void writeLhtFile(const std::filesystem::path& path, const LhtFile& lht,
+                  AtomicFile::Landing landing = AtomicFile::Landing::WithCommand);
 LhtFile readLhtFile(const std::filesystem::path& path, std::optional<std::uint64_t> expectedObjectHash = std::nullopt,
                     std::optional<LhtPrecision> expectedPrecision = std::nullopt,
                     std::optional<LhtForm> expectedForm = std::nullopt);
