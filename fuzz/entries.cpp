@@ -151,7 +151,8 @@ const std::vector<Target>& targets() {
                                         {"tek4027", tek4027Decoder},
                                         {"tek4014", tek4014Decoder},
                                         {"png", pngReader},
-                                        {"sixel", sixelDecoder}};
+                                        {"sixel", sixelDecoder},
+                                        {"cli", commandLine}};
   return list;
 }
 

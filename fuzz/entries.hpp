@@ -23,6 +23,7 @@ void tek4027Decoder(std::span<const std::uint8_t> bytes);  // Tek 4027 command s
 void tek4014Decoder(std::span<const std::uint8_t> bytes);  // Tek 4010/4014 graphics stream -> screen
 void pngReader(std::span<const std::uint8_t> bytes);       // PNG file -> RgbImage
 void sixelDecoder(std::span<const std::uint8_t> bytes);    // DEC sixel stream -> screen
+void commandLine(std::span<const std::uint8_t> bytes);     // argv from the command table -> `lattice`, in-process
 
 struct Target {
   std::string_view name;  // the harness is fuzz_<name>; regressions live in fuzz/regressions/<name>/

@@ -5,13 +5,13 @@
 # .lht files rasterized by the `lattice` binary given (a sphere and a
 # capsule in each entry precision, and the sphere in the compressed form).
 #   scripts/fuzz-seeds.sh OUT_DIR LATTICE_BINARY
-# Writes OUT_DIR/<target>/ for scene, lht, tek4125, tek4027, tek4014, png, sixel. The
+# Writes OUT_DIR/<target>/ for scene, lht, tek4125, tek4027, tek4014, png, sixel, cli. The
 # regression inputs (fuzz/regressions/<target>/) join each corpus too.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:?usage: fuzz-seeds.sh OUT_DIR LATTICE_BINARY}
 lattice=${2:?usage: fuzz-seeds.sh OUT_DIR LATTICE_BINARY}
-for t in scene lht tek4125 tek4027 tek4014 png sixel; do
+for t in scene lht tek4125 tek4027 tek4014 png sixel cli; do
   rm -rf "${out:?}/$t"
   mkdir -p "$out/$t"
   if [[ -d fuzz/regressions/$t ]]; then cp fuzz/regressions/$t/* "$out/$t/" 2>/dev/null || true; fi
@@ -34,6 +34,13 @@ for precision in thesis wide compact; do
   "$lattice" rasterize --shape sphere --radius 1.5 --precision "$precision" --form compressed --threads 1 \
     -o "$out/lht/sphere-$precision-compressed.lht" >/dev/null
 done
-for t in scene lht tek4125 tek4027 tek4014 png sixel; do
+# The command line (fuzz/command_line.cpp): one program per command index,
+# each naming a few flags, with a golden 4125 stream as the input file.
+streams=(tests/golden/tek4125/*.tek)
+stream=${streams[0]}
+for i in $(seq 0 15); do
+  { printf "$(printf '\\x%02x' "$i")\x01\x02\x03\x04\x05\x06\x07\x08\xff"; head -c 400 "$stream"; } >"$out/cli/cmd-$i"
+done
+for t in scene lht tek4125 tek4027 tek4014 png sixel cli; do
   echo "fuzz-seeds: $t: $(find "$out/$t" -type f | wc -l) files, $(du -sk "$out/$t" | cut -f1) KiB"
 done

@@ -5,7 +5,7 @@
 # Builds the libFuzzer harnesses with clang 14, AddressSanitizer and UBSan
 # (-fno-sanitize-recover=all) in build-fuzz/, builds the seed corpora
 # (scripts/fuzz-seeds.sh), then runs each harness (or only TARGET: scene,
-# lht, tek4125, tek4027, tek4014, png, sixel) for SECONDS (default 30).
+# lht, tek4125, tek4027, tek4014, png, sixel, cli) for SECONDS (default 30).
 #
 # Method and tunables, per run:
 # * Inputs the run finds go to build-fuzz/corpus/<target>/ (kept between
@@ -29,8 +29,11 @@ cd "$(dirname "$0")/.."
 root=$(pwd)
 seconds=${1:-30}
 only=${2:-}
-all=(scene lht tek4125 tek4027 tek4014 png sixel)
-declare -A max_len=([scene]=8192 [lht]=65536 [tek4125]=16384 [tek4027]=16384 [tek4014]=16384 [png]=16384 [sixel]=16384)
+all=(scene lht tek4125 tek4027 tek4014 png sixel cli)
+# The command line prints a line for every refusal: its output is closed
+# (libFuzzer still reports findings on its own descriptor).
+declare -A extra=([cli]="-close_fd_mask=3")
+declare -A max_len=([scene]=8192 [lht]=65536 [tek4125]=16384 [tek4027]=16384 [tek4014]=16384 [png]=16384 [sixel]=16384 [cli]=512)
 if [[ -n $only && -z ${max_len[$only]:-} ]]; then
   echo "fuzz.sh: unknown target '$only' (known: ${all[*]})" >&2
   exit 2
@@ -67,7 +70,7 @@ run() {
   local log=build-fuzz/logs/$t.log
   local status=0
   nice -n "${FUZZ_NICE:-0}" "build-fuzz/fuzz/fuzz_$t" "build-fuzz/corpus/$t" "build-fuzz/seeds/$t" \
-    -dict="fuzz/dict/$t.dict" -max_len="${max_len[$t]}" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024 \
+    -dict="fuzz/dict/$t.dict" -max_len="${max_len[$t]}" -timeout=10 ${extra[$t]:-} -rss_limit_mb=2048 -malloc_limit_mb=1024 \
     -max_total_time="$seconds" -print_final_stats=1 -artifact_prefix="build-fuzz/artifacts/$t/" \
     >"$log" 2>&1 || status=$?
   local last

@@ -81,7 +81,20 @@ std::string describeParseError(const CLI::App& root, const CLI::ParseError& erro
   if (command == nullptr)
     return fmt::format("unknown command '{}'; {}the commands are {} (`lattice --help` describes them)", word,
                        suggestion(word, commands), commandList);
-  const std::string help = fmt::format("`lattice {} --help` lists its flags", command->get_name());
+  // A nested command (`export pov`) owns the flags after its name.
+  std::string path = command->get_name();
+  for (bool deeper = true; deeper && at + 1 < arguments.size() && !isFlag(arguments[at + 1]);) {
+    deeper = false;
+    for (const CLI::App* sub : command->get_subcommands([](const CLI::App*) { return true; }))
+      if (sub->check_name(arguments[at + 1])) {
+        command = sub;
+        path += " " + sub->get_name();
+        ++at;
+        deeper = true;
+        break;
+      }
+  }
+  const std::string help = fmt::format("`lattice {} --help` lists its flags", path);
   const std::vector<std::string> flags = flagNames(*command);
   bool flagsEnded = false;
   for (std::size_t i = at + 1; i < arguments.size(); ++i) {
@@ -92,9 +105,9 @@ std::string describeParseError(const CLI::App& root, const CLI::ParseError& erro
     // Short flags may be bundled (-qk 16); only whole unknown names are judged.
     if (flag.rfind("--", 0) != 0 && flag.size() > 2) continue;
     if (command->get_option_no_throw(flag) == nullptr)
-      return fmt::format("{}: unknown flag '{}'; {}{}", command->get_name(), flag, suggestion(flag, flags), help);
+      return fmt::format("{}: unknown flag '{}'; {}{}", path, flag, suggestion(flag, flags), help);
   }
-  return fmt::format("{}: {}; {}", command->get_name(), tidy(error.what()), help);
+  return fmt::format("{}: {}; {}", path, tidy(error.what()), help);
 }
 
 }  // namespace lattice::app

@@ -130,3 +130,14 @@ TEST_CASE("the render summary says 1 thread, not 1 threads", "[cli]") {
   CHECK(run.exitCode == 0);
   CHECK_THAT(run.stderrText, Catch::Contains("1 thread)"));
 }
+
+TEST_CASE("a nested command's flags are its own: export pov --width is known, --widht is not", "[cli]") {
+  const TempDir dir("nested-flags");
+  const auto bad = runLattice(fmt::format("export pov scenes/torus-floor.toml --width 0 -o '{}'", dir / "a.pov"));
+  CHECK(bad.exitCode == 2);
+  CHECK_THAT(bad.stderrText, Catch::StartsWith("lattice: error: export pov: --width: '0' is out of range") &&
+                                 Catch::Contains("`lattice export pov --help`"));
+  const auto typo = runLattice(fmt::format("export pov scenes/torus-floor.toml --widht 10 -o '{}'", dir / "a.pov"));
+  CHECK(typo.exitCode == 2);
+  CHECK_THAT(typo.stderrText, Catch::Contains("export pov: unknown flag '--widht'; did you mean '--width'?"));
+}

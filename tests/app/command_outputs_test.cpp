@@ -133,7 +133,7 @@ TEST_CASE("emulate --at: a read-only snapshot is refused without --force and rep
   CHECK(std::filesystem::file_size(dir / "o-at50pct.png") > 100);
 }
 
-TEST_CASE("--at refuses NaN, infinities, huge offsets and more than 32 points before reading", "[output][at]") {
+TEST_CASE("emulate --at refuses NaN, infinities, huge offsets and more than 32 points before reading", "[output][at]") {
   const lattice::testing::TempDir dir("at-numbers");
   write(dir / "t.tek", rectangleFills(1));
   for (const char* at : {"nan%", "inf", "1e300", "-1", "101%", "1.5", "%", "1%,,2%"}) {
