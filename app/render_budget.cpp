@@ -84,7 +84,8 @@ void checkPeakAgainst(std::uint64_t budget, const RenderEvents& events) {
                 fmt::format("the render finished and its outputs are written, but its resident memory peaked at {}, "
                             "over the --memory-budget of {}: the plan's estimate was short (please report it with "
                             "the scene)",
-                            formatBytes(resident->peak), formatBytes(budget)));
+                            formatBytes(resident->peak), formatBytes(budget)),
+                Outputs::Keep);
 }
 
 }  // namespace lattice::app

@@ -219,7 +219,8 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job) {
                 fmt::format("no setting fits {} bytes: the smallest stream is {} bytes ({:.1f} s at {} baud), written; "
                             "allow more time, or add --wire-shrink to send a smaller picture",
                             result.wire->limit, result.wire->choice.bytes, result.wire->choice.seconds,
-                            result.wire->baud));
+                            result.wire->baud),
+                Outputs::Keep);
   return result;
 }
 

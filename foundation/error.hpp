@@ -21,14 +21,24 @@ enum class ErrorKind : int {
   Internal = 70,    // a bug: an invariant of ours failed
 };
 
+// Whether a command's outputs land when it fails with this error
+// (foundation/system/output_transaction.hpp): almost never; Keep is for a
+// failure found after complete outputs were made, which the user still wants
+// (a render whose measured peak broke --memory-budget; the smallest stream
+// when nothing fits a wire budget).
+enum class Outputs { Discard, Keep };
+
 class Error : public std::runtime_error {
  public:
-  Error(ErrorKind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
+  Error(ErrorKind kind, const std::string& message, Outputs outputs = Outputs::Discard)
+      : std::runtime_error(message), kind_(kind), outputs_(outputs) {}
   ErrorKind kind() const noexcept { return kind_; }
   int exitCode() const noexcept { return static_cast<int>(kind_); }
+  bool keepsOutputs() const noexcept { return outputs_ == Outputs::Keep; }
 
  private:
   ErrorKind kind_;
+  Outputs outputs_;
 };
 
 // "path:line:col: message", the form editors and compilers use, so a user can

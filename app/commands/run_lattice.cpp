@@ -53,9 +53,9 @@ int runLattice(int argc, char** argv) {
     }
   }
 
+  // A command's outputs land together or not at all (foundation/system/output_transaction.hpp).
+  OutputTransaction outputs;
   try {
-    // A command's outputs land together or not at all (foundation/system/output_transaction.hpp).
-    OutputTransaction outputs;
     root.parse(argc, argv);
     outputs.commit();
   } catch (const CLI::ParseError& e) {
@@ -66,6 +66,14 @@ int runLattice(int argc, char** argv) {
   } catch (const Error& e) {
     std::fflush(stdout);
     fmt::print(stderr, "lattice: error: {}\n", e.what());
+    if (e.keepsOutputs()) {
+      try {
+        outputs.commit();
+      } catch (const Error& failed) {
+        fmt::print(stderr, "lattice: error: {}\n", failed.what());
+        return failed.exitCode();
+      }
+    }
     return e.exitCode();
   } catch (const std::bad_alloc&) {
     // Memory runs out when an input asks for more than the machine (or a
