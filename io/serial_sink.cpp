@@ -39,13 +39,23 @@ SerialSink::~SerialSink() {
 
 double SerialSink::now() const { return std::chrono::duration<double>(Clock::now() - epoch_).count(); }
 
-void SerialSink::fail(ErrorKind kind, const std::string& why) {
+std::uint64_t SerialSink::abandon() {
   // Read the queue before discarding it: what was queued never went out.
   std::size_t queued = std::min<std::uint64_t>(port_.outputQueued(), accepted_);
   port_.discardOutput();
   port_.close();
   closed_ = true;
-  std::uint64_t sent = accepted_ - queued;
+  return base_ + accepted_ - queued;
+}
+
+void SerialSink::checkStop() {
+  if (!stop_ || !stop_()) return;
+  const std::uint64_t resume = abandon();
+  throw SendStopped(base_ + accepted_, resume);
+}
+
+void SerialSink::fail(ErrorKind kind, const std::string& why) {
+  std::uint64_t sent = abandon() - base_;
   throw SerialFault(kind,
                     fmt::format("{}: {}; {} bytes of the stream went out (offset {} onward did not), resume from "
                                 "offset {}",
@@ -69,6 +79,7 @@ void SerialSink::write(std::span<const std::uint8_t> bytes) {
   if (closed_) throw Error(ErrorKind::Internal, fmt::format("{}: write after close", port_.path()));
   auto lastProgress = Clock::now();
   while (!bytes.empty()) {
+    checkStop();
     std::size_t chunk = bytes.size();
     if (pacer_) {
       std::size_t allowed = pacer_->available(now());
@@ -105,11 +116,13 @@ void SerialSink::write(std::span<const std::uint8_t> bytes) {
 
 void SerialSink::close() {
   if (closed_) return;
+  checkStop();
   // The queue must empty before tcdrain, which has no timeout: watch it
   // shrink, and call it a stall if it stops moving. A pty reports 0 at once.
   auto lastProgress = Clock::now();
   std::size_t queued = port_.outputQueued();
   while (queued > 0) {
+    checkStop();
     if (port_.waitWritable(kPollSliceMs) == SerialPort::Wait::HangUp)
       fail(ErrorKind::HangUp, "the line hung up while the last bytes were going out");
     std::size_t nowQueued = port_.outputQueued();

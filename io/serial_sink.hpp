@@ -11,8 +11,10 @@
 // invisible to the kernel and counted as sent; see docs/serial.md.)
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
+#include <stdexcept>
 
 #include "foundation/byte_sink.hpp"
 #include "io/rate_limiter.hpp"
@@ -30,6 +32,21 @@ class SerialFault : public Error {
       : Error(kind, message), accepted_(acceptedOffset), resume_(resumeOffset) {}
   std::uint64_t acceptedOffset() const noexcept { return accepted_; }
   // The offset of the first byte that did not go out: resend from here.
+  std::uint64_t resumeOffset() const noexcept { return resume_; }
+
+ private:
+  std::uint64_t accepted_;
+  std::uint64_t resume_;
+};
+
+// The send was stopped from outside (SerialSink::setStopCheck: Ctrl-C), not
+// by the line. As on a fault, the queue was read and then discarded and the
+// port closed first, so exactly resumeOffset() bytes of the stream went out.
+class SendStopped : public std::runtime_error {
+ public:
+  SendStopped(std::uint64_t acceptedOffset, std::uint64_t resumeOffset)
+      : std::runtime_error("the send was stopped"), accepted_(acceptedOffset), resume_(resumeOffset) {}
+  std::uint64_t acceptedOffset() const noexcept { return accepted_; }
   std::uint64_t resumeOffset() const noexcept { return resume_; }
 
  private:
@@ -56,19 +73,28 @@ class SerialSink final : public ByteSink {
   // Where this sink's first byte sits in the whole stream (a resumed send
   // starts at --resume N); errors report offsets in the whole stream.
   void setStreamOffset(std::uint64_t offset) { base_ = offset; }
+  // Asked before every slice of write() and of close()'s wait for the queue
+  // (at least every 50 ms while the line is held, and between the pacer's
+  // bursts of about 20 ms): true stops the send there, with SendStopped.
+  void setStopCheck(std::function<bool()> stop) { stop_ = std::move(stop); }
   const std::string& path() const { return port_.path(); }
   // The line's descriptor, for a driver that reads the terminal's answers
   // (the 4027's report pacing); the sink itself only writes.
   int fd() const { return port_.fd(); }
 
  private:
+  // Counts what went out (accepted minus queued), discards the rest and
+  // closes: the offset in the whole stream to resend from.
+  std::uint64_t abandon();
   [[noreturn]] void fail(ErrorKind kind, const std::string& why);
+  void checkStop();
   void stallCheck(std::chrono::steady_clock::time_point lastProgress, const char* where);
   double now() const;
 
   SerialPort port_;
   SerialOptions options_;
   std::optional<RateLimiter> pacer_;
+  std::function<bool()> stop_;
   std::uint64_t accepted_ = 0;
   std::uint64_t base_ = 0;
   bool closed_ = false;

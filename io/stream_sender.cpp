@@ -3,7 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
 
 #include "foundation/error.hpp"
 
@@ -25,7 +29,64 @@ std::string shellQuote(const std::string& text) {
   return quoted + "'";
 }
 
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
+constexpr std::size_t kStopCount = std::size(kStopSignals);
+// A lock-free atomic: safe to store from a handler (on whichever thread it
+// runs, the virtual terminal's too) and to read from the sending thread.
+std::atomic<int> caughtSignal{0};
+static_assert(std::atomic<int>::is_always_lock_free);
+// Written before the handlers are installed, read by them.
+struct sigaction previousAction[kStopCount];
+bool installed[kStopCount] = {};
+
+extern "C" void recordStopSignal(int signal) {
+  int none = 0;
+  if (caughtSignal.compare_exchange_strong(none, signal)) return;
+  // A second one: end now, by the action there was before. The signal is
+  // blocked while this handler runs, so the raise takes effect on return.
+  for (std::size_t i = 0; i < kStopCount; ++i)
+    if (kStopSignals[i] == signal) ::sigaction(signal, &previousAction[i], nullptr);
+  std::raise(signal);
+}
+
 }  // namespace
+
+SendSignals::SendSignals() {
+  caughtSignal.store(0);
+  for (std::size_t i = 0; i < kStopCount; ++i) {
+    installed[i] = false;
+    if (::sigaction(kStopSignals[i], nullptr, &previousAction[i]) != 0) continue;
+    if (!(previousAction[i].sa_flags & SA_SIGINFO) && previousAction[i].sa_handler == SIG_IGN) continue;
+    struct sigaction action {};
+    action.sa_handler = recordStopSignal;
+    sigemptyset(&action.sa_mask);
+    for (int other : kStopSignals) sigaddset(&action.sa_mask, other);  // one handler run at a time
+    // No SA_RESTART: a blocking call returns EINTR; the sink's loops check again anyway.
+    installed[i] = ::sigaction(kStopSignals[i], &action, nullptr) == 0;
+  }
+}
+
+SendSignals::~SendSignals() {
+  for (std::size_t i = 0; i < kStopCount; ++i)
+    if (installed[i]) ::sigaction(kStopSignals[i], &previousAction[i], nullptr);
+}
+
+int SendSignals::caught() const { return caughtSignal.load(); }
+
+void dieOf(int signal) {
+  std::fflush(nullptr);  // what stdio holds would be lost with the process
+  std::raise(signal);
+  std::_Exit(128 + signal);
+}
+
+std::string signalName(int signal) {
+  switch (signal) {
+    case SIGINT: return "SIGINT (Ctrl-C)";
+    case SIGTERM: return "SIGTERM";
+    case SIGHUP: return "SIGHUP";
+    default: return fmt::format("signal {}", signal);
+  }
+}
 
 SendResult sendStream(std::span<const std::uint8_t> stream, std::uint64_t resumeOffset, SerialSink& sink,
                       const SendProgress& progress, const ReplyGate* gate) {

@@ -34,7 +34,8 @@ struct ReplyGate {
 // of `gate`'s points past the resume offset for an answer. Error(Usage) if
 // the offset is past the end; SerialFault (offsets in the whole stream) on a
 // stall or hang-up, or on an answer that does not come (resume just past the
-// unanswered request: its bytes went out).
+// unanswered request: its bytes went out); SendStopped when the sink's stop
+// check says so (SendSignals below).
 SendResult sendStream(std::span<const std::uint8_t> stream, std::uint64_t resumeOffset, SerialSink& sink,
                       const SendProgress& progress = {}, const ReplyGate* gate = nullptr);
 
@@ -42,5 +43,40 @@ SendResult sendStream(std::span<const std::uint8_t> stream, std::uint64_t resume
 // of `extra` (the send's other flags, e.g. --device tek4027) for a POSIX shell.
 std::string resumeCommand(const std::string& file, const SerialOptions& options, std::uint64_t offset,
                           const std::vector<std::string>& extra = {});
+
+// Ctrl-C (SIGINT), SIGTERM and SIGHUP while a stream goes out. Their default
+// action kills the sender where it stands: the user learns neither how far
+// the stream got nor how to resume it, and the bytes the kernel still queues
+// go out after the end. While a SendSignals lives, these signals only record
+// themselves (a store to a lock-free atomic: all a handler may safely do); a stop
+// check made of caught() (SerialSink::setStopCheck) sees it within one slice
+// of the sink's loop and stops the send as a stall would, counting what went
+// out. The caller then says where it stopped, lets this go and calls dieOf,
+// so the process still ends by the signal: the shell sees 128 + the signal
+// (130 for Ctrl-C) and a script's loop stops as it would have.
+//
+// A second signal before that ends the process at once (the way out should
+// anything fail to check). A signal that was ignored when this was made
+// (nohup's SIGHUP, SIGINT for a shell's background job) stays ignored. The
+// actions there were, the default or a handler such as the temporary-file
+// registry's (foundation/system/temp_file_registry.hpp), come back when this
+// is destroyed. One at a time.
+class SendSignals {
+ public:
+  SendSignals();
+  ~SendSignals();
+  SendSignals(const SendSignals&) = delete;
+  SendSignals& operator=(const SendSignals&) = delete;
+  // The first of the signals received, or 0.
+  int caught() const;
+};
+
+// Ends the process by `signal` through its action, as if it had come now
+// (after a SendSignals is gone: the action there was before it); if that
+// action returns, exits with 128 + signal, the shell's status for it.
+[[noreturn]] void dieOf(int signal);
+
+// "SIGINT (Ctrl-C)", "SIGTERM", "SIGHUP", else "signal N".
+std::string signalName(int signal);
 
 }  // namespace lattice::io

@@ -1,24 +1,29 @@
 // `lattice show FILE`: any PNG, or any recorded stream of a device Lattice
-// emulates (tek4125, tek4027, sixel), drawn on the sixel terminal in front of
-// the user. A stream is decoded by our emulator; the picture (scaled down to
-// the terminal's largest sixel picture if it is bigger, nearest pixel) keeps
-// its own colours when they fit in the terminal's colour registers
-// (quantize/exact_palette.hpp), else goes through the median cut, and then
-// through the sixel driver, to standard output or a file. A decoded stream
-// that fits as it is goes from its indices straight to the driver (no RGB
-// picture between: the same palette and bytes, for less work).
+// emulates (tek4125, tek4027, tek4014, sixel), drawn on the sixel terminal in
+// front of the user. The device is told by the stream's first bytes
+// (app/stream_check.hpp). A stream is decoded by our emulator; the picture
+// (scaled down to the terminal's largest sixel picture if it is bigger,
+// nearest pixel) keeps its own colours when they fit in the terminal's colour
+// registers (quantize/exact_palette.hpp), else goes through the median cut,
+// and then through the sixel driver, to standard output or a file. A decoded
+// stream that fits as it is goes from its indices straight to the driver (no
+// RGB picture between: the same palette and bytes, for less work).
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "app/commands/commands.hpp"
+#include "app/stream_check.hpp"
 #include "app/wire_budget.hpp"
 #include "devices/device_table.hpp"
 #include "devices/sixel/sixel_driver.hpp"
@@ -39,12 +44,20 @@ struct ShowOptions {
   std::string as;      // the input's device; empty: told by its first bytes
   std::string stream;  // empty or "-": standard output
   std::vector<std::string> settings;
+  bool raw = false;    // decode as --as even bytes that do not look like its stream
 };
 
-std::vector<std::uint8_t> readInput(const std::string& path) {
+// Reads the file once (it may be a pipe, as with <(...)), handing its first
+// kRecogniseBytes (all of it, if shorter) to `judge` before the rest is
+// read, so a file judged wrong is refused without being read to its end.
+std::vector<std::uint8_t> readInput(const std::string& path,
+                                    const std::function<void(std::span<const std::uint8_t>)>& judge) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(ErrorKind::Input, fmt::format("{}: cannot open it to show", path));
-  std::vector<std::uint8_t> bytes;
+  std::vector<std::uint8_t> bytes(devices::kRecogniseBytes);
+  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  bytes.resize(static_cast<std::size_t>(in.gcount()));
+  judge(bytes);
   char buffer[65536];
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
     bytes.insert(bytes.end(), buffer, buffer + in.gcount());
@@ -55,23 +68,9 @@ std::vector<std::uint8_t> readInput(const std::string& path) {
   return bytes;
 }
 
-bool isPng(const std::vector<std::uint8_t>& b) {
+bool isPng(std::span<const std::uint8_t> b) {
   static const std::uint8_t magic[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   return b.size() >= 8 && std::equal(magic, magic + 8, b.begin());
-}
-
-// Which device's stream the bytes are, by how they open: DCS (sixel), the
-// 4027's command character '!', or ESC (the 4100 series' commands).
-std::string guessDevice(const std::vector<std::uint8_t>& b, const std::string& path) {
-  std::size_t i = 0;
-  while (i < b.size() && (b[i] == ' ' || b[i] == '\r' || b[i] == '\n' || b[i] == '\t')) ++i;
-  if (i < b.size() && b[i] == 0x90) return "sixel";
-  if (i + 1 < b.size() && b[i] == 0x1B && b[i + 1] == 'P') return "sixel";
-  if (i < b.size() && b[i] == '!') return "tek4027";
-  if (i < b.size() && b[i] == 0x1B) return "tek4125";
-  throw Error(ErrorKind::Usage, fmt::format("{}: not a PNG, and its first bytes do not say which device's stream it "
-                                            "is; name it with --as tek4125, --as tek4027 or --as sixel",
-                                            path));
 }
 
 // Nearest-pixel reduction to fit width x height, keeping the aspect.
@@ -92,7 +91,21 @@ RgbImage fitWithin(RgbImage image, int width, int height) {
 void runShow(const ShowOptions& o) {
   sixel::SixelProfile profile;
   sixel::applyOverrides(profile, o.settings);
-  const std::vector<std::uint8_t> bytes = readInput(o.input);
+  // What the file is, told by the recognisers from its first bytes, or
+  // checked against --as: a scene or noise is refused, not decoded into a
+  // screen of nothing.
+  bool png = false;
+  std::string device = o.as;
+  const std::vector<std::uint8_t> bytes = readInput(o.input, [&](std::span<const std::uint8_t> head) {
+    png = o.as.empty() && isPng(head);
+    if (png) return;
+    if (device.empty()) {
+      requireAnyStream(head, o.input, StreamUse::Show);
+      device = recogniseDevice(head);
+    } else if (!o.raw) {
+      requireStream(head, devices::makeDevice(device), o.input, StreamUse::Show);
+    }
+  });
   RgbImage picture;
   std::string what;
   // A decoded stream that fits the terminal and its registers as it is: its
@@ -100,11 +113,10 @@ void runShow(const ShowOptions& o) {
   // and indices exactPalette gives the RGB picture, so the same bytes).
   std::optional<IndexedImage> direct;
   int width = 0, height = 0;
-  if (o.as.empty() && isPng(bytes)) {
+  if (png) {
     picture = io::readPngBytes(bytes, o.input);
     what = "PNG";
   } else {
-    const std::string device = o.as.empty() ? guessDevice(bytes, o.input) : o.as;
     // A sixel stream is read with the most registers any of ours uses, so none wraps around.
     const std::vector<std::string> readAs = device == "sixel" ? std::vector<std::string>{"registers=256"}
                                                                : std::vector<std::string>{};
@@ -154,21 +166,29 @@ void runShow(const ShowOptions& o) {
 
 void addShow(CLI::App& root) {
   auto o = std::make_shared<ShowOptions>();
-  auto* cmd = root.add_subcommand("show", "Show a PNG, or a recorded tek4125, tek4027 or sixel stream, on a sixel "
-                                          "terminal (xterm -ti vt340, mlterm, foot, WezTerm)");
+  auto* cmd = root.add_subcommand("show", "Show a PNG, or a recorded tek4125, tek4027, tek4014 or sixel stream, on a "
+                                          "sixel terminal (xterm -ti vt340, mlterm, foot, WezTerm)");
   cmd->add_option("file", o->input, "A PNG, or a stream file lattice render --stream wrote")->required();
-  cmd->add_option("--as", o->as, "The stream's device, when its first bytes do not tell: tek4125, tek4027, sixel")
-      ->check(CLI::IsMember(devices::deviceNames()));
+  CLI::Option* as =
+      cmd->add_option("--as", o->as,
+                      "The stream's device (tek4125, tek4027, tek4014, sixel, apollo) instead of the one its first "
+                      "bytes tell; a stream that does not look like that device's is refused (exit 3) unless --raw")
+          ->check(CLI::IsMember(devices::deviceNames()));
+  cmd->add_flag("--raw", o->raw, "With --as: decode the file as that device's stream even if it does not look like one")
+      ->needs(as);
   cmd->add_option("--set", o->settings,
                   "The sixel terminal's profile, key=value (repeatable): registers (16; 256 for xterm with "
                   "numColorRegisters: 256), width, height (largest picture, 1000x1000), p1, p2 (docs/sixel.md)");
   cmd->add_option("--stream", o->stream, "Write the sixel stream to this file (atomically) instead of standard output");
   cmd->footer(
-      "A stream is decoded by Lattice's own emulator of its device, then re-encoded as sixel; a picture larger than\n"
+      "A stream's device is told by its first bytes, as `lattice emulate` checks them: a file that is neither a PNG\n"
+      "nor a stream of a device Lattice emulates (a scene, noise) is refused with exit 3 saying what it is. The\n"
+      "stream is decoded by Lattice's own emulator of its device, then re-encoded as sixel; a picture larger than\n"
       "the terminal's largest sixel picture is scaled down (nearest pixel). Examples:\n"
       "  lattice show torus.png\n"
       "  lattice show fuzzy.tek --set registers=256        (xterm -ti vt340 -xrm 'XTerm*numColorRegisters: 256')\n"
-      "  lattice show sphere.tek --as tek4027");
+      "  lattice show hole.tek                                (a Tek 4014 stream, told by its bytes)\n"
+      "  lattice show odd.tek --as tek4125 --raw");
   cmd->callback([o] { runShow(*o); });
 }
 

@@ -47,8 +47,12 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   d.emulatorMemory = 5 * static_cast<std::uint64_t>(profile.width) * static_cast<std::uint64_t>(profile.height);
   d.profileText = describe(profile);
   d.showsOnTerminal = true;
-  // A sixel stream is 7-bit text (but for an 8-bit DCS) with a DCS ... q.
-  d.recognise = [](std::span<const std::uint8_t> head) { return devices::hasSixelIntroducer(head); };
+  // A sixel stream is 7-bit text (but for an 8-bit DCS and ST) with a
+  // DCS ... q. Both are asked: the introducer alone (0x90 then `q`) turns up
+  // in about one random 4 KiB in fourteen.
+  d.recognise = [](std::span<const std::uint8_t> head) {
+    return devices::mostlySevenBit(head) && devices::hasSixelIntroducer(head);
+  };
   d.runCost = [](const IndexedImage& picture) { return sixelRunCost(picture); };
   return d;
 }

@@ -39,6 +39,9 @@ TEST_CASE("emulate refuses what is not the device's stream, saying what it is", 
       {kGolden + "/tek4027/rings-48x32.tek", "tek4125", "emulate it with --device tek4027"},
       {kGolden + "/tek4125/scene24x16_4planes.tek", "tek4027", "emulate it with --device tek4125"},
       {kGolden + "/tek4125/scene24x16_4planes.tek", "apollo", "not a"},
+      // The 4125 reads a 4014 stream too, but the advice is the narrower device.
+      {kGolden + "/tek4014/rings-96x64.tek", "tek4027",
+       "this is a Tektronix 4014 stream, not a Tektronix 4027 stream; emulate it with --device tek4014"},
   };
   for (const Case& c : cases) {
     const auto run = runLattice(fmt::format("emulate --device {} '{}' -o '{}'", c.device, c.file, out));

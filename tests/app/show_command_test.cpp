@@ -1,12 +1,17 @@
 // `lattice show` end to end with the real binary: a recorded Tek 4027 golden
 // and a sixel golden are re-encoded as sixel that our emulator decodes
 // cleanly to the right size; a file that is neither PNG nor a known stream
-// exits 2 naming --as; a decoded stream sent by its indices (no RGB picture
-// between) writes the very bytes its picture as a PNG does.
+// (text, a scene, noise) is refused with exit 3 saying what it is; a Tek 4014
+// stream is told from a 4125 one by its bytes; a decoded stream sent by its
+// indices (no RGB picture between) writes the very bytes its picture as a
+// PNG does.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <random>
 
 #include "devices/sixel/sixel_decoder.hpp"
 #include "io/png.hpp"
@@ -56,9 +61,67 @@ TEST_CASE("lattice show re-encodes recorded streams as sixel") {
   // and a register's percent goes back to the same percent.
   CHECK(compareImages(toRgbImage(again), toRgbImage(decodeFile(six))).maxChannelDelta == 0);
 
-  const CommandRun bad = runLattice("show " + sourcePath("README.md").string() + " --stream " + (dir / "x.six"));
-  CHECK(bad.exitCode == 2);
-  CHECK(bad.stderrText.find("--as") != std::string::npos);
+}
+
+TEST_CASE("lattice show refuses what is neither a PNG nor a stream, saying what it is", "[show]") {
+  TempDir dir("show-refuse");
+  const std::string out = dir / "x.six";
+  const std::string noise = dir / "noise.bin";
+  {
+    std::mt19937 rng(2024);
+    std::ofstream file(noise, std::ios::binary);
+    for (int i = 0; i < 65536; ++i) file.put(static_cast<char>(rng() >> 24));
+  }
+  struct Case {
+    std::string args;
+    int exitCode;
+    std::string says;
+  };
+  const Case cases[] = {
+      {sourcePath("README.md").string(), 3, "this is text, not a stream of any device"},
+      {sourcePath("scenes/sphere-hole.toml").string(), 3, "this is a scene file (TOML)"},
+      {noise, 3, "this is binary data, not a stream of any device"},
+      // Named as a device's stream, it must look like one: a PNG is shown as a PNG.
+      {goldenPath("tek4027/rings-48x32-screen.png").string() + " --as tek4125", 3, "show it without --as"},
+      {goldenPath("tek4027/rings-48x32.tek").string() + " --as tek4125", 3, "show it with --as tek4027"},
+      {sourcePath("README.md").string() + " --raw", 2, "--raw requires --as"},
+  };
+  for (const Case& c : cases) {
+    const CommandRun run = runLattice("show " + c.args + " --stream " + out);
+    INFO(c.args << ": " << run.stderrText);
+    CHECK(run.exitCode == c.exitCode);
+    CHECK(run.stderrText.find(c.says) != std::string::npos);
+    if (c.exitCode == 3) CHECK(run.stderrText.find("--raw") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(out));
+  }
+  // --as with --raw decodes whatever the bytes say, as before the check.
+  const CommandRun raw = runLattice("show " + noise + " --as tek4125 --raw --stream " + out);
+  INFO(raw.stderrText);
+  CHECK(raw.exitCode == 0);
+  CHECK(std::filesystem::exists(out));
+}
+
+TEST_CASE("lattice show tells a Tek 4014 stream by its bytes and draws it as the 4014 does", "[show]") {
+  // The README's stream: ESC FF, then GS/FS graphics, which the 4125 reads
+  // too; decoded as a 4125 stream it was a black screen. Shown without
+  // --as, it must be the very picture `emulate --device tek4014` draws.
+  TempDir dir("show-4014");
+  const std::string hole = dir / "hole.tek";
+  CommandRun run = runLattice("render " + sourcePath("scenes/sphere-hole.toml").string() +
+                              " --device tek4014 --height 776 -q --stream " + hole);
+  REQUIRE(run.exitCode == 0);
+  run = runLattice("show " + hole + " --stream " + (dir / "shown.six"));
+  INFO(run.stderrText);
+  REQUIRE(run.exitCode == 0);
+  CHECK(run.stderrText.find("(tek4014 stream, 1024x780") != std::string::npos);
+  REQUIRE(runLattice("emulate --device tek4014 " + hole + " -o " + (dir / "screen.png")).exitCode == 0);
+  REQUIRE(runLattice("show " + (dir / "screen.png") + " --stream " + (dir / "screen.six")).exitCode == 0);
+  CHECK(readFile(dir / "shown.six") == readFile(dir / "screen.six"));
+  // Not a blank screen: some pixels differ from the first one.
+  const IndexedImage shown = decodeFile(dir / "shown.six");
+  REQUIRE_FALSE(shown.pixels.empty());
+  const auto likeFirst = std::count(shown.pixels.begin(), shown.pixels.end(), shown.pixels.front());
+  CHECK(static_cast<std::size_t>(likeFirst) < shown.pixels.size());
 }
 
 TEST_CASE("lattice show of a sixel stream: its indices, not an RGB round trip, and the same bytes") {

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <thread>
 
@@ -102,6 +104,48 @@ TEST_CASE("A peer that never sends XON stalls the sink, and resuming from the of
   REQUIRE(peer.waitFor(stream.size()));
   peer.settle(0.05);
   CHECK(peer.data() == stream);  // first part + resumed part, nothing twice
+}
+
+TEST_CASE("A stop check ends a send held by XOFF at once, counting exactly what went out", "[serial][flow]") {
+  // What Ctrl-C does to `lattice send` (SendSignals): the held line would
+  // otherwise wait out the 30 s stall timeout.
+  PtyPair pty;
+  PtyPeer peer(pty);
+  auto stream = lattice::testing::pseudoRandomBytes(150 * 1024, 11);
+  auto options = xonxoff(pty, 30.0);
+  std::atomic<bool> stop{false};
+  bool held = false;
+  peer.holdAt(40 * 1024);
+  std::jthread terminal([&] {
+    held = peer.stopSenderAt(40 * 1024);
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the sender waits on the held line
+    stop = true;
+  });
+  std::uint64_t resumeAt = 0;
+  const auto start = std::chrono::steady_clock::now();
+  {
+    SerialSink sink(SerialPort(options.port), options);
+    sink.setStopCheck([&] { return stop.load(); });
+    try {
+      sendStream(stream, 0, sink);
+      FAIL("the send should have stopped; the peer got " << peer.received() << " bytes");
+    } catch (const SendStopped& stopped) {
+      resumeAt = stopped.resumeOffset();
+      CHECK(stopped.acceptedOffset() >= resumeAt);
+    }
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  terminal.join();
+  REQUIRE(held);
+  CHECK(seconds < 5.0);  // not the stall timeout
+  peer.send(kXon);
+  peer.settle();
+  // Nothing queued trickled out after the count: the peer has exactly the bytes before the offset.
+  REQUIRE(peer.received() == resumeAt);
+  CHECK(resumeAt >= 40 * 1024);
+  CHECK(resumeAt < stream.size());
+  const std::vector<std::uint8_t> got = peer.data();
+  CHECK(std::equal(got.begin(), got.end(), stream.begin()));
 }
 
 TEST_CASE("A stall reports offsets in the whole stream when the send itself was a resume", "[serial][flow]") {

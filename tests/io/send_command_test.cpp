@@ -27,6 +27,7 @@ TEST_CASE("lattice send streams a file to a pty, and resumes after a stall", "[s
   // missing binary means a broken build: fail rather than skip quietly.
   INFO("lattice is not built (" << lattice::testing::latticeBinary() << "): build the `lattice` target or set LATTICE_EXE");
   REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
+  // Every byte value, to prove none is lost or changed: no terminal's stream, so --raw.
   auto stream = lattice::testing::pseudoRandomBytes(80 * 1024, 2024);
   auto file = std::filesystem::temp_directory_path() / fmt::format("lattice-send-test-{}.tek", ::getpid());
   writeFileAtomically(file, stream);
@@ -35,7 +36,7 @@ TEST_CASE("lattice send streams a file to a pty, and resumes after a stall", "[s
   PtyPeer peer(pty);
   peer.holdAt(20 * 1024);
   std::jthread terminal([&] { peer.stopSenderAt(20 * 1024); });
-  auto stalled = lattice::testing::runLattice(fmt::format("send '{}' --port {} --baud 38400 --flow xonxoff --stall-timeout 0.5",
+  auto stalled = lattice::testing::runLattice(fmt::format("send '{}' --port {} --baud 38400 --flow xonxoff --stall-timeout 0.5 --raw",
                                         file.string(), pty.slavePath()));
   terminal.join();
   CHECK(stalled.exitCode == 6);
@@ -46,18 +47,19 @@ TEST_CASE("lattice send streams a file to a pty, and resumes after a stall", "[s
   CHECK(peer.received() == resume);
   CHECK(stalled.stderrText.find(fmt::format("lattice send {} --port {}", file.string(), pty.slavePath())) !=
         std::string::npos);
+  CHECK(stalled.stderrText.find(fmt::format(" --raw --resume {}", resume)) != std::string::npos);  // --raw repeated
 
   peer.send(lattice::testing::kXon);
-  auto resumed = lattice::testing::runLattice(fmt::format("send '{}' --port {} --baud 38400 --flow xonxoff --resume {}",
+  auto resumed = lattice::testing::runLattice(fmt::format("send '{}' --port {} --baud 38400 --flow xonxoff --raw --resume {}",
                                         file.string(), pty.slavePath(), resume));
   CHECK(resumed.exitCode == 0);
   REQUIRE(peer.waitFor(stream.size()));
   peer.settle(0.05);
   CHECK(peer.data() == stream);
 
-  auto pastEnd = lattice::testing::runLattice(fmt::format("send '{}' --port {} --resume 999999999", file.string(), pty.slavePath()));
+  auto pastEnd = lattice::testing::runLattice(fmt::format("send '{}' --port {} --raw --resume 999999999", file.string(), pty.slavePath()));
   CHECK(pastEnd.exitCode == 2);
-  auto noPort = lattice::testing::runLattice(fmt::format("send '{}' --port /dev/lattice-no-such-tty", file.string()));
+  auto noPort = lattice::testing::runLattice(fmt::format("send '{}' --port /dev/lattice-no-such-tty --raw", file.string()));
   CHECK(noPort.exitCode == 5);
   CHECK(noPort.stderrText.find("no such serial port") != std::string::npos);
   auto noFile = lattice::testing::runLattice(fmt::format("send /nonexistent/lattice.tek --port {}", pty.slavePath()));
