@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "lht/table/compressed_table.hpp"
+#include "lht/table/entry_codec.hpp"
 #include "lht/table/hash_table.hpp"
 #include "foundation/error.hpp"
 #include "foundation/system/resident_memory.hpp"
@@ -148,6 +150,41 @@ TablePacking chooseTablePacking(std::uint64_t budget, std::uint64_t resident, st
   for (const lht::LhtPrecisionInfo& info : smaller)
     if (fits(info.precision)) return packing(info.precision);
   return packing(requested);
+}
+
+std::uint64_t expectedTableBytes(lht::LhtForm form, lht::LhtPrecision precision, std::uint64_t entries,
+                                 const std::array<int, 3>& cells) {
+  if (form != lht::LhtForm::Compressed) return lht::LatticeHashTable::expectedBytes(entries, precision);
+  const std::uint64_t words = (lht::CompressedTable::bitmapBits(cells, lht::PairLayout::Symmetric) + 63) / 64;
+  const std::uint64_t ranks = (words + lht::CompressedTable::kBlockWords - 1) / lht::CompressedTable::kBlockWords;
+  constexpr std::uint64_t kBuildPairBytes = sizeof(std::pair<std::uint64_t, std::uint32_t>);
+  return words * 8 + ranks * 4 + entries * (lht::payloadBytes(precision) + kBuildPairBytes);
+}
+
+RasterAdmission admitRaster(std::uint64_t budget, std::uint64_t resident, std::uint64_t leastOutput,
+                            const lht::RasterEstimate& estimate,
+                            const std::function<std::uint64_t(std::uint64_t entries)>& tableBytes) {
+  const auto needWith = [&](std::uint64_t hits) {
+    const std::uint64_t table = tableBytes(hits);
+    return resident + table + std::max(estimate.bytesFor(hits), leastOutput);
+  };
+  RasterAdmission a;
+  a.tableBytes = tableBytes(estimate.hits);
+  a.need = needWith(estimate.hits);
+  a.fits = a.need <= budget;
+  // The need grows with the hits: the last count that fits, by bisection
+  // (no more hits than distinct pairs can come).
+  std::uint64_t lo = 0, hi = estimate.distinctPairs;
+  if (needWith(lo) > budget) return a;
+  while (lo < hi) {
+    const std::uint64_t mid = lo + (hi - lo + 1) / 2;
+    if (needWith(mid) <= budget)
+      lo = mid;
+    else
+      hi = mid - 1;
+  }
+  a.maxHits = lo;
+  return a;
 }
 
 }  // namespace lattice::app

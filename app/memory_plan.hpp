@@ -8,10 +8,14 @@
 // BVH) plus what the rest of the render will add: the quantizer's buffers for
 // each pipeline mode (pipelineBuffers), the device's own images, and an
 // allowance for code and transport buffers not yet touched.
+#include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "lht/raster/raster_estimate.hpp"
+#include "lht/table/lht_form.hpp"
 #include "lht/table/lht_precision.hpp"
 #include "quantize/run_pipeline.hpp"
 
@@ -74,5 +78,27 @@ struct TablePacking {
 };
 TablePacking chooseTablePacking(std::uint64_t budget, std::uint64_t resident, std::uint64_t hitListBytes,
                                 std::uint64_t leastOutput, std::uint64_t entries, lht::LhtPrecision requested);
+
+// The bytes a rasterized table of `entries` entries holds while it is built
+// from the hits: the hashed form's slots; the compressed form's bitmap, rank
+// directory and payloads, and its build's pair list (16 B an entry).
+// lattice::Error(Input) for a compressed pair space beyond kMaxBitmapBits.
+std::uint64_t expectedTableBytes(lht::LhtForm form, lht::LhtPrecision precision, std::uint64_t entries,
+                                 const std::array<int, 3>& cells);
+
+// A lattice about to be rasterized, with `resident` bytes resident now. With
+// n hits the process holds resident + the rasterizer's bytes for n hits +
+// the table of n entries while the table is packed, then resident + the
+// table + leastOutput once the hits are freed and the output side exists;
+// its need is the larger. `tableBytes(n)`: the table's bytes for n entries.
+struct RasterAdmission {
+  std::uint64_t need = 0;        // with the estimate's hits
+  std::uint64_t tableBytes = 0;  // the table with them
+  std::uint64_t maxHits = 0;     // the most hits whose need fits the budget (the running count's limit)
+  bool fits = false;             // need <= budget
+};
+RasterAdmission admitRaster(std::uint64_t budget, std::uint64_t resident, std::uint64_t leastOutput,
+                            const lht::RasterEstimate& estimate,
+                            const std::function<std::uint64_t(std::uint64_t entries)>& tableBytes);
 
 }  // namespace lattice::app

@@ -3,7 +3,12 @@
 #include <fmt/format.h>
 #include <malloc.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "foundation/error.hpp"
+#include "lht/grid/lattice_box.hpp"
+#include "lht/table/entry_codec.hpp"
 
 namespace lattice::app {
 
@@ -19,7 +24,107 @@ ResidentMemory measuredResidentMemory() {
 
 std::uint64_t pixels(int w, int h) { return static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h); }
 
+// Advice that only helps a dynamically linked build (cmake/LatticeDependencies.cmake).
+#ifdef LATTICE_STATIC_BUILD
+constexpr const char* kBuildAdvice = "";
+#else
+constexpr const char* kBuildAdvice = ", or use the static build (-DLATTICE_STATIC=ON)";
+#endif
+
+// x rounded up to two significant digits: a spacing to suggest.
+double roundUp2(double x) {
+  const double unit = std::pow(10.0, std::floor(std::log10(x)) - 1);
+  return std::ceil(x / unit - 1e-9) * unit;
+}
+
+// A spacing at which the lattice's own need (`need` now) would be within
+// `room`, taking the need as proportional to the pairs (eq. 1.3) of the
+// box each spacing gives; nullopt if none is found.
+std::optional<double> fittingSpacing(const lht::LatticeDefinition& lattice, const lht::RasterEstimate& estimate,
+                                     std::uint64_t need, std::uint64_t room) {
+  if (need <= room || room == 0 || estimate.pairs == 0) return std::nullopt;
+  const Bounds<double>& bounds = lattice.objectBounds();
+  // The pairs grow as the fourth power of the cells a side: start there,
+  // then widen by 2 % until the box's own pair count fits.
+  double spacing = lattice.lambda * std::pow(double(need) / double(room), 0.25);
+  for (int step = 0; step < 200; ++step, spacing *= 1.02) {
+    const double suggested = roundUp2(spacing);
+    try {
+      const lht::LatticeBox box(bounds, suggested, lattice.oversample);
+      if (double(need) * double(box.pairCountEq13()) / double(estimate.pairs) <= double(room)) return suggested;
+    } catch (const Error&) {
+      // Too many cells on an axis at this spacing: a larger one comes next.
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
+
+std::optional<std::uint64_t> defaultMemoryBudget() {
+  // Half: the rest stays for the system, other programs and the page cache,
+  // and a render past physical memory swaps for hours instead of failing.
+  if (const auto physical = physicalMemory()) return *physical / 2;
+  return std::nullopt;
+}
+
+std::string RasterRoom::name() const {
+  if (chosen) return fmt::format("--memory-budget {}", formatBytes(budget));
+  return fmt::format("the default memory budget of {} (half the physical memory; --memory-budget SIZE sets another)",
+                     formatBytes(budget));
+}
+
+lht::RasterAdmissionHook rasterizingWithin(std::shared_ptr<const RasterRoom> room) {
+  return [room = std::move(room)](const lht::LatticeDefinition& lattice, const lht::RasterEstimate& estimate,
+                                  lht::LhtForm form, lht::LhtPrecision requested) {
+    // Without procfs a chosen budget cannot be kept (as planBuiltRender
+    // says); the default one then counts the lattice alone.
+    const ResidentMemory now = room->chosen ? measuredResidentMemory() : residentMemory().value_or(ResidentMemory{});
+    if (now.peak > room->budget || now.current + room->leastOutput > room->budget)
+      throw Error(ErrorKind::Budget,
+                  fmt::format("{}: before this lattice is rasterized the process holds {} resident (it peaked at "
+                              "{}) and the picture needs at least {} more; raise the budget{} (docs/memory.md)",
+                              room->name(), formatBytes(now.current), formatBytes(now.peak),
+                              formatBytes(room->leastOutput), kBuildAdvice));
+    // A chosen budget may pack the table in a smaller entry form
+    // (tablePackingWithin): the smallest is what must fit.
+    std::vector<lht::LhtPrecision> precisions{requested};
+    if (room->chosen)
+      for (const lht::LhtPrecisionInfo& info : lht::kLhtPrecisions)
+        if (info.entryBytes < lht::entryBytes(requested)) precisions.push_back(info.precision);
+    const auto tableBytes = [&](std::uint64_t entries) {
+      std::uint64_t least = UINT64_MAX;
+      for (const lht::LhtPrecision p : precisions)
+        least = std::min(least, expectedTableBytes(form, p, entries, estimate.cells));
+      return least;
+    };
+    const RasterAdmission admission = admitRaster(room->budget, now.current, room->leastOutput, estimate, tableBytes);
+    const std::uint64_t base = now.current + room->leastOutput;
+    std::string spacing = "a larger spacing";
+    if (const auto larger = fittingSpacing(lattice, estimate, admission.need - std::min(admission.need, base),
+                                           room->budget - base))
+      spacing = fmt::format("a spacing of about {:g} or more (now {:g})", *larger, lattice.lambda);
+    const std::string ways = fmt::format(
+        "Build its table on demand instead (form = \"on-demand\" in its [[lattices]] entry, or --lht-form on-demand: "
+        "only the pairs rays reach are traced), use {}, or raise the budget (docs/memory.md)",
+        spacing);
+    const auto& c = estimate.cells;
+    if (!admission.fits)
+      throw Error(ErrorKind::Input,
+                  fmt::format("rasterizing it would take about {} at its peak, over {}: its {} x {} x {} cells give "
+                              "{} pairs (p_i, p_o) by eq. 1.3, {} distinct, of which about {} hit the object ({} of "
+                              "{} sampled), {} B each while rasterizing, and the {} table, {}; {} is resident already. "
+                              "{}",
+                              formatBytes(admission.need), room->name(), c[0], c[1], c[2], estimate.pairs,
+                              estimate.distinctPairs, estimate.hits, estimate.sampledHits, estimate.sampled,
+                              lht::RasterEstimate::kHitBytes, lht::lhtFormName(form), formatBytes(admission.tableBytes),
+                              formatBytes(now.current), ways));
+    return lht::RasterAllowance{
+        admission.maxHits,
+        fmt::format("more than the {} that {} leaves room for (about {} were expected). {}", admission.maxHits,
+                    room->name(), estimate.hits, ways)};
+  };
+}
 
 void shareOneAllocatorArena() {
 #ifdef M_ARENA_MAX

@@ -4,6 +4,8 @@
 // scene's tables are built with, the plan made after, and the check of the
 // measured peak at the end. The policy itself is app/memory_plan.hpp.
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +16,26 @@
 #include "foundation/system/resident_memory.hpp"
 
 namespace lattice::app {
+
+// The budget of a render given no --memory-budget: a fraction of the
+// machine's physical memory; nullopt where that is unknown (no budget).
+std::optional<std::uint64_t> defaultMemoryBudget();
+
+// What the lattices rasterized in one render may take.
+struct RasterRoom {
+  std::uint64_t budget = 0;
+  bool chosen = false;            // --memory-budget given; else the default (which never repacks)
+  std::uint64_t leastOutput = 0;  // the output side's least (leastOutputBytes), once the picture's size is known
+  std::string name() const;       // how messages name the budget
+};
+
+// The admission of every lattice rasterized in the render (docs/memory.md):
+// before any work, its estimated need (admitRaster) against `room`; a
+// lattice that cannot fit is refused with lattice::Error(Input), naming the
+// figures and the ways out (the on-demand form, a larger spacing, a larger
+// budget); one that can is rasterized with the running count's limit. When
+// what is resident already breaks the budget: lattice::Error(Budget).
+lht::RasterAdmissionHook rasterizingWithin(std::shared_ptr<const RasterRoom> room);
 
 // Before any thread starts, under a budget: every thread allocates from the
 // one main allocator arena. A worker thread's own arena (glibc makes one per

@@ -154,9 +154,9 @@ WireSearch renderWithinWireBudget(Renderer<T>& renderer, const RenderJob& job, c
 }
 
 // Takes the loaded scene: its node tree is released once the renderer holds
-// its own.
+// its own. `room`: the budget its lattices are rasterized under (null: none).
 template <typename T>
-RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job) {
+RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, const std::shared_ptr<RasterRoom>& room) {
   const auto start = std::chrono::steady_clock::now();
   quantize::PipelineOptions pipeline = job.pipeline;
   std::optional<devices::Device> device;
@@ -176,10 +176,16 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job) {
       renderSettings(job, loaded.scene, device ? device->width : 0, device ? device->height : 0);
   std::optional<MemoryPlanRequest> budget;
   std::optional<lht::SceneWithLattices> bound;  // the scene with its tables packed to fit the budget
+  if (room) {
+    // The default budget checks the job's mode and histogram; only a chosen
+    // one picks them, so a picture never depends on the machine's memory.
+    budget = renderBudgetRequest(room->budget, settings.width, settings.height, pipeline,
+                                 job.modeChosenByUser || !room->chosen, device ? &*device : nullptr,
+                                 !job.picture.empty());
+    budget->histogramChosenByUser = job.histogramChosenByUser || !room->chosen;
+    room->leastOutput = leastOutputBytes(*budget);  // before the renderer rasterizes the lattices
+  }
   if (job.memoryBudget) {
-    budget = renderBudgetRequest(*job.memoryBudget, settings.width, settings.height, pipeline, job.modeChosenByUser,
-                                 device ? &*device : nullptr, !job.picture.empty());
-    budget->histogramChosenByUser = job.histogramChosenByUser;
     lht::TableSettings tables = loaded.tables;
     tables.packing = tablePackingWithin(*budget, job.events);
     bound = lht::withTableSettings(loaded, tables);
@@ -190,10 +196,12 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job) {
   // before the output's buffers come (docs/memory.md).
   loaded.scene.root = NodeDesc{};
   if (bound) bound->scene.root = NodeDesc{};
-  if (budget) {
+  if (job.memoryBudget) {
     const MemoryPlan plan = planBuiltRender(*budget, job.events);
     pipeline.mode = plan.mode;
     pipeline.quantize.histogram = plan.histogram;
+  } else if (budget && residentMemory()) {
+    planBuiltRender(*budget);  // the default budget: a check, said only when it refuses
   }
 
   RenderResult result;
@@ -213,7 +221,7 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job) {
   result.height = renderer.height();
   result.rays = renderer.raysTraced();
   result.threads = renderer.threads();
-  if (budget) checkPeakAgainst(budget->budget, job.events);
+  if (job.memoryBudget) checkPeakAgainst(budget->budget, job.events);
   if (result.wire && !result.wire->choice.fits)
     throw Error(ErrorKind::Budget,
                 fmt::format("no setting fits {} bytes: the smallest stream is {} bytes ({:.1f} s at {} baud), written; "
@@ -269,9 +277,19 @@ RenderResult renderScene(const RenderJob& job) {
   if (job.onDemandCacheBytes) tables.onDemandCacheBytes = *job.onDemandCacheBytes;
   if (job.lhtStats) tables.stats = std::make_shared<lht::LookupStatsBook>();
   tables.threads = static_cast<unsigned>(job.threads);  // one thread means one thread throughout
+  // Every render has a budget, the one given or the default; the lattices
+  // the renderer rasterizes are admitted against it before any work.
+  std::shared_ptr<RasterRoom> room;
+  if (const auto budget = job.memoryBudget ? job.memoryBudget : defaultMemoryBudget()) {
+    room = std::make_shared<RasterRoom>();
+    room->budget = *budget;
+    room->chosen = job.memoryBudget.has_value();
+    tables.admission = rasterizingWithin(room);
+  }
   lht::SceneWithLattices loaded = lht::loadSceneWithLattices(job.scene, tables);
-  RenderResult result =
-      withArithmetic(job.arithmetic, [&](auto type) { return renderWith<typename decltype(type)::type>(std::move(loaded), job); });
+  RenderResult result = withArithmetic(job.arithmetic, [&](auto type) {
+    return renderWith<typename decltype(type)::type>(std::move(loaded), job, room);
+  });
   if (tables.stats) raise(job.events, LookupsCounted{tables.stats->summaries()});
   return result;
 }

@@ -24,6 +24,7 @@ namespace lattice::lht {
 
 class LatticeDefinition;
 class LookupStatsBook;
+struct RasterEstimate;  // lht/raster/raster_estimate.hpp
 
 // 64 MiB: Plate 7 at f_lat 4 stores 1.3 million answers (62 MiB at 48 bytes).
 inline constexpr std::uint64_t kDefaultOnDemandCacheBytes = std::uint64_t(64) << 20;
@@ -35,11 +36,24 @@ inline constexpr std::uint64_t kDefaultOnDemandCacheBytes = std::uint64_t(64) <<
 using TablePackingHook = std::function<LhtPrecision(const LatticeDefinition& lattice, LhtPrecision requested,
                                                     std::uint64_t entries, std::uint64_t hitListBytes)>;
 
+// Under a memory budget: asked before a lattice is rasterized, with the
+// estimate of what rasterizing it holds, the table form and the entry form
+// asked for. Throws lattice::Error to refuse it; else returns the most hits
+// the rasterizer may hold (its running count), and what to say if it passes
+// them.
+struct RasterAllowance {
+  std::uint64_t maxHits = UINT64_MAX;
+  std::string refusal;  // follows "rasterizing stopped at N hits (...), "
+};
+using RasterAdmissionHook = std::function<RasterAllowance(const LatticeDefinition& lattice, const RasterEstimate& estimate,
+                                                          LhtForm form, LhtPrecision requested)>;
+
 struct TableSettings {
   std::optional<LhtPrecision> precision;  // every table's entry form; unset: each definition's own
   unsigned threads = 0;                   // rasterizer threads; 0: all cores
   bool progress = true;                   // a progress bar while rasterizing (on a terminal)
   TablePackingHook packing;               // unset: tables are packed as asked
+  RasterAdmissionHook admission;          // unset: every lattice is rasterized, without a count
   std::optional<LhtForm> form;            // every table's form; unset: each definition's own
   // The on-demand form's bound on stored answers (`--lht-cache SIZE`).
   std::uint64_t onDemandCacheBytes = kDefaultOnDemandCacheBytes;

@@ -7,6 +7,7 @@
 
 #include "foundation/error.hpp"
 #include "lht/raster/lattice_object.hpp"
+#include "lht/raster/raster_estimate.hpp"
 #include "loader/lattice_scene_loader.hpp"
 
 namespace lattice::lht {
@@ -14,11 +15,13 @@ namespace lattice::lht {
 namespace {
 
 // The steps every table goes through; `hashFor` names the object for the
-// form the table ends up in.
+// form the table ends up in; `admit` (may be empty) sees the estimate before
+// any work and bounds the hits the rasterizer may hold.
 BuiltTable packTable(const LatticeObject& object, double lambda, double oversample, const TableSettings& settings,
                      LhtForm tableForm,
                      const std::function<LhtPrecision(std::uint64_t, std::uint64_t)>& chooseForm,
-                     const std::function<std::uint64_t(LhtPrecision)>& hashFor) {
+                     const std::function<std::uint64_t(LhtPrecision)>& hashFor,
+                     const std::function<RasterAllowance(const RasterEstimate&)>& admit = {}) {
   const bool rasterized = withForm(
       tableForm, [](auto i) { return RasterizedForm<FormAt<decltype(i)::value>>; }, [] { return false; });
   if (!rasterized)
@@ -30,7 +33,17 @@ BuiltTable packTable(const LatticeObject& object, double lambda, double oversamp
   RasterOptions options;
   options.progress = settings.progress;
   options.threads = settings.threads;
-  const RasterResult raster = rasterize(lht.box, object, options);
+  RasterAllowance allowance;
+  if (admit) allowance = admit(estimateRaster(lht.box, object, options.threads));
+  options.maxHits = allowance.maxHits;
+  const RasterResult raster = [&] {
+    try {
+      return rasterize(lht.box, object, options);
+    } catch (const RasterHitLimit& stop) {
+      throw Error(ErrorKind::Input, fmt::format("rasterizing stopped at {} hits ({} of {} entry points traced), {}",
+                                                stop.hits, stop.pointsDone, stop.points, allowance.refusal));
+    }
+  }();
   const LhtPrecision form = chooseForm(raster.hits.size(), raster.hits.bytes());
   built.stats = raster.stats;
   lht.objectHash = hashFor(form);
@@ -73,12 +86,17 @@ BuiltTable buildLatticeTable(const LatticeDefinition& lattice, const TableSettin
   try {
     const LatticeObject solid = sceneObject(lattice.object, lattice.objectText);
     const LhtPrecision requested = lattice.precisionUnder(settings);
+    std::function<RasterAllowance(const RasterEstimate&)> admit;
+    if (settings.admission)
+      admit = [&](const RasterEstimate& estimate) {
+        return settings.admission(lattice, estimate, lattice.formUnder(settings), requested);
+      };
     return packTable(
         solid, lattice.lambda, lattice.oversample, settings, lattice.formUnder(settings),
         [&](std::uint64_t entries, std::uint64_t hitListBytes) {
           return settings.packing ? settings.packing(lattice, requested, entries, hitListBytes) : requested;
         },
-        [&](LhtPrecision form) { return lattice.hashFor(form); });
+        [&](LhtPrecision form) { return lattice.hashFor(form); }, admit);
   } catch (const Error& e) {
     throw Error(e.kind(), fmt::format("{}: lattice '{}': {}", lattice.origin, lattice.name, e.what()));
   }

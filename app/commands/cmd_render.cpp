@@ -141,7 +141,9 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
       ->group(kLatticeGroup);
   cmd.add_option("--memory-budget", f.memoryBudget,
                  "Keep peak resident memory within SIZE (8MiB, 8192K, 8388608): picks the quantizer mode and the "
-                 "entry form of lattices rasterized now, or exits 8 saying why not (docs/memory.md)")
+                 "entry form of lattices rasterized now, or exits 8 saying why not; a lattice too large to "
+                 "rasterize within it exits 3 before any work (default: half the physical memory, which only "
+                 "refuses; docs/memory.md)")
       ->group("Memory");
   addPipelineOptions(&cmd, f.pipeline, "Quantizer (devices)");
   addSerialOptions(&cmd, f.serial, /*portRequired=*/false, profileBaudText());

@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <unistd.h>
+
 #include "foundation/error.hpp"
 
 namespace lattice {
@@ -40,6 +42,14 @@ std::optional<ResidentMemory> parseProcStatus(std::string_view status) {
   const auto peak = statusField(status, "VmHWM");
   if (!current || !peak) return std::nullopt;
   return ResidentMemory{*current, *peak};
+}
+
+std::optional<std::uint64_t> physicalMemory() {
+#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGESIZE)
+  const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
+  if (pages > 0 && pageSize > 0) return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(pageSize);
+#endif
+  return std::nullopt;
 }
 
 std::optional<ResidentMemory> residentMemory() {

@@ -17,6 +17,8 @@ struct ResidentMemory {
 // From /proc/self/status; nullopt where there is no procfs (the budget then
 // works from its estimates alone).
 std::optional<ResidentMemory> residentMemory();
+// The machine's physical memory (sysconf), bytes; nullopt where unknown.
+std::optional<std::uint64_t> physicalMemory();
 // Parses the text of a /proc/PID/status file (nullopt if a field is missing).
 std::optional<ResidentMemory> parseProcStatus(std::string_view status);
 

@@ -171,6 +171,9 @@ class Rasterizer {
       }
     }
     out.shrink_to_fit();  // growth by doubling left up to half of it unused
+    const std::uint64_t held = held_.fetch_add(out.size()) + out.size();
+    const std::uint64_t done = done_.fetch_add(1) + 1;
+    if (held > options_.maxHits) throw RasterHitLimit(held, done, points_.size());
   }
 
   RasterOptions options_;
@@ -180,6 +183,8 @@ class Rasterizer {
   std::array<std::uint8_t, 64 * 64> multiplicity_{};  // by (faces of p_i) * 64 + faces of p_o
   std::vector<std::vector<RasterHit>> perPoint_;
   std::atomic<std::size_t> next_{0};
+  std::atomic<std::uint64_t> held_{0};  // hits so far, all threads (the running count)
+  std::atomic<std::uint64_t> done_{0};  // rows traced
 };
 
 }  // namespace

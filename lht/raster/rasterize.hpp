@@ -6,6 +6,7 @@
 // stays clear of it is a miss without a trace (lht/raster/cover_cull.hpp); the
 // pairs that may touch are traced as without it, so the table is the same.
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "lht/raster/cover_cull.hpp"
@@ -38,6 +39,20 @@ struct RasterOptions {
   // It must stay far below the smallest non-zero clearance of lattice
   // segments (~1e-5 cells for a 255-cell lattice) to add only true tangents.
   double grazeTolerance = 1e-7;
+  // The running count: the most hits held before the rasterizer stops and
+  // throws RasterHitLimit (a memory budget's room, app/render_budget.hpp).
+  // Counted a boundary point's row at a time.
+  std::uint64_t maxHits = UINT64_MAX;
+};
+
+// Thrown when the hits pass RasterOptions::maxHits; the caller says why.
+class RasterHitLimit : public std::runtime_error {
+ public:
+  RasterHitLimit(std::uint64_t held, std::uint64_t done, std::uint64_t all)
+      : std::runtime_error("the rasterizer's hits passed their limit"), hits(held), pointsDone(done), points(all) {}
+  std::uint64_t hits;        // held when it stopped
+  std::uint64_t pointsDone;  // entry points whose rows were traced (of `points`)
+  std::uint64_t points;
 };
 
 // `object` is in object coordinates; box says how they map to lattice ones.

@@ -10,6 +10,8 @@
 #include <regex>
 #include <string>
 
+#include <sys/wait.h>
+
 #include "tests/support/run_lattice.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -29,6 +31,54 @@ double predictedPeak(const std::string& log) {
   std::smatch m;
   REQUIRE(std::regex_search(log, m, std::regex(R"(predicted peak ([0-9.]+) MiB)")));
   return std::stod(m[1]) * 1024.0 * 1024.0;
+}
+
+// A sphere lattice of 254 cells a side: 1.3e11 pairs (eq. 1.3), most of them hits.
+constexpr const char* kFineLattice = R"([options]
+width = 64
+height = 64
+
+[camera]
+type = "look_at"
+eye = [0.0, 0.0, 4.0]
+target = [0.0, 0.0, 0.0]
+up = [0.0, 1.0, 0.0]
+fov = 40
+
+[materials.m]
+diffuse = [0.8, 0.5, 0.3]
+
+[[lights]]
+position = [4.0, 6.0, 5.0]
+intensity = 9.0
+
+[[lattices]]
+name = "ball"
+spacing = SPACING
+object = { type = "sphere", radius = 0.999 }
+
+[[objects]]
+type = "lattice"
+lattice = "ball"
+material = "m"
+)";
+
+std::filesystem::path writeBall(const TempDir& dir, const std::string& spacing) {
+  const std::filesystem::path scene = dir / ("ball-" + spacing + ".toml");
+  std::string text = kFineLattice;
+  text.replace(text.find("SPACING"), 7, spacing);
+  std::ofstream(scene) << text;
+  return scene;
+}
+
+// `lattice ARGUMENTS` under a 2 GB address-space limit: a lattice that is not
+// refused fails on its own allocations instead of taking the machine's memory.
+lattice::testing::CommandRun runCapped(const std::string& arguments, const TempDir& dir) {
+  const auto err = dir / "stderr.txt";
+  const int status = std::system(fmt::format("ulimit -v 2000000; '{}' {} 2>'{}' </dev/null",
+                                             lattice::testing::latticeBinary().string(), arguments, err)
+                                     .c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readAll(err)};
 }
 
 const std::string kRender = fmt::format(
@@ -91,4 +141,53 @@ TEST_CASE("app:memory_budget_counts_the_truecolour_picture") {
   CHECK(run.exitCode == 0);
   CHECK_THAT(run.stderrText, Catch::Contains("48.0 KiB truecolour picture") && !Catch::Contains("histogram"));
   CHECK(std::filesystem::exists(dir / "t.png"));
+}
+
+TEST_CASE("app:memory_budget_refuses_a_lattice_too_large_before_rasterizing") {
+  const TempDir dir("memory-budget");
+  const auto scene = writeBall(dir, "0.0079");
+  const auto run = runCapped(fmt::format("render '{}' -o '{}' --threads 1 --memory-budget 1G", scene.string(),
+                                         dir / "x.png"),
+                             dir);
+  INFO(run.stderrText);
+  CHECK(run.exitCode == 3);  // the scene asks for more than the budget: an input error
+  // The scene file and lattice, the figures, and the ways out.
+  CHECK_THAT(run.stderrText, Catch::Contains(scene.string() + ":") && Catch::Contains("lattice 'ball'") &&
+                                 Catch::Contains("254 x 254 x 254 cells") &&
+                                 Catch::Contains("over --memory-budget 1.00 GiB"));
+  CHECK_THAT(run.stderrText, Catch::Contains("form = \"on-demand\"") && Catch::Contains("--lht-form on-demand") &&
+                                 Catch::Contains("a spacing of about") && Catch::Contains("raise the budget"));
+  CHECK_FALSE(std::filesystem::exists(dir / "x.png"));
+
+  // The default budget (a share of physical memory) refuses it too.
+  const auto byDefault = runCapped(fmt::format("render '{}' -o '{}' --threads 1", scene.string(),
+                                               dir / "y.png"),
+                                   dir);
+  INFO(byDefault.stderrText);
+  CHECK(byDefault.exitCode == 3);
+  CHECK_THAT(byDefault.stderrText, Catch::Contains("the default memory budget of") &&
+                                       Catch::Contains("--lht-form on-demand"));
+
+  // The first way out: the same lattice built on demand renders within the budget.
+  const auto onDemand = runCapped(fmt::format("render '{}' -o '{}' --threads 1 --quiet --memory-budget 1G "
+                                              "--lht-form on-demand",
+                                              scene.string(), dir / "z.png"),
+                                  dir);
+  INFO(onDemand.stderrText);
+  CHECK(onDemand.exitCode == 0);
+  CHECK(std::filesystem::exists(dir / "z.png"));
+}
+
+TEST_CASE("app:memory_budget_admits_a_lattice_that_fits") {
+  const TempDir dir("memory-budget");
+  // 10 cells a side: a table of about 100 KB, rasterized in the process.
+  const auto scene = writeBall(dir, "0.2");
+  for (const char* budget : {"--memory-budget 1G", ""}) {
+    INFO(budget);
+    const auto run = runCapped(fmt::format("render '{}' -o '{}' --threads 1 --quiet {}", scene.string(),
+                                           dir / "x.png", budget),
+                               dir);
+    INFO(run.stderrText);
+    CHECK(run.exitCode == 0);
+  }
 }

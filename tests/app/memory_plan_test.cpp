@@ -157,3 +157,58 @@ TEST_CASE("app:memory_plan_packs_a_lattice_table_in_the_form_that_fits") {
                            LhtPrecision::Thesis)
             .form == LhtPrecision::Compact);
 }
+
+TEST_CASE("app:memory_plan_admits_a_lattice_whose_rasterizing_fits_and_bounds_its_hits") {
+  using lattice::app::admitRaster;
+  lattice::lht::RasterEstimate e;
+  e.distinctPairs = 1'000'000;
+  e.hits = 100'000;
+  e.fixedBytes = 1000;
+  e.rowBytes = 2000;
+  const auto table = [](std::uint64_t n) { return 16 * n; };
+  const std::uint64_t resident = 5 * MiB, output = 2 * MiB;
+  const auto needWith = [&](std::uint64_t n) { return resident + table(n) + std::max(e.bytesFor(n), output); };
+  const std::uint64_t need = needWith(e.hits);
+  // While rasterizing: the hits (40 B and an allowance each) beside the table being packed.
+  CHECK(need == resident + table(e.hits) + e.bytesFor(e.hits));
+  CHECK(e.bytesFor(e.hits) == 1000 + 2000 + e.hits * 40 + e.hits * 40 / 16);
+
+  const auto fits = admitRaster(need, resident, output, e, table);
+  CHECK(fits.fits);
+  CHECK(fits.need == need);
+  CHECK(fits.tableBytes == table(e.hits));
+  // The running count's limit: the most hits whose need fits.
+  CHECK(fits.maxHits >= e.hits);
+  CHECK(needWith(fits.maxHits) <= need);
+  CHECK(needWith(fits.maxHits + 1) > need);
+
+  const auto refused = admitRaster(need - 1, resident, output, e, table);
+  CHECK_FALSE(refused.fits);
+  CHECK(refused.maxHits == e.hits - 1);
+
+  // Once the hits are freed the output side comes: it can be what decides.
+  const std::uint64_t bigOutput = 64 * MiB;
+  const auto afterwards = admitRaster(need, resident, bigOutput, e, table);
+  CHECK_FALSE(afterwards.fits);
+  CHECK(afterwards.need == resident + table(e.hits) + bigOutput);
+
+  // Never more hits than distinct pairs, whatever the budget.
+  CHECK(admitRaster(UINT64_MAX / 2, resident, output, e, table).maxHits == e.distinctPairs);
+  // Nothing fits: no hit may be held.
+  CHECK(admitRaster(resident, resident, output, e, table).maxHits == 0);
+}
+
+TEST_CASE("app:memory_plan_counts_each_table_form_as_it_is_built") {
+  using lattice::app::expectedTableBytes;
+  using lattice::lht::LhtForm;
+  using lattice::lht::LhtPrecision;
+  const std::array<int, 3> cells{10, 10, 10};
+  CHECK(expectedTableBytes(LhtForm::Hashed, LhtPrecision::Thesis, 5000, cells) ==
+        lattice::lht::LatticeHashTable::expectedBytes(5000, LhtPrecision::Thesis));
+  // 602 boundary points: 180,901 unordered pairs, 2,827 words of bitmap, a
+  // rank count per 8 words, a 4-byte payload and a 16-byte build pair an entry.
+  CHECK(expectedTableBytes(LhtForm::Compressed, LhtPrecision::Thesis, 5000, cells) ==
+        2827 * 8 + 354 * 4 + 5000 * (4 + 16));
+  // A pair space the compressed form cannot hold is refused before any work.
+  CHECK_THROWS_AS(expectedTableBytes(LhtForm::Compressed, LhtPrecision::Thesis, 1, {255, 255, 255}), lattice::Error);
+}

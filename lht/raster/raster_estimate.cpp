@@ -1,0 +1,79 @@
+#include "lht/raster/raster_estimate.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "foundation/threads.hpp"
+#include "lht/raster/rasterize.hpp"
+
+namespace lattice::lht {
+
+namespace {
+
+// What the rasterizer holds for each boundary point besides its hits: the
+// point and its faces, its hit list's header (in the rasterizer, then in
+// RasterHits, whose lists and starts grow by doubling) and the allocator's
+// header of a non-empty list.
+constexpr std::uint64_t kPointBytes =
+    sizeof(LatticePoint) + 1 + sizeof(std::vector<RasterHit>) + 2 * (sizeof(std::vector<RasterHit>) + sizeof(std::size_t)) + 16;
+
+// splitmix64: a fixed sequence, so the estimate does not change between runs.
+std::uint64_t nextRandom(std::uint64_t& state) {
+  std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+}  // namespace
+
+RasterEstimate estimateRaster(const LatticeBox& box, const LatticeObject& object, unsigned threads,
+                              std::uint64_t samples) {
+  RasterEstimate e;
+  e.cells = box.cells();
+  e.pairs = box.pairCountEq13();
+  const std::vector<LatticePoint> points = box.boundaryPoints();
+  std::vector<std::uint8_t> faces(points.size());
+  std::array<std::uint64_t, 64> perFaces{};  // boundary points by their face mask
+  for (std::size_t i = 0; i < points.size(); ++i) ++perFaces[faces[i] = box.facesOf(points[i])];
+  e.boundaryPoints = points.size();
+  for (unsigned a = 0; a < 64; ++a)
+    for (unsigned b = 0; b < 64; ++b)
+      if (LatticeBox::pairMultiplicity(std::uint8_t(a), std::uint8_t(b)) != 0) {
+        e.distinctPairs += perFaces[a] * perFaces[b];
+        if (a == b) e.distinctPairs -= perFaces[a];  // p_i = p_o: a point, not a segment
+      }
+
+  const PairTracer tracer(box, *object.primitive, object.cover ? &*object.cover : nullptr);
+  const auto tracePair = [&](std::size_t i, std::size_t j) {
+    if (i == j || LatticeBox::pairMultiplicity(faces[i], faces[j]) == 0) return false;
+    ++e.sampled;
+    RasterHit hit;
+    if (tracer.trace(points[i], points[j], hit)) ++e.sampledHits;
+    return true;
+  };
+  if (e.distinctPairs <= samples) {
+    for (std::size_t i = 0; i < points.size(); ++i)
+      for (std::size_t j = 0; j < points.size(); ++j) tracePair(i, j);
+  } else {
+    std::uint64_t state = 1988;
+    // Pairs on a common face are drawn and skipped; they are a minority
+    // (about a third on a cube), so the bound on draws is never reached.
+    for (std::uint64_t draws = 0; e.sampled < samples && draws < 16 * samples; ++draws) {
+      const std::size_t i = nextRandom(state) % points.size(), j = nextRandom(state) % points.size();
+      tracePair(i, j);
+    }
+  }
+  const double share = e.sampled ? double(e.sampledHits) / double(e.sampled) : 0.0;
+  e.hits = std::min(e.distinctPairs, static_cast<std::uint64_t>(share * double(e.distinctPairs) + 0.5));
+  e.fixedBytes = e.boundaryPoints * kPointBytes;
+  // A row's list grows by doubling and is then copied to its exact size:
+  // up to three times its hits at once, in every thread.
+  const unsigned rows = std::max(1u, std::min<unsigned>(threads ? threads : hardwareThreads(),
+                                                        static_cast<unsigned>(std::max<std::uint64_t>(1, e.boundaryPoints))));
+  const auto rowHits = static_cast<std::uint64_t>(share * double(e.boundaryPoints)) + 1;
+  e.rowBytes = rows * 3 * rowHits * RasterEstimate::kHitBytes;
+  return e;
+}
+
+}  // namespace lattice::lht
