@@ -12,15 +12,16 @@
 
 namespace lattice::app {
 
-namespace {
-
-// Advice that only helps a dynamically linked build (cmake/LatticeDependencies.cmake).
+const char* staticBuildAdvice() {
+  // Advice that only helps a dynamically linked build (cmake/LatticeDependencies.cmake).
 #ifdef LATTICE_STATIC_BUILD
-constexpr const char* kBuildAdvice = "";
+  return "";
 #else
-constexpr const char* kBuildAdvice =
-    ", or use the static build (-DLATTICE_STATIC=ON), whose code is about 1.5 MiB smaller resident";
+  return ", or use the static build (-DLATTICE_STATIC=ON), whose code is about 1.5 MiB smaller resident";
 #endif
+}
+
+namespace {
 
 std::uint64_t total(const std::vector<MemoryItem>& items) {
   std::uint64_t sum = 0;
@@ -106,7 +107,7 @@ MemoryPlan planMemory(const MemoryPlanRequest& request) {
                 fmt::format("--memory-budget {}: building the scene alone peaked at {} resident ({} now); no "
                             "output mode can undo that. Raise the budget, rasterize lattices beforehand and name "
                             "the .lht in the scene's `cache =` key{} (docs/memory.md)",
-                            budget, formatBytes(request.peakSoFar), formatBytes(request.resident), kBuildAdvice));
+                            budget, formatBytes(request.peakSoFar), formatBytes(request.resident), staticBuildAdvice()));
   std::vector<MemoryPlan> tried;
   for (const Arrangement& a : candidateArrangements(request)) {
     MemoryPlan plan = costOf(request, a);
@@ -126,7 +127,7 @@ MemoryPlan planMemory(const MemoryPlanRequest& request) {
   }
   if (advice.empty())
     advice = fmt::format(" It needs at least {}: raise the budget or render a smaller picture{} (docs/memory.md).",
-                         formatBytes(smallest.predictedPeak), kBuildAdvice);
+                         formatBytes(smallest.predictedPeak), staticBuildAdvice());
   throw Error(ErrorKind::Budget, fmt::format("--memory-budget {} cannot be met: {}.{}", budget, smallest.summary(),
                                              advice));
 }

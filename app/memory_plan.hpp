@@ -61,6 +61,10 @@ struct MemoryPlan {
 // nothing fits, naming what takes the memory and what to change.
 MemoryPlan planMemory(const MemoryPlanRequest& request);
 
+// ", or use the static build (...)" in a dynamically linked build, "" in the
+// static one: the end of a refusal's advice.
+const char* staticBuildAdvice();
+
 // What the output side will add at the least (the least-memory mode the
 // request allows, the device's images, the allowance), whatever is resident:
 // the room a lattice table must leave when it is packed before the plan.

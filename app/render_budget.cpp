@@ -24,13 +24,6 @@ ResidentMemory measuredResidentMemory() {
 
 std::uint64_t pixels(int w, int h) { return static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h); }
 
-// Advice that only helps a dynamically linked build (cmake/LatticeDependencies.cmake).
-#ifdef LATTICE_STATIC_BUILD
-constexpr const char* kBuildAdvice = "";
-#else
-constexpr const char* kBuildAdvice = ", or use the static build (-DLATTICE_STATIC=ON)";
-#endif
-
 // x rounded up to two significant digits: a spacing to suggest.
 double roundUp2(double x) {
   const double unit = std::pow(10.0, std::floor(std::log10(x)) - 1);
@@ -85,7 +78,7 @@ lht::RasterAdmissionHook rasterizingWithin(std::shared_ptr<const RasterRoom> roo
                   fmt::format("{}: before this lattice is rasterized the process holds {} resident (it peaked at "
                               "{}) and the picture needs at least {} more; raise the budget{} (docs/memory.md)",
                               room->name(), formatBytes(now.current), formatBytes(now.peak),
-                              formatBytes(room->leastOutput), kBuildAdvice));
+                              formatBytes(room->leastOutput), staticBuildAdvice()));
     // A chosen budget may pack the table in a smaller entry form
     // (tablePackingWithin): the smallest is what must fit.
     std::vector<lht::LhtPrecision> precisions{requested};
