@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The attack table of docs/limits.md, measured: every hostile input issue 15
-# lists (the six defects and the cases that already held), run against the
+# The attack table of docs/limits.md, measured: the hostile inputs of the
+# readers and of the command-line surfaces (--at, numbers, the memory budget
+# over rasterizing, send and show, outputs as one transaction), run against the
 # Release binary under /usr/bin/time -v. Prints one Markdown row per case:
 # exit code, wall seconds, peak resident memory, and the start of the message.
 #   bench/hostile-input.sh [--build DIR]
@@ -101,6 +102,60 @@ if [[ $(id -u) -eq 0 ]] && mkdir -p "$w/full" && mount -t tmpfs -o size=16k tmpf
 else
   echo "| full disk | skipped: needs root to mount a tmpfs | | | |"
 fi
+
+# The surfaces added after the readers: --at, numbers, the memory budget over
+# rasterizing, send and show recognising their input, outputs as one transaction.
+echo
+echo "| case | exit | seconds | peak MiB | message (start) |"
+echo "|---|---|---|---|---|"
+cat > "$w/ball.toml" <<'TOML'
+[options]
+width = 64
+height = 64
+[camera]
+type = "look_at"
+eye = [0.0, 0.0, 4.0]
+target = [0.0, 0.0, 0.0]
+fov = 40
+[[lights]]
+position = [4.0, 6.0, 5.0]
+intensity = 9.0
+[[lattices]]
+name = "ball"
+spacing = 0.0079
+object = { type = "sphere", radius = 0.999 }
+[[objects]]
+type = "lattice"
+lattice = "ball"
+TOML
+"$L" render "$scene" --device tek4125 --width 128 --height 96 -q --stream "$w/t.tek" >/dev/null 2>&1
+"$L" render "$root/scenes/sphere-hole.toml" --device tek4014 --stream "$w/hole.tek" -q >/dev/null 2>&1
+files() { find "$w" -maxdepth 1 -name "$1" | wc -l; }
+for device in tek4125 sixel tek4014; do
+  row "emulate --device $device --at nan%" "$L" emulate --device "$device" --raw "$w/t.tek" -o "$w/a.png" --at nan%
+done
+row "emulate --at 1%,50% on a stream the drawing budget refuses" "$L" emulate --device tek4125 "$w/rr-200K.tek" -o "$w/b.png" --at 1%,50%
+echo "| (snapshots left: $(files 'b-at*')) | | | | |"
+"$L" emulate --device tek4125 "$w/t.tek" -o "$w/c.png" --at 50% >/dev/null 2>&1 && chmod 444 "$w/c-at50pct.png"
+row "emulate --at 50% over a read-only snapshot" "$L" emulate --device tek4125 "$w/t.tek" -o "$w/c.png" --at 50%
+row "emulate --at with 4,999 points" "$L" emulate --device tek4125 "$w/t.tek" -o "$w/d.png" --at "$(seq -s, 0 2 9998)"
+echo "| (snapshots written: $(files 'd-at*')) | | | | |"
+row "emulate --at inf" "$L" emulate --device tek4125 "$w/t.tek" -o "$w/e.png" --at inf
+row "emulate --at 1e300" "$L" emulate --device tek4125 "$w/t.tek" -o "$w/e.png" --at 1e300
+row "render --wire-seconds nan" "$L" render "$scene" --device tek4125 --stream "$w/f.tek" --wire-seconds nan
+row "render --rd-lambda nan" "$L" render "$scene" --device tek4125 --stream "$w/f.tek" --rd-lambda nan
+row "render --set width=nan" "$L" render "$scene" --device tek4125 --stream "$w/f.tek" --set width=nan
+row "254-cell sphere lattice (401 B scene), --memory-budget 1G" "$L" render "$w/ball.toml" -o "$w/g.png" --memory-budget 1G
+row "the same, the default budget" "$L" render "$w/ball.toml" -o "$w/g.png"
+row "send a PNG to virtual:tek4125" "$L" send "$w/good.png" --port virtual:tek4125
+row "send 100 MB of random bytes to virtual:tek4125" "$L" send "$w/random-100M" --port virtual:tek4125
+row "show hole.tek (a Tek 4014 stream)" "$L" show "$w/hole.tek" --stream "$w/hole.six"
+if [[ $(id -u) -eq 0 ]] && mkdir -p "$w/full2" && mount -t tmpfs -o size=4k tmpfs "$w/full2" 2>/dev/null; then
+  row "render --stream OK/x.tek -o FULL/s.png" "$L" render "$scene" --device tek4125 --width 128 --height 96 -q --stream "$w/x.tek" -o "$w/full2/s.png"
+  echo "| (x.tek left: $(files x.tek)) | | | | |"
+  umount "$w/full2"
+fi
+
 # Killed writes: SIGTERM at random moments during emulate; leftovers counted.
 python3 - "$w" "$L" <<'PY'
 import os, random, signal, subprocess, sys, time
