@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <cstdint>
 #include <new>
 #include <span>
@@ -22,6 +23,19 @@
 #include "foundation/error.hpp"
 
 namespace lattice::app {
+namespace {
+
+// A progress line may have said "-> x.tek" before the command failed: say
+// that it did not land, and that the file that was there is as it was.
+void sayDiscarded(const OutputTransaction& outputs) {
+  const std::vector<std::filesystem::path> targets = outputs.pendingTargets();
+  if (targets.empty()) return;
+  std::string names;
+  for (const std::filesystem::path& target : targets) names += (names.empty() ? "" : ", ") + target.string();
+  fmt::print(stderr, "lattice: not written, as the command failed: {} (any file there before is unchanged)\n", names);
+}
+
+}  // namespace
 
 void buildCommandTree(CLI::App& root) {
   root.set_version_flag("--version", LATTICE_VERSION);
@@ -73,6 +87,8 @@ int runLattice(int argc, char** argv) {
         fmt::print(stderr, "lattice: error: {}\n", failed.what());
         return failed.exitCode();
       }
+    } else {
+      sayDiscarded(outputs);
     }
     return e.exitCode();
   } catch (const std::bad_alloc&) {
@@ -82,6 +98,7 @@ int runLattice(int argc, char** argv) {
     fmt::print(stderr,
                "lattice: error: out of memory: the input asks for more memory than is available (limits: "
                "docs/limits.md; a smaller --width/--height or count, or more memory, may help)\n");
+    sayDiscarded(outputs);
     return static_cast<int>(ErrorKind::Input);
   } catch (const std::exception& e) {
     std::fflush(stdout);

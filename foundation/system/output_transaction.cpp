@@ -41,6 +41,13 @@ std::size_t OutputTransaction::pending() const {
   return kept_.size();
 }
 
+std::vector<std::filesystem::path> OutputTransaction::pendingTargets() const {
+  const std::lock_guard lock(gLock);
+  std::vector<std::filesystem::path> targets;
+  for (const Kept& k : kept_) targets.push_back(k.target);
+  return targets;
+}
+
 bool OutputTransaction::keep(const std::filesystem::path& temp, const std::filesystem::path& target, int registrySlot) {
   const std::lock_guard lock(gLock);
   if (gOpen == nullptr) return false;

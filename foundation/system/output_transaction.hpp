@@ -29,7 +29,9 @@ class OutputTransaction {
   // Renames every kept file into place; Error(Output) if one cannot be
   // (the rest are still renamed: each file is whole either way).
   void commit();
-  std::size_t pending() const;  // kept and not yet renamed (for tests)
+  std::size_t pending() const;  // kept and not yet renamed
+  // The targets kept so far, in order: what a failed command says it did not write.
+  std::vector<std::filesystem::path> pendingTargets() const;
 
   // For AtomicFile::close(): when a transaction is open it takes the closed
   // temporary and its registry slot and returns true; otherwise false.

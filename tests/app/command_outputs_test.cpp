@@ -107,8 +107,10 @@ TEST_CASE("render: a PNG that cannot be written takes the stream with it", "[out
     return;
   }
   std::ifstream err(dir / "err.txt");
-  INFO(std::string((std::istreambuf_iterator<char>(err)), {}));
+  const std::string message((std::istreambuf_iterator<char>(err)), {});
+  INFO(message);
   CHECK(WEXITSTATUS(status) == 4);
+  CHECK_THAT(message, Catch::Contains("not written, as the command failed: " + (dir / "x.tek")));
   std::ifstream old(dir / "x.tek");
   CHECK(std::string((std::istreambuf_iterator<char>(old)), {}) == "the user's old stream");
   CHECK(filesIn(dir.path()) == 3);  // x.tek, err.txt and full/: no new stream, no temporaries

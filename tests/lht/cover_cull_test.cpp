@@ -14,18 +14,14 @@
 #include "render/scene/polyline.hpp"
 #include "render/scene/scene.hpp"
 #include "render/shapes/quartic_presets.hpp"
+#include "tests/support/quiet_raster.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;
 
-namespace {
+using lattice::testing::quietRaster;
 
-RasterOptions quiet(unsigned threads) {
-  RasterOptions options;
-  options.progress = false;
-  options.threads = threads;
-  return options;
-}
+namespace {
 
 // Rasterizes `object` with and without its cover and requires the same
 // answer; returns the segments traced without and with it.
@@ -33,8 +29,8 @@ std::pair<std::uint64_t, std::uint64_t> requireSameTable(const LatticeObject& ob
                                                          double oversample, unsigned threads = 1) {
   REQUIRE(object.cover);
   const LatticeBox box(object.bounds, lambda, oversample);
-  const RasterResult plain = rasterize(box, *object.primitive, quiet(1));
-  const RasterResult culled = rasterize(box, *object.primitive, &*object.cover, quiet(threads));
+  const RasterResult plain = rasterize(box, *object.primitive, quietRaster(1));
+  const RasterResult culled = rasterize(box, *object.primitive, &*object.cover, quietRaster(threads));
   REQUIRE(culled.stats.pairs == plain.stats.pairs);
   REQUIRE(culled.stats.hits == plain.stats.hits);
   REQUIRE(culled.stats.distinctPairs == plain.stats.distinctPairs);

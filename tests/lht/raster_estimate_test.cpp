@@ -11,25 +11,21 @@
 #include "lht/raster/rasterize.hpp"
 #include "loader/lattice_scene_loader.hpp"
 #include "loader/table_build.hpp"
+#include "tests/support/quiet_raster.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;
 
-namespace {
+using lattice::testing::quietRaster;
 
-RasterOptions quiet(unsigned threads) {
-  RasterOptions options;
-  options.progress = false;
-  options.threads = threads;
-  return options;
-}
+namespace {
 
 }  // namespace
 
 TEST_CASE("raster estimate: counts the pairs the rasterizer considers, and a small lattice's hits exactly") {
   const LatticeObject sphere = sphereObject(2.0);
   const LatticeBox box(sphere.bounds, 1.0, 1.0);  // 5 x 5 x 5 cells
-  const RasterResult raster = rasterize(box, sphere, quiet(1));
+  const RasterResult raster = rasterize(box, sphere, quietRaster(1));
   const RasterEstimate e = estimateRaster(box, sphere, 1, raster.stats.distinctPairs);  // every pair traced
   CHECK(e.pairs == box.pairCountEq13());
   CHECK(e.pairs == raster.stats.pairs);
@@ -44,7 +40,7 @@ TEST_CASE("raster estimate: a sampled lattice's hits within a few per cent, the 
   // A sphere 17 cells a side and a capsule 22 cells long: more pairs than are sampled.
   for (const LatticeObject& object : {sphereObject(8.0), capsuleObject(0.5, 20.0)}) {
     const LatticeBox box(object.bounds, 1.0, 1.0);
-    const RasterResult raster = rasterize(box, object, quiet(0));
+    const RasterResult raster = rasterize(box, object, quietRaster(0));
     const RasterEstimate e = estimateRaster(box, object, 0);
     INFO(object.definition << ": " << e.hits << " estimated, " << raster.hits.size() << " rasterized");
     REQUIRE(e.distinctPairs > kEstimateSamples);
@@ -60,9 +56,9 @@ TEST_CASE("rasterize: the running count stops the rasterizer past maxHits, and a
   const LatticeBox box(sphere.bounds, 1.0, 1.0);
   for (unsigned threads : {1u, 2u}) {
     INFO(threads << " threads");
-    const RasterResult whole = rasterize(box, sphere, quiet(threads));
+    const RasterResult whole = rasterize(box, sphere, quietRaster(threads));
     REQUIRE(whole.hits.size() > 100);
-    RasterOptions limited = quiet(threads);
+    RasterOptions limited = quietRaster(threads);
     limited.maxHits = whole.hits.size() / 2;
     try {
       rasterize(box, sphere, limited);

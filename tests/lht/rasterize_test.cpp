@@ -7,18 +7,14 @@
 #include "lht/raster/lattice_object.hpp"
 #include "lht/raster/rasterize.hpp"
 #include "lht/table/hash_table.hpp"
+#include "tests/support/quiet_raster.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;
 
-namespace {
+using lattice::testing::quietRaster;
 
-RasterOptions quiet(unsigned threads = 0) {
-  RasterOptions options;
-  options.progress = false;
-  options.threads = threads;
-  return options;
-}
+namespace {
 
 // The reference: a sphere against a segment in closed form (independent of
 // the render module's root solver), with tangents counted as hits.
@@ -47,7 +43,7 @@ TEST_CASE("rasterize: a sphere's table holds exactly its hits, each within quant
     INFO("f_lat " << oversample);
     const LatticeObject sphere = sphereObject(0.5);
     const LatticeBox box(sphere.bounds, 1.0, oversample);
-    const RasterResult raster = rasterize(box, *sphere.primitive, quiet());
+    const RasterResult raster = rasterize(box, *sphere.primitive, quietRaster());
     const LatticeHashTable table(raster.hits);
     REQUIRE(table.entryCount() == raster.hits.size());
     const Vec3d centre = transformPoint(box.objectToLattice(), Vec3d(0.0));
@@ -78,7 +74,7 @@ TEST_CASE("rasterize: a sphere's table holds exactly its hits, each within quant
 TEST_CASE("rasterize: capsule hits agree with the exact intersector, tangents included") {
   const LatticeObject capsule = capsuleObject(0.5, 3.0);
   const LatticeBox box(capsule.bounds, 1.0, 2.0);
-  const RasterResult raster = rasterize(box, *capsule.primitive, quiet());
+  const RasterResult raster = rasterize(box, *capsule.primitive, quietRaster());
   REQUIRE(!raster.hits.empty());
   const Mat4d toObject = box.latticeToObject();
   std::size_t grazing = 0;
@@ -105,8 +101,8 @@ TEST_CASE("rasterize: capsule hits agree with the exact intersector, tangents in
 TEST_CASE("rasterize: the result does not depend on the number of threads") {
   const LatticeObject capsule = capsuleObject(0.5, 2.0);
   const LatticeBox box(capsule.bounds, 1.0, 2.0);
-  const RasterResult one = rasterize(box, *capsule.primitive, quiet(1));
-  const RasterResult two = rasterize(box, *capsule.primitive, quiet(2));
+  const RasterResult one = rasterize(box, *capsule.primitive, quietRaster(1));
+  const RasterResult two = rasterize(box, *capsule.primitive, quietRaster(2));
   CHECK(one.stats.pairs == two.stats.pairs);
   CHECK(one.stats.hits == two.stats.hits);
   REQUIRE(one.hits.size() == two.hits.size());

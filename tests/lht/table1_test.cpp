@@ -3,21 +3,18 @@
 #include <catch2/catch.hpp>
 
 #include "lht/raster/thesis_table1.hpp"
+#include "tests/support/quiet_raster.hpp"
 
 using namespace lattice;
 using namespace lattice::lht;
 
-namespace {
+using lattice::testing::quietRaster;
 
-RasterOptions quiet() {
-  RasterOptions options;
-  options.progress = false;
-  return options;
-}
+namespace {
 
 void checkRow(const Table1Row& row) {
   INFO(row.object << " f_lat=" << row.oversample);
-  const Table1Result result = computeTable1Row(row, quiet());
+  const Table1Result result = computeTable1Row(row, quietRaster());
   CHECK(result.stats.pairs == row.thesisPairs);
   CHECK(result.stats.hits == row.thesisHits);
 }
