@@ -4,7 +4,6 @@
 
 #include <algorithm>
 
-#include "devices/canvas.hpp"
 #include "devices/tek4014/tek4014_driver.hpp"
 #include "devices/work_budget.hpp"
 
@@ -12,7 +11,6 @@ namespace lattice::tek4014 {
 namespace {
 
 constexpr std::uint8_t kBel = 0x07, kBs = 0x08, kHt = 0x09, kLf = 0x0A, kVt = 0x0B, kCr = 0x0D;
-constexpr PaletteIndex kDark = 0, kLit = 1;
 
 // ESC and a byte: what xterm's Tesctable makes of it.
 enum class EscAction { Leave, Stay, Control, Page, Size, Beam, Osc, Known };
@@ -33,10 +31,21 @@ EscAction escAction(std::uint8_t b) {
 }  // namespace
 
 Tek4014Decoder::Tek4014Decoder(Tek4014Profile profile)
-    : profile_(profile), image_(profile.width(), profile.height(), 2) {
-  image_.colormap[kDark] = {0, 0, 0};
-  image_.colormap[kLit] = {255, 255, 255};
+    : profile_(profile), screen_(profile.width(), profile.height()) {
   beamY_ = kHomeY;
+}
+
+const IndexedImage& Tek4014Decoder::image() const {
+  if (stale_) {
+    if (picture_.pixels.empty()) {
+      picture_ = IndexedImage(screen_.width(), screen_.height(), 2);
+      picture_.colormap[0] = {0, 0, 0};        // dark
+      picture_.colormap[1] = {255, 255, 255};  // lit
+    }
+    screen_.paint(picture_);
+    stale_ = false;
+  }
+  return picture_;
 }
 
 void Tek4014Decoder::feed(std::span<const std::uint8_t> bytes) {
@@ -176,7 +185,11 @@ void Tek4014Decoder::escaped(std::uint8_t b) {
 
 void Tek4014Decoder::page() {
   // Erasing costs the screen: two bytes must not buy unbounded work.
-  if (chargePixelWork(report_, image_.pixels.size())) std::fill(image_.pixels.begin(), image_.pixels.end(), kDark);
+  const auto pixels = static_cast<std::uint64_t>(screen_.width()) * static_cast<std::uint64_t>(screen_.height());
+  if (chargePixelWork(report_, pixels)) {
+    screen_.clear();
+    stale_ = true;
+  }
   abandonAddress();
   mode_ = Mode::Alpha;
   bypass_ = false;
@@ -230,10 +243,12 @@ void Tek4014Decoder::incremental(std::uint8_t b) {
 void Tek4014Decoder::moveOrDraw(int x, int y, bool draw) {
   if (draw) {
     const int s = profile_.shift();
-    const long x0 = beamX_ >> s, y0 = beamY_ >> s, x1 = x >> s, y1 = y >> s;
+    const Tek4014Screen::Vector v = screen_.vector(beamX_ >> s, beamY_ >> s, x >> s, y >> s);
     if (lineStyle_ != 0) ++report_.unknownByName["dashed line style (drawn solid)"];
-    if (chargePixelWork(report_, devices::lineWork(image_, x0, y0, x1, y1)))
-      devices::drawLine(image_, x0, y0, x1, y1, kLit);
+    if (chargePixelWork(report_, v.work()) && v.last >= v.first) {
+      screen_.draw(v);
+      stale_ = true;
+    }
   }
   beamX_ = x;
   beamY_ = y;

@@ -24,14 +24,20 @@
 //    in the report), and line styles other than solid are drawn solid (named
 //    in the report). Alpha cursor motions (LF, BS, HT, VT, text) do not move
 //    the beam; CR puts it at x = 0.
-//  - Bounded: the screen is the only allocation; each vector is charged its
-//    clipped length, each erase the screen's pixels, against kPixelWorkBudget
+//  - The screen is a Tek4014Screen (tek4014_screen.hpp: bitmaps, a vector
+//    drawn as runs of straight or diagonal steps, the pixels
+//    devices::drawLine lights); image() makes the IndexedImage from it when
+//    the screen changed since the last call.
+//  - Bounded: the screen is the only allocation (and the picture image()
+//    returns); each vector is charged the pixels it lights on the screen
+//    (a dot 1), each erase the screen's pixels, against kPixelWorkBudget
 //    (devices/work_budget.hpp) before it is drawn.
 #include <cstdint>
 
 #include "devices/stream_decoder.hpp"
 #include "devices/tek4014/tek4014_address.hpp"
 #include "devices/tek4014/tek4014_profile.hpp"
+#include "devices/tek4014/tek4014_screen.hpp"
 
 namespace lattice::tek4014 {
 
@@ -43,7 +49,7 @@ class Tek4014Decoder final : public StreamDecoder {
 
   void feed(std::span<const std::uint8_t> bytes) override;
   void finish() override;
-  const IndexedImage& image() const override { return image_; }
+  const IndexedImage& image() const override;
   const DecodeReport& report() const override { return report_; }
 
   // State a test may inspect (12-bit units).
@@ -67,7 +73,9 @@ class Tek4014Decoder final : public StreamDecoder {
   void moveOrDraw(int x, int y, bool draw);
 
   Tek4014Profile profile_;
-  IndexedImage image_;
+  Tek4014Screen screen_;
+  mutable IndexedImage picture_;  // made from screen_ by image()
+  mutable bool stale_ = true;     // screen_ changed since picture_ was made
   DecodeReport report_;
 
   Mode mode_ = Mode::Alpha;

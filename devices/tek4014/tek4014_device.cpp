@@ -4,6 +4,7 @@
 
 #include "devices/tek4014/tek4014_decoder.hpp"
 #include "devices/tek4014/tek4014_driver.hpp"
+#include "devices/tek4014/tek4014_screen.hpp"
 #include "devices/stream_shape.hpp"
 
 namespace lattice::tek4014 {
@@ -41,8 +42,10 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   // pixel each) and the row's two candidate encodings (at most 6 B a dot
   // each in 12-bit mode, 5 in 10-bit).
   d.driverMemory = [](int w, int) { return 24 * static_cast<std::uint64_t>(w) + 4096; };
-  // The screen, a byte a pixel, and its RGB copy for the PNG.
-  d.emulatorMemory = 4 * static_cast<std::uint64_t>(profile.width()) * static_cast<std::uint64_t>(profile.height());
+  // The screen's two bitmaps, the picture made of them (a byte a pixel) and
+  // its RGB copy for the PNG.
+  d.emulatorMemory = Tek4014Screen::bitmapBytes(profile.width(), profile.height()) +
+                     4 * static_cast<std::uint64_t>(profile.width()) * static_cast<std::uint64_t>(profile.height());
   d.line = profile.line;
   d.profileText = describe(profile);
   // 7-bit bytes with the 4014's graph modes (GS: vectors, FS: point plots) or
