@@ -35,6 +35,18 @@ void sayDiscarded(const OutputTransaction& outputs) {
   fmt::print(stderr, "lattice: not written, as the command failed: {} (any file there before is unchanged)\n", names);
 }
 
+// A repeatable flag (--set a=1 --set b=2) takes one value each time it is
+// given, so `emulate --set bits=12 S.tek` leaves S.tek to the positional
+// argument instead of reading it as a second setting (CLI11's default for a
+// vector-valued flag is every word up to the next flag).
+void oneValueAnOccurrence(CLI::App& app) {
+  for (CLI::App* command : app.get_subcommands([](const CLI::App*) { return true; })) {
+    oneValueAnOccurrence(*command);
+    for (CLI::Option* option : command->get_options())
+      if (option->nonpositional()) option->allow_extra_args(false);
+  }
+}
+
 }  // namespace
 
 void buildCommandTree(CLI::App& root) {
@@ -44,6 +56,7 @@ void buildCommandTree(CLI::App& root) {
   for (auto adder : kCommands) adder(root);
   guardOutputs(root);
   guardNumbers(root);
+  oneValueAnOccurrence(root);
 }
 
 int runLattice(int argc, char** argv) {

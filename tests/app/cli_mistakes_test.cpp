@@ -141,3 +141,15 @@ TEST_CASE("a nested command's flags are its own: export pov --width is known, --
   CHECK(typo.exitCode == 2);
   CHECK_THAT(typo.stderrText, Catch::Contains("export pov: unknown flag '--widht'; did you mean '--width'?"));
 }
+
+TEST_CASE("a repeatable flag takes one value each time: --set before the stream file", "[cli]") {
+  const TempDir dir("set-then-file");
+  REQUIRE(runLattice(fmt::format("render scenes/sphere-hole.toml --device tek4014 --width 64 --height 64 -q --stream '{}'",
+                                 dir / "h.tek"))
+              .exitCode == 0);
+  const auto run = runLattice(fmt::format("emulate --device tek4014 --set bits=10 --set baud=9600 '{}' -o '{}'",
+                                          dir / "h.tek", dir / "h.png"));
+  INFO(run.stderrText);
+  CHECK(run.exitCode == 0);
+  CHECK(std::filesystem::exists(dir / "h.png"));
+}
