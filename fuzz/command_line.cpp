@@ -16,8 +16,9 @@
 //   file, a `--set` key=value, or up to 12 raw bytes of the input. A 0xFF
 //   byte ends the argv; the bytes after it are the input file (@in).
 // * Files: a scratch directory per process holds @in (the input's tail), a
-//   small valid scene and small 4125 and 4014 streams; outputs go there too
-//   and are removed after each run.
+//   small valid scene and small 4125 and 4014 streams; each run has it as
+//   its working directory, so outputs named by a bare word go there too, and
+//   everything but the inputs is removed after each run.
 // * Flags that wait on the outside world are not given: `ports --wait`
 //   (waits for a person to plug in an adapter), and a --port other than the
 //   virtual terminals or a missing path; --baud is left at its default so
@@ -186,9 +187,14 @@ void commandLine(std::span<const std::uint8_t> bytes) {
   }
   std::vector<char*> raw;
   for (std::string& word : argv) raw.push_back(word.data());
-  (void)app::runLattice(static_cast<int>(raw.size()), raw.data());
-  // Outputs of this run go; the fixed inputs stay.
+  // A pool word given as an output path ("auto", "-o variance") is a file
+  // in the working directory: run in the scratch directory so it goes there.
   std::error_code ignored;
+  const std::filesystem::path before = std::filesystem::current_path(ignored);
+  std::filesystem::current_path(table.dir, ignored);
+  (void)app::runLattice(static_cast<int>(raw.size()), raw.data());
+  std::filesystem::current_path(before, ignored);
+  // Outputs of this run go; the fixed inputs stay.
   for (const auto& entry : std::filesystem::directory_iterator(table.dir, ignored)) {
     const std::string name = entry.path().filename().string();
     if (name != "in" && name != "scene.toml" && name != "fill.tek" && name != "vec.t14")

@@ -4,12 +4,23 @@
 // an exit code fails the ordinary suite too, before any fuzzer runs.
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <random>
+#include <set>
+#include <string>
 #include <vector>
 
 #include "fuzz/entries.hpp"
 
 TEST_CASE("the command line answers random programs with exit codes only", "[fuzz][cli]") {
+  // Outputs stay in the entry's scratch directory: none appear here.
+  const auto here = [] {
+    std::set<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::current_path()))
+      names.insert(entry.path().filename().string());
+    return names;
+  };
+  const std::set<std::string> before = here();
   std::mt19937 random(20261204);
   for (int run = 0; run < 400; ++run) {
     std::vector<std::uint8_t> program(4 + random() % 40);
@@ -19,4 +30,5 @@ TEST_CASE("the command line answers random programs with exit codes only", "[fuz
     INFO("run " << run);
     CHECK_NOTHROW(lattice::fuzz::commandLine(program));
   }
+  CHECK(here() == before);
 }
