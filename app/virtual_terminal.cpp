@@ -62,7 +62,6 @@ void VirtualTerminal::run() {
         const ssize_t n = ::read(fd, chunk.data(), room);
         if (n > 0) {
           buffer.insert(buffer.end(), chunk.begin(), chunk.begin() + n);
-          received_ += static_cast<std::uint64_t>(n);
         } else if (n < 0 && errno == EIO) {
           hungUp = true;  // every slave descriptor closed: the sender is done
         }

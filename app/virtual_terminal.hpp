@@ -47,7 +47,6 @@ class VirtualTerminal {
   // what is still buffered and returns the emulator; Error(Stalled) if the
   // line stays open.
   StreamDecoder& finish(double timeoutSeconds);
-  std::uint64_t bytesReceived() const { return received_; }
 
  private:
   void run();
@@ -58,7 +57,6 @@ class VirtualTerminal {
   std::unique_ptr<StreamDecoder> emulator_;
   std::vector<std::uint8_t> drawn_;  // every byte drawn: where report requests are found
   std::size_t answeredUpTo_ = 0;     // just past the last request answered
-  std::atomic<std::uint64_t> received_{0};
   std::atomic<bool> closed_{false};  // the sender hung up and the buffer is drawn
   std::atomic<bool> stop_{false};
   std::thread thread_;

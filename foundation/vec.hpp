@@ -57,11 +57,6 @@ inline bool finite(T x) {
   else return isfinite(x);
 }
 template <typename T>
-inline T squareRoot(T x) {
-  if constexpr (kIsIeee<T>) return std::sqrt(x);
-  else return sqrt(x);
-}
-template <typename T>
 inline T roundNearest(T x) {
   if constexpr (kIsIeee<T>) return std::round(x);
   else return round(x);

@@ -36,7 +36,6 @@ class GprDisplay final : public GprCalls {
   void clear(std::uint32_t index) override;
   void terminate();
 
-  bool initialized() const { return initialized_; }
   bool acquired() const { return acquired_; }
   const ApolloProfile& profile() const { return profile_; }
   std::uint32_t pixel(int x, int y) const;

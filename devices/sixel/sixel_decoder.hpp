@@ -45,7 +45,6 @@ class SixelDecoder final : public StreamDecoder {
   const IndexedImage& image() const override;
   const DecodeReport& report() const override { return report_; }
 
-  int currentRegister() const { return register_; }
   int images() const { return images_; }
 
  private:

@@ -51,11 +51,6 @@ class Tek4125Writer {
     spillIfFull();
   }
 
-  // Bytes xy() would write now.
-  int xyLength(int x, int y) const {
-    if (!forms_.fullXy) return xy_.length(x, y);
-    return highShortNow() ? xy_.highShortLength(x, y) : 5;
-  }
   // Bytes of the stream so far, DELs escaped: handed on plus still held.
   std::uint64_t size() const { return spilled_ + out_.size() + dels_; }
   const Tek4125Forms& forms() const { return forms_; }

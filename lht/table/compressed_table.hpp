@@ -82,7 +82,6 @@ class CompressedTable {
   LhtPrecision precision() const { return precision_; }
   PairLayout layout() const { return layout_; }
   std::uint64_t entryCount() const { return entries_; }
-  std::uint64_t bitCount() const { return bits_; }
   const std::vector<std::uint64_t>& words() const { return words_; }
   const std::vector<std::uint8_t>& payloads() const { return payloads_; }
   std::uint64_t bitmapBytes() const { return words_.size() * sizeof(std::uint64_t); }
