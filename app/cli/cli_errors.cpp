@@ -25,6 +25,13 @@ bool isFlag(const std::string& argument) {
   return argument.size() > 1 && argument[0] == '-' && !looksLikeNumber(argument);
 }
 
+// Flags that were removed, and what to write instead (docs/cli.md, "Removed flags").
+struct RemovedFlag {
+  const char* flag;
+  const char* instead;
+};
+constexpr RemovedFlag kRemovedFlags[] = {{"--apollo-profile", "--set profile=P (with --device apollo)"}};
+
 std::string suggestion(const std::string& typed, const std::vector<std::string>& names) {
   const std::optional<std::string> nearest = nearestName(typed, names);
   return nearest ? fmt::format("did you mean '{}'? ", *nearest) : std::string();
@@ -104,6 +111,9 @@ std::string describeParseError(const CLI::App& root, const CLI::ParseError& erro
     const std::string flag = flagPart(argument);
     // Short flags may be bundled (-qk 16); only whole unknown names are judged.
     if (flag.rfind("--", 0) != 0 && flag.size() > 2) continue;
+    for (const RemovedFlag& removed : kRemovedFlags)
+      if (command->get_option_no_throw(flag) == nullptr && flag == removed.flag)
+        return fmt::format("{}: {} was removed; write {} instead", path, flag, removed.instead);
     if (command->get_option_no_throw(flag) == nullptr)
       return fmt::format("{}: unknown flag '{}'; {}{}", path, flag, suggestion(flag, flags), help);
   }

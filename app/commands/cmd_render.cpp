@@ -20,7 +20,6 @@
 #include "app/cli/serial_args.hpp"
 #include "app/cli/wire_args.hpp"
 #include "app/terminal_stream.hpp"
-#include "devices/apollo_sim/apollo_profile.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/arithmetics.hpp"
 #include "foundation/error.hpp"
@@ -41,7 +40,6 @@ struct RenderFlags {
   std::string lhtForm;       // empty: each lattice's own `form`
   std::string lookup;        // empty: each lattice's own `lookup`
   std::string lhtCache;      // as typed
-  std::string apolloProfile = "dn660";
   std::string memoryBudget;  // as typed
   PipelineArgs pipeline;
   io::SerialOptions serial;
@@ -90,10 +88,6 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
   cmd.add_option("--set", j.settings,
                  "Devices: override a profile assumption, key=value (repeatable), e.g. --set planes=4; "
                  "docs/tek4125.md, docs/tek4027.md and docs/tek4014.md list the keys")
-      ->group(kOutputGroup);
-  cmd.add_option("--apollo-profile", f.apolloProfile, "apollo: dn660 (8 planes), dn660-4 (4 planes) or dn580")
-      ->check(CLI::IsMember(apollo::apolloProfileNames()))
-      ->capture_default_str()
       ->group(kOutputGroup);
   cmd.add_option("--width", j.width, "Image width in pixels (default: the scene's, fitted to the device)")
       ->check(numberIn({1, 16384, true}))
@@ -163,9 +157,6 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
                            deviceChoices));
   refuseUnless(cmd, {"--set"}, !png,
                fmt::format("overrides a device profile, and none was chosen: add --device ({})", deviceChoices));
-  refuseUnless(cmd, {"--apollo-profile"}, f.device == "apollo",
-               fmt::format("chooses the simulated Apollo's profile: add --device apollo, or drop it for {}",
-                           png ? "a truecolour PNG" : f.device));
   refuseUnless(cmd, {"--flow", "--data-bits", "--parity", "--stop-bits", "--stall-timeout", "--pace"},
                cmd.count("--port") > 0, "sets the serial line of --port, and none was given: add --port PORT, or drop it");
   // --wire-seconds counts at --baud too (a device without a serial line, sixel, has no other rate).
@@ -178,7 +169,6 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
                "unless --lht-form on-demand is given or the scene sets form = \"on-demand\"\n");
   RenderJob job = f.job;
   if (f.device != "png") job.device = f.device;
-  if (f.device == "apollo") job.settings.insert(job.settings.begin(), "profile=" + f.apolloProfile);
   job.latticeShadows = !f.noLatticeShadows;
   if (!f.lhtPrecision.empty()) job.precision = lht::parseLhtPrecision(f.lhtPrecision, "--lht-precision");
   if (!f.lhtForm.empty()) job.form = lht::parseLhtForm(f.lhtForm, "--lht-form");
@@ -253,7 +243,7 @@ void addRender(CLI::App& root) {
       "  lattice render scenes/torus-floor.toml -o torus.png\n"
       "  lattice render scenes/fuzzy-sphere-1000.toml --device tek4125 --stream fuzzy.tek -o fuzzy-tek.png\n"
       "  lattice render scenes/sphere-hole.toml --device tek4027 --port auto --baud 4800\n"
-      "  lattice render scenes/thistle.toml --device apollo --apollo-profile dn660-4 -o thistle.png\n"
+      "  lattice render scenes/thistle.toml --device apollo --set profile=dn660-4 -o thistle.png\n"
       "  lattice render scenes/fuzzy-sphere-1000.toml --device sixel --set registers=256   (in xterm -ti vt340)");
   auto flags = std::make_shared<RenderFlags>();
   defineFlags(*cmd, *flags);

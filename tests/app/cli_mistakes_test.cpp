@@ -153,3 +153,9 @@ TEST_CASE("a repeatable flag takes one value each time: --set before the stream 
   CHECK(run.exitCode == 0);
   CHECK(std::filesystem::exists(dir / "h.png"));
 }
+
+TEST_CASE("a removed flag says what to write instead", "[cli]") {
+  const auto run = runLattice("render scenes/torus-floor.toml --device apollo --apollo-profile dn660-4");
+  CHECK(run.exitCode == 2);
+  CHECK_THAT(run.stderrText, Catch::Contains("render: --apollo-profile was removed; write --set profile=P"));
+}
