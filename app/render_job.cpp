@@ -225,9 +225,12 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
   if (result.wire && !result.wire->choice.fits)
     throw Error(ErrorKind::Budget,
                 fmt::format("no setting fits {} bytes: the smallest stream is {} bytes ({:.1f} s at {} baud), written; "
-                            "allow more time, or add --wire-shrink to send a smaller picture",
+                            "{}",
                             result.wire->limit, result.wire->choice.bytes, result.wire->choice.seconds,
-                            result.wire->baud),
+                            result.wire->baud,
+                            job.wire->shrink ? "allow more time (--wire-shrink already made the picture as small as "
+                                               "it goes)"
+                                             : "allow more time, or add --wire-shrink to send a smaller picture"),
                 Outputs::Keep);
   return result;
 }

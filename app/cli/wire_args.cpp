@@ -35,6 +35,9 @@ void applyWireArgs(const WireArgs& args, const CLI::App& cmd, int baud, RenderJo
   if (args.shrink && !seconds && !bytes)
     throw Error(ErrorKind::Usage, "--wire-shrink applies to a wire budget: add --wire-seconds S or --wire-bytes N");
   if (!seconds && !bytes) return;
+  if (seconds && bytes)
+    throw Error(ErrorKind::Usage, "--wire-seconds and --wire-bytes are two budgets for one stream; give one (at 8N1 "
+                                  "a second is baud / 10 bytes: 60 s at 9600 baud is --wire-bytes 57600)");
   WireBudget budget;
   if (seconds) budget.seconds = args.seconds;
   if (bytes) budget.bytes = parseByteCount(args.bytes, "--wire-bytes");

@@ -188,6 +188,16 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
     job.port = f.serial;
     job.baudFromProfile = cmd.count("--baud") == 0;
   }
+  // One baud: --baud becomes the profile's rate too, so the wire budget, the
+  // timing line and the port all count at it (a device without a serial
+  // line, sixel, takes it for the budget alone).
+  if (cmd.count("--baud") > 0 && f.device != "png" && devices::makeDevice(f.device, job.settings).line) {
+    for (const std::string& setting : job.settings)
+      if (setting.rfind("baud=", 0) == 0 && setting != fmt::format("baud={}", f.serial.baud))
+        throw Error(ErrorKind::Usage, fmt::format("--baud {} and --set {} name two line rates; give one", f.serial.baud,
+                                                  setting));
+    job.settings.push_back(fmt::format("baud={}", f.serial.baud));
+  }
   applyWireArgs(f.wire, cmd, f.serial.baud, job);
   streamToTerminalByDefault(job);  // sixel on a terminal: the picture goes there
   checkRenderJob(job);

@@ -185,3 +185,31 @@ TEST_CASE("lattice render --wire-bytes and lattice emulate --at, end to end") {
   const RgbImage whole = io::readPng(screen);
   CHECK(empty.rgb != whole.rgb);
 }
+
+TEST_CASE("one baud: --baud feeds the budget and the timing line; two budgets are refused", "[wire]") {
+  const testing::TempDir dir("one-baud");
+  const std::string scene = fmt::format("{}/scenes/torus-floor.toml", LATTICE_SOURCE_DIR);
+  const auto stream = dir.path() / "b.tek";
+  const testing::CommandRun run = testing::runLattice(fmt::format(
+      "render {} --device tek4125 --width 48 --height 48 --wire-seconds 5 --baud 9600 --quiet --stream {}", scene,
+      stream.string()));
+  INFO(run.stderrText);
+  CHECK(run.exitCode == 0);
+  CHECK_THAT(run.stderrText, Catch::Contains("at 9600 baud") && !Catch::Contains("38400"));
+
+  const testing::CommandRun both = testing::runLattice(
+      fmt::format("render {} --device tek4125 --wire-seconds 60 --wire-bytes 1000 --stream {}", scene, stream.string()));
+  CHECK(both.exitCode == 2);
+  CHECK_THAT(both.stderrText, Catch::Contains("two budgets for one stream; give one"));
+
+  const testing::CommandRun clash = testing::runLattice(fmt::format(
+      "render {} --device tek4125 --wire-seconds 5 --baud 9600 --set baud=19200 --stream {}", scene, stream.string()));
+  CHECK(clash.exitCode == 2);
+  CHECK_THAT(clash.stderrText, Catch::Contains("name two line rates"));
+
+  const testing::CommandRun shrunk = testing::runLattice(fmt::format(
+      "render {} --device tek4125 --width 64 --height 64 --wire-bytes 40 --wire-shrink --quiet --stream {}", scene,
+      stream.string()));
+  CHECK(shrunk.exitCode == 8);
+  CHECK_THAT(shrunk.stderrText, Catch::Contains("already made the picture as small") && !Catch::Contains("add --wire-shrink"));
+}
