@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "devices/device.hpp"
+#include "foundation/settings_schema.hpp"
 
 namespace lattice::devices {
 
@@ -18,6 +19,9 @@ struct DeviceEntry {
   // Settings are the profile's key=value overrides (--set); a bad one throws
   // Error(Usage) listing the profile's keys.
   Device (*make)(const std::vector<std::string>& settings);
+  // The keys `make` takes, from the profile's settings table
+  // (foundation/settings_schema.hpp): what docs/cli.md lists for the device.
+  std::vector<SettingInfo> (*settings)();
 };
 
 std::span<const DeviceEntry> deviceTable();

@@ -9,7 +9,6 @@
 #include "devices/apollo_sim/apollo_profile.hpp"
 #include "devices/apollo_sim/gpr_journal.hpp"
 #include "foundation/error.hpp"
-#include "foundation/key_value.hpp"
 
 namespace lattice::apollo {
 namespace {
@@ -29,21 +28,11 @@ class JournalDriver final : public devices::Driver {
   ApolloDriver driver_;
 };
 
-ApolloProfile profileFrom(const std::vector<std::string>& settings) {
-  constexpr std::string_view kContext = "apollo profile", kKeys = "profile";
-  ApolloProfile profile = dn660Profile();
-  for (const std::string& setting : settings) {
-    const KeyValue kv = splitKeyValue(kContext, setting, kKeys);
-    if (kv.key != "profile") unknownSetting(kContext, kv, kKeys);
-    profile = apolloProfileByName(kv.value);
-  }
-  return profile;
-}
-
 }  // namespace
 
 devices::Device makeDevice(const std::vector<std::string>& settings) {
-  const ApolloProfile profile = profileFrom(settings);
+  ApolloProfile profile = apolloSettings().initial();
+  applyOverrides(profile, settings);
   devices::Device d;
   d.name = "apollo";
   d.title = profile.model;
@@ -54,8 +43,7 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   d.driverMemory = [](int, int) { return std::uint64_t{0}; };  // a row of pixel values at a time
   // The display's bitmap, a byte a pixel, then the screen as RGB for the PNG.
   d.emulatorMemory = 4 * static_cast<std::uint64_t>(profile.width) * static_cast<std::uint64_t>(profile.height);
-  d.profileText = fmt::format("profile={}\nmodel={}\nwidth={}\nheight={}\nplanes={}\n", profile.name, profile.model,
-                              profile.width, profile.height, profile.planes);
+  d.profileText = describe(profile);
   // The journal's header (gpr_journal.hpp).
   d.recognise = [](std::span<const std::uint8_t> head) {
     return head.size() >= sizeof kGprJournalHeader &&

@@ -1,6 +1,10 @@
 #include "devices/apollo_sim/apollo_profile.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <iterator>
 
 #include "foundation/error.hpp"
 
@@ -28,14 +32,52 @@ ApolloProfile dn580Profile() {
   return p;
 }
 
-std::vector<std::string> apolloProfileNames() { return {"dn660", "dn660-8", "dn660-4", "dn580"}; }
+namespace {
+
+using P = ApolloProfile;
+
+constexpr std::string_view kModelNames[] = {"dn660", "dn660-8", "dn660-4", "dn580"};
+constexpr P (*kModels[])() = {[] { return dn660Profile(8); }, [] { return dn660Profile(8); },
+                              [] { return dn660Profile(4); }, dn580Profile};  // kModelNames' order
+static_assert(std::size(kModels) == std::size(kModelNames));
+
+double modelIndex(const P& p) {
+  const auto* at = std::find(std::begin(kModelNames), std::end(kModelNames), p.name);
+  return static_cast<double>(at - std::begin(kModelNames));
+}
+
+std::string number(int n) { return fmt::format("{}", n); }
+
+// The one key picks a model; the rest follows from it.
+constexpr Setting<P> kSettings[] = {
+    {"profile", SettingKind::Choice, {}, &choicesIn<kModelNames>,
+     "the display: a DN660 colour node with 8 or 4 bit planes (dn660-8 is dn660), or a DN580 at 1280x1024",
+     modelIndex, [](P& p, double i) { p = kModels[static_cast<std::size_t>(i)](); }, nullptr, true},
+    reported<P>("model", [](const P& p) { return p.model; }),
+    reported<P>("width", [](const P& p) { return number(p.width); }),
+    reported<P>("height", [](const P& p) { return number(p.height); }),
+    reported<P>("planes", [](const P& p) { return number(p.planes); }),
+};
+
+constexpr SettingsSchema<P> kSchema{"apollo profile", kSettings, kModels[0]};
+
+}  // namespace
+
+const SettingsSchema<ApolloProfile>& apolloSettings() { return kSchema; }
+
+std::vector<std::string> apolloProfileNames() { return {std::begin(kModelNames), std::end(kModelNames)}; }
 
 ApolloProfile apolloProfileByName(std::string_view name) {
-  if (name == "dn660" || name == "dn660-8") return dn660Profile(8);
-  if (name == "dn660-4") return dn660Profile(4);
-  if (name == "dn580") return dn580Profile();
+  for (std::size_t i = 0; i < std::size(kModelNames); ++i)
+    if (kModelNames[i] == name) return kModels[i]();
   throw Error(ErrorKind::Usage,
               fmt::format("unknown Apollo model '{}': use one of {}", name, fmt::join(apolloProfileNames(), ", ")));
 }
+
+void applyOverrides(ApolloProfile& profile, const std::vector<std::string>& keyValues) {
+  applySettings(kSchema, profile, keyValues);
+}
+
+std::string describe(const ApolloProfile& profile) { return describeSettings(kSchema, profile); }
 
 }  // namespace lattice::apollo

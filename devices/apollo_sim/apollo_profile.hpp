@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "foundation/settings_schema.hpp"
+
 namespace lattice::apollo {
 
 struct ApolloProfile {
@@ -28,5 +30,13 @@ ApolloProfile dn580Profile();
 // By name ("dn660", "dn660-4", "dn660-8", "dn580"); Error(Usage) listing the names.
 ApolloProfile apolloProfileByName(std::string_view name);
 std::vector<std::string> apolloProfileNames();
+
+// The profile's one setting, `profile` (the model), and what follows from it
+// (apollo_profile.cpp): --set, describe() and docs/cli.md's table read it.
+// The profile before any --set is the DN660 with 8 planes.
+const SettingsSchema<ApolloProfile>& apolloSettings();
+// Throws lattice::Error(Usage) naming the key and the models, or listing the keys.
+void applyOverrides(ApolloProfile& profile, const std::vector<std::string>& keyValues);
+std::string describe(const ApolloProfile& profile);
 
 }  // namespace lattice::apollo

@@ -3,50 +3,42 @@
 #include <fmt/format.h>
 
 #include "foundation/error.hpp"
-#include "foundation/key_value.hpp"
 
 namespace lattice::sixel {
 namespace {
 
-constexpr std::string_view kContext = "sixel profile";
-constexpr std::string_view kKeys = "registers, width, height, p1, p2";
+using P = SixelProfile;
 
-void require(bool ok, const std::string& what) {
-  if (!ok) throw Error(ErrorKind::Usage, fmt::format("{}: {}", kContext, what));
-}
+// Every key of the profile, in describe()'s order (docs/cli.md shows this table).
+constexpr Setting<P> kSettings[] = {
+    whole<&P::registers>("registers", {2, 256},
+                         "colour registers: 16 on a VT340; up to 256 for xterm with its numColorRegisters resource"),
+    whole<&P::width>("width", {1, 4096},
+                     "the widest raster the terminal takes (xterm's maxGraphicSize); a render fits within it"),
+    whole<&P::height>("height", {1, 4096},
+                      "the tallest raster the terminal takes (xterm's maxGraphicSize); a render fits within it"),
+    whole<&P::p1>("p1", {0, 9},
+                  "the DCS pixel aspect parameter, for a terminal that heeds it over the raster attributes' 1:1"),
+    whole<&P::p2>("p2", {0, 2},
+                  "the DCS background parameter (1: pixels no sixel sets stay as they were); Lattice sets every pixel"),
+};
+
+constexpr SettingsSchema<P> kSchema{"sixel profile", kSettings, [] { return P{}; },
+                                    [](const P& p) { p.validate(); }};
 
 }  // namespace
 
-void SixelProfile::validate() const {
-  require(registers >= 2 && registers <= 256,
-          fmt::format("registers={} is outside 2..256 (16 for a VT340, 256 for xterm with numColorRegisters)",
-                      registers));
-  require(width >= 1 && width <= 4096 && height >= 1 && height <= 4096,
-          fmt::format("size {}x{} is outside 1..4096 in each direction", width, height));
-  require(p1 >= 0 && p1 <= 9, fmt::format("p1={} is outside 0..9", p1));
-  require(p2 >= 0 && p2 <= 2, fmt::format("p2={} is outside 0..2", p2));
-}
+const SettingsSchema<SixelProfile>& sixelSettings() { return kSchema; }
 
-void applyOverride(SixelProfile& profile, std::string_view keyValue) {
-  SixelProfile p = profile;
-  const KeyValue kv = splitKeyValue(kContext, keyValue, kKeys);
-  if (kv.key == "registers") p.registers = parseIntSetting(kContext, kv);
-  else if (kv.key == "width") p.width = parseIntSetting(kContext, kv);
-  else if (kv.key == "height") p.height = parseIntSetting(kContext, kv);
-  else if (kv.key == "p1") p.p1 = parseIntSetting(kContext, kv);
-  else if (kv.key == "p2") p.p2 = parseIntSetting(kContext, kv);
-  else unknownSetting(kContext, kv, kKeys);
-  p.validate();
-  profile = p;
-}
+// Every constraint is one key's range.
+void SixelProfile::validate() const { checkSettings(kSchema, *this); }
+
+void applyOverride(SixelProfile& profile, std::string_view keyValue) { applySetting(kSchema, profile, keyValue); }
 
 void applyOverrides(SixelProfile& profile, const std::vector<std::string>& keyValues) {
-  for (const auto& kv : keyValues) applyOverride(profile, kv);
+  applySettings(kSchema, profile, keyValues);
 }
 
-std::string describe(const SixelProfile& p) {
-  return fmt::format("registers={}\nwidth={}\nheight={}\np1={}\np2={}\n", p.registers, p.width, p.height, p.p1,
-                     p.p2);
-}
+std::string describe(const SixelProfile& profile) { return describeSettings(kSchema, profile); }
 
 }  // namespace lattice::sixel

@@ -5,6 +5,8 @@
 #include <string_view>
 #include <vector>
 
+#include "foundation/settings_schema.hpp"
+
 namespace lattice::sixel {
 
 struct SixelProfile {
@@ -28,8 +30,13 @@ struct SixelProfile {
   void validate() const;
 };
 
-// Keys: registers, width, height, p1, p2. Throws lattice::Error(Usage) and
-// leaves the profile unchanged on a bad one.
+// The profile's settings, each key declared once (sixel_profile.cpp):
+// --set, describe() and docs/cli.md's table are read from it.
+const SettingsSchema<SixelProfile>& sixelSettings();
+
+// One "key=value" from `--set`. Throws lattice::Error(Usage) naming the key
+// and what it takes (or listing the keys), and leaves the profile unchanged
+// on a bad one.
 void applyOverride(SixelProfile& profile, std::string_view keyValue);
 void applyOverrides(SixelProfile& profile, const std::vector<std::string>& keyValues);
 std::string describe(const SixelProfile& profile);

@@ -2,59 +2,53 @@
 
 #include <fmt/format.h>
 
-#include <array>
-
 #include "foundation/error.hpp"
-#include "foundation/key_value.hpp"
-#include "foundation/name_table.hpp"
 
 namespace lattice::tek4014 {
 namespace {
+
+using P = Tek4014Profile;
+
 constexpr std::string_view kContext = "tek4014 profile";
-constexpr std::string_view kKeys = "bits, dither, baud";
-}  // namespace
 
-namespace {
-constexpr std::array<EnumName<Tek4014Dither>, 3> kDitherNames = {{
-    {Tek4014Dither::FloydSteinberg, "floyd-steinberg"},
-    {Tek4014Dither::Ordered, "ordered"},
-    {Tek4014Dither::Threshold, "threshold"},
-}};
-}  // namespace
+constexpr std::string_view kDitherNames[] = {"floyd-steinberg", "ordered", "threshold"};  // Tek4014Dither's order
 
-std::string_view ditherName(Tek4014Dither dither) { return nameOfValue(kDitherNames, dither, "?"); }
+// Every key of the profile, in describe()'s order (docs/cli.md shows this
+// table); the screen follows from the address bits.
+constexpr Setting<P> kSettings[] = {
+    whole<&P::addressBits>("bits", {10, 12},
+                           "address bits, 10 or 12: 12 for the 4014's enhanced graphics module (a 4096x3120 screen)"),
+    reported<P>("width", [](const P& p) { return fmt::format("{}", p.width()); }),
+    reported<P>("height", [](const P& p) { return fmt::format("{}", p.height()); }),
+    choice<kDitherNames, &P::dither>("dither",
+        "how grey becomes lit and dark dots: error diffusion, a Bayer matrix or a plain threshold"),
+    whole<&P::line, &LineFormat::baud>("baud", {1}, "the line's rate: only the reported transmit time follows it"),
+};
 
-void applyOverride(Tek4014Profile& profile, std::string_view keyValue) {
-  Tek4014Profile p = profile;  // a rejected override leaves the profile as it was
-  const KeyValue kv = splitKeyValue(kContext, keyValue, kKeys);
-  if (kv.key == "bits") {
-    p.addressBits = parseIntSetting(kContext, kv);
-    if (p.addressBits != 10 && p.addressBits != 12)
-      throw Error(ErrorKind::Usage, fmt::format("{}: bits={} must be 10 (1024x780) or 12 (4096x3120)", kContext,
-                                                kv.value));
-  } else if (kv.key == "dither") {
-    const auto dither = valueNamed(kDitherNames, kv.value);
-    if (!dither)
-      throw Error(ErrorKind::Usage,
-                  fmt::format("{}: dither={} must be {}", kContext, kv.value, choicesOf(kDitherNames)));
-    p.dither = *dither;
-  } else if (kv.key == "baud") {
-    p.line.baud = parseIntSetting(kContext, kv);
-    if (p.line.baud <= 0)
-      throw Error(ErrorKind::Usage, fmt::format("{}: baud={} must be positive", kContext, kv.value));
-  } else {
-    unknownSetting(kContext, kv, kKeys);
-  }
-  profile = p;
+void validate(const P& p) {
+  if (p.addressBits != 10 && p.addressBits != 12)
+    throw Error(ErrorKind::Usage,
+                fmt::format("{}: {} address bits are not supported; use 10 (1024x780) or 12 (4096x3120)",
+                            kContext, p.addressBits));
 }
+
+constexpr SettingsSchema<P> kSchema{kContext, kSettings, [] { return P{}; }, validate};
+
+}  // namespace
+
+const SettingsSchema<Tek4014Profile>& tek4014Settings() { return kSchema; }
+
+std::string_view ditherName(Tek4014Dither dither) {
+  const auto i = static_cast<std::size_t>(dither);
+  return i < std::size(kDitherNames) ? kDitherNames[i] : "?";
+}
+
+void applyOverride(Tek4014Profile& profile, std::string_view keyValue) { applySetting(kSchema, profile, keyValue); }
 
 void applyOverrides(Tek4014Profile& profile, const std::vector<std::string>& keyValues) {
-  for (const auto& kv : keyValues) applyOverride(profile, kv);
+  applySettings(kSchema, profile, keyValues);
 }
 
-std::string describe(const Tek4014Profile& p) {
-  return fmt::format("bits={}\nwidth={}\nheight={}\ndither={}\nbaud={}\n", p.addressBits, p.width(), p.height(),
-                     ditherName(p.dither), p.line.baud);
-}
+std::string describe(const Tek4014Profile& profile) { return describeSettings(kSchema, profile); }
 
 }  // namespace lattice::tek4014

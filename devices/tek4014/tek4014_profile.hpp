@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "foundation/line_timing.hpp"
+#include "foundation/settings_schema.hpp"
 
 namespace lattice::tek4014 {
 
@@ -38,9 +39,13 @@ struct Tek4014Profile {
 
 std::string_view ditherName(Tek4014Dither dither);
 
-// One "key=value" from `--set` (keys: bits (10|12), dither
-// (floyd-steinberg|ordered|threshold), baud). Throws lattice::Error(Usage)
-// and leaves the profile unchanged on a bad one.
+// The profile's settings, each key declared once (tek4014_profile.cpp):
+// --set, describe() and docs/cli.md's table are read from it.
+const SettingsSchema<Tek4014Profile>& tek4014Settings();
+
+// One "key=value" from `--set`. Throws lattice::Error(Usage) naming the key
+// and what it takes (or listing the keys), and leaves the profile unchanged
+// on a bad one.
 void applyOverride(Tek4014Profile& profile, std::string_view keyValue);
 void applyOverrides(Tek4014Profile& profile, const std::vector<std::string>& keyValues);
 std::string describe(const Tek4014Profile& profile);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "foundation/line_timing.hpp"
+#include "foundation/settings_schema.hpp"
 
 namespace lattice::tek4027 {
 
@@ -83,13 +84,14 @@ struct Tek4027Profile {
 Tek4027Profile tek4027Preset(std::string_view name);
 std::vector<std::string> tek4027PresetNames();
 
-// Apply one "key=value" from `--set` (keys: profile (strict|compact), width,
-// height, baud, data-bits, parity, stop-bits, chars-per-second, command-char
-// (ASCII code), separator (space|comma), terminator (cr|semicolon),
-// background-pot, max-points, pacing (none|report|auto), record-bytes,
-// rve-first (move|draw)).
-// Throws lattice::Error(Usage) and leaves the profile unchanged on a bad one.
-// applyOverrides() applies `profile=` first, so the other keys refine it.
+// The profile's settings, each key declared once (tek4027_profile.cpp):
+// --set, describe() and docs/cli.md's table are read from it.
+const SettingsSchema<Tek4027Profile>& tek4027Settings();
+
+// Apply one "key=value" from `--set`. Throws lattice::Error(Usage) naming the
+// key and what it takes (or listing the keys), and leaves the profile
+// unchanged on a bad one. applyOverrides() applies `profile=` (a preset)
+// first, so the other keys refine it.
 void applyOverride(Tek4027Profile& profile, std::string_view keyValue);
 void applyOverrides(Tek4027Profile& profile, const std::vector<std::string>& keyValues);
 std::string describe(const Tek4027Profile& profile);

@@ -68,9 +68,12 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
     return false;
   };
   d.runCost = [profile](const IndexedImage& picture) { return tek4125RunCost(profile, picture); };
-  // Forms that draw the same screen in fewer bytes, off by default.
-  if (profile.formSet().fullXy) d.wireSettings.push_back("xy-short=on");  // compact's short xy goes further
-  if (profile.formSet().fittedDepth) d.wireSettings.push_back("ru-bits=fit");
+  // Forms that draw the same screen in fewer bytes, off by default, as the
+  // settings that turn them on.
+  Tek4125Profile wire = profile;
+  if (profile.formSet().fullXy) wire.xyShort = true;  // compact's short xy goes further
+  if (profile.formSet().fittedDepth) wire.ruBitsFit = true;
+  d.wireSettings = settingsChanged(tek4125Settings(), profile, wire);
   return d;
 }
 

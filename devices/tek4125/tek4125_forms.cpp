@@ -20,6 +20,6 @@ const std::vector<Tek4125Forms>& tek4125FormSets() {
 
 std::string tek4125FormSetNames() { return namesOf(tek4125FormSets()); }
 
-const Tek4125Forms& tek4125Forms(std::string_view name) { return findNamed(tek4125FormSets(), name, "profile"); }
+const Tek4125Forms& tek4125Forms(std::string_view name) { return findNamed(tek4125FormSets(), name, "form set"); }
 
 }  // namespace lattice::tek4125

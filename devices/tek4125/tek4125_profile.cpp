@@ -6,45 +6,117 @@
 #include <bit>
 
 #include "foundation/error.hpp"
-#include "foundation/key_value.hpp"
+#include "foundation/name_table.hpp"
 
 namespace lattice::tek4125 {
 
 namespace {
 
-constexpr const char* kKeys =
-    "profile, width, height, planes, palette-bits, reserved, baud, data-bits, parity, stop-bits, xon-xoff, "
-    "power-up-map, strategy, rr-origin, rh-origin, surface-planes, pixel-bits, raster-rows, progressive, xy-short, ru-bits";
+using P = Tek4125Profile;
 
-void requireRange(const char* key, int value, int lo, int hi) {
-  if (value < lo || value > hi)
-    throw Error(ErrorKind::Usage,
-                fmt::format("tek4125 profile: {}={} is out of range; use a value in {}..{}", key, value, lo, hi));
+// The names of a table of named entries (form sets, strategies), kept for
+// the program's life as the tables are.
+template <class Table>
+std::vector<std::string_view> namesIn(const Table& table) {
+  std::vector<std::string_view> names;
+  for (const auto& entry : table) names.push_back(entryName(entry));
+  return names;
 }
 
-// false for `usual`, true for `other`.
-bool originSetting(const KeyValue& kv, std::string_view usual, std::string_view other) {
-  if (kv.value == usual) return false;
-  if (kv.value == other) return true;
-  throw Error(ErrorKind::Usage, fmt::format("tek4125 profile: {}={} must be {} or {}", kv.key, kv.value, usual, other));
+SettingChoices formSetNames() {
+  static const std::vector<std::string_view> names = namesIn(tek4125FormSets());
+  return names;
+}
+
+SettingChoices strategyNames() {
+  static const std::vector<std::string_view> names = namesIn(tek4125Strategies());
+  return names;
+}
+
+double indexIn(SettingChoices names, std::string_view name) {
+  return static_cast<double>(std::find(names.begin(), names.end(), name) - names.begin());
+}
+
+constexpr std::string_view kParity[] = {"none", "even", "odd"};  // even and odd: only the bit time matters
+constexpr std::string_view kPowerUpMaps[] = {"pgplot", "ral-cgm"};  // Tek4125PowerUpMap's order
+constexpr std::string_view kRrOrigins[] = {"screen", "viewport"};
+constexpr std::string_view kRhOrigins[] = {"viewport", "screen"};
+constexpr std::string_view kPixelBits[] = {"ru", "surface"};
+constexpr std::string_view kRasterRows[] = {"up", "down"};
+constexpr std::string_view kRuBits[] = {"planes", "fit"};
+
+// Rows that the constraints over several keys name.
+constexpr auto kPlanes = whole<&P::planes>("planes", {4, 8}, "bit planes, 4 or 8: 4 for a 16-colour unit");
+constexpr auto kReserved = whole<&P::reserved>("reserved", {0, 254},
+                                                "colour map entries the picture leaves alone, e.g. for dialog-area text");
+constexpr auto kSurfacePlanes =
+    whole<&P::surfacePlanes>("surface-planes", {0, 8},
+                             "the emulator's planes of surface 1 before any RD, at most planes (0: all)");
+
+// Every key of the profile, in describe()'s order (docs/cli.md shows this table).
+constexpr Setting<P> kSettings[] = {
+    {"profile", SettingKind::Choice, {}, formSetNames,
+     "the form set: strict sends only forms an independent program sends; compact is smaller and relies on our "
+     "readings",
+     [](const P& p) { return indexIn(formSetNames(), p.forms); },
+     [](P& p, double i) { p.forms = formSetNames()[static_cast<std::size_t>(i)]; }},
+    whole<&P::width>("width", {1, 4096},
+                     "visible pixels across, if your terminal's differ from the sibling 4115B's we assume"),
+    whole<&P::height>("height", {1, 4096},
+                      "visible pixels down, if your terminal's differ from the sibling 4115B's we assume"),
+    kPlanes,
+    whole<&P::paletteBits>("palette-bits", {3, 24},
+        "colour map precision in bits, for a terminal with coarser guns (recorded; the map is sent in percent)"),
+    kReserved,
+    whole<&P::baud>("baud", {50, 1000000},
+                    "the host port's rate: the reported transmit time and --baud's default follow it"),
+    whole<&P::dataBits>("data-bits", {7, 8}, "bits a character on the line, for the transmit time"),
+    choice<kParity, &P::parity>("parity", "the line's parity, for the transmit time"),
+    whole<&P::stopBits>("stop-bits", {1, 2}, "stop bits a character on the line, for the transmit time"),
+    onOff<&P::xonXoff>("xon-xoff", "whether the terminal flags DC1/DC3 on the line (recorded; the stream is the same)"),
+    choice<kPowerUpMaps, &P::powerUpMap>("power-up-map",
+        "the emulator's colour map before any TG: PGPLOT's table or RAL-CGM's (they differ at 5..7)"),
+    {"strategy", SettingKind::Choice, {}, strategyNames,
+     "how the driver spends bytes within the form set; shortest tries each way and keeps the smallest stream",
+     [](const P& p) { return indexIn(strategyNames(), p.strategy); },
+     [](P& p, double i) { p.strategy = strategyNames()[static_cast<std::size_t>(i)]; }},
+    choice<kRrOrigins, &P::rrFromViewport>("rr-origin",
+        "the emulator's reading of RR corners: relative to the screen or to the pixel viewport"),
+    choice<kRhOrigins, &P::rhFromScreen>("rh-origin",
+                                         "the emulator's reading of RH: relative to the viewport or to the screen"),
+    kSurfacePlanes,
+    choice<kPixelBits, &P::pixelBitsFromSurface>("pixel-bits",
+        "the emulator's packing of RP and RL pixels: by the bits RU set or by surface 1's planes"),
+    choice<kRasterRows, &P::rasterRowsDown>("raster-rows",
+        "the emulator's beam after RS: from the lower left, wrapping a row up, or from the upper left, wrapping down"),
+    onOff<&P::progressive>("progressive",
+                           "a blocky whole picture first, then the rows interlaced: the picture early on a slow line"),
+    onOff<&P::xyShort>("xy-short",
+        "strict: RR and RH xys leave out an unchanged Hi-Y and Hi-X (one source); fewer bytes, on under a wire budget"),
+    choice<kRuBits, &P::ruBitsFit>("ru-bits",
+        "compact: RU writes as few bits a pixel as the palette needs (no source); fewer bytes, on under a wire budget"),
+};
+
+constexpr SettingsSchema<P> kSchema{"tek4125 profile", kSettings, [] { return P{}; },
+                                    [](const P& p) { p.validate(); }};
+
+[[noreturn]] void refuse(const std::string& what) {
+  throw Error(ErrorKind::Usage, fmt::format("{}: {}", kSchema.context, what));
 }
 
 }  // namespace
 
+const SettingsSchema<Tek4125Profile>& tek4125Settings() { return kSchema; }
+
 void Tek4125Profile::validate() const {
-  (void)formSet();  // throws for an unknown form set
-  (void)tek4125Strategy(strategy);
-  // 4095 is the largest 12-bit pixel coordinate the raster commands can address.
-  requireRange("width", width, 1, 4096);
-  requireRange("height", height, 1, 4096);
-  if (planes != 4 && planes != 8)
-    throw Error(ErrorKind::Usage, fmt::format("tek4125 profile: planes={} is not supported; use planes=4 or planes=8", planes));
-  requireRange("palette-bits", paletteBits, 3, 24);
-  requireRange("reserved", reserved, 0, colorMapSize() - 2);
-  requireRange("baud", baud, 50, 1000000);
-  requireRange("data-bits", dataBits, 7, 8);
-  requireRange("stop-bits", stopBits, 1, 2);
-  requireRange("surface-planes", surfacePlanes, 0, planes);
+  checkSettings(kSchema, *this);  // each field in its row's range or among its names
+  if (planes != 4 && planes != 8) refuse(fmt::format("{0}={1} is not supported; use {0}=4 or {0}=8", kPlanes.key, planes));
+  // Two entries at least are left for the picture.
+  if (reserved > colorMapSize() - 2)
+    refuse(fmt::format("{}={} is out of range; use a value in 0..{} with {}={}", kReserved.key, reserved,
+                       colorMapSize() - 2, kPlanes.key, planes));
+  if (surfacePlanes > planes)
+    refuse(fmt::format("{}={} is more than {}={}", kSurfacePlanes.key, surfacePlanes, kPlanes.key, planes));
 }
 
 int Tek4125Profile::pixelBitsFor(int colours) const {
@@ -54,59 +126,12 @@ int Tek4125Profile::pixelBitsFor(int colours) const {
   return planes;
 }
 
-void applyOverride(Tek4125Profile& profile, std::string_view keyValue) {
-  constexpr std::string_view kContext = "tek4125 profile";
-  Tek4125Profile p = profile;  // a rejected override leaves the profile as it was
-  const KeyValue kv = splitKeyValue(kContext, keyValue, kKeys);
-  const std::string_view key = kv.key;
-  if (key == "profile") p.forms = tek4125Forms(kv.value).name;
-  else if (key == "strategy") p.strategy = tek4125Strategy(kv.value).name;
-  else if (key == "rr-origin") p.rrFromViewport = originSetting(kv, "screen", "viewport");
-  else if (key == "rh-origin") p.rhFromScreen = originSetting(kv, "viewport", "screen");
-  else if (key == "surface-planes") p.surfacePlanes = parseIntSetting(kContext, kv);
-  else if (key == "pixel-bits") p.pixelBitsFromSurface = originSetting(kv, "ru", "surface");
-  else if (key == "raster-rows") p.rasterRowsDown = originSetting(kv, "up", "down");
-  else if (key == "power-up-map") {
-    if (kv.value == "pgplot") p.powerUpMap = Tek4125PowerUpMap::Pgplot;
-    else if (kv.value == "ral-cgm") p.powerUpMap = Tek4125PowerUpMap::RalCgm;
-    else throw Error(ErrorKind::Usage, fmt::format("tek4125 profile: power-up-map={} must be pgplot or ral-cgm", kv.value));
-  } else if (key == "width") p.width = parseIntSetting(kContext, kv);
-  else if (key == "height") p.height = parseIntSetting(kContext, kv);
-  else if (key == "planes") p.planes = parseIntSetting(kContext, kv);
-  else if (key == "palette-bits") p.paletteBits = parseIntSetting(kContext, kv);
-  else if (key == "reserved") p.reserved = parseIntSetting(kContext, kv);
-  else if (key == "baud") p.baud = parseIntSetting(kContext, kv);
-  else if (key == "data-bits") p.dataBits = parseIntSetting(kContext, kv);
-  else if (key == "stop-bits") p.stopBits = parseIntSetting(kContext, kv);
-  else if (key == "xon-xoff") p.xonXoff = parseSwitchSetting(kContext, kv);
-  else if (key == "progressive") p.progressive = parseSwitchSetting(kContext, kv);
-  else if (key == "xy-short") p.xyShort = parseSwitchSetting(kContext, kv);
-  else if (key == "ru-bits") p.ruBitsFit = originSetting(kv, "planes", "fit");
-  else if (key == "parity") {
-    if (kv.value == "none") p.parity = false;
-    else if (kv.value == "even" || kv.value == "odd") p.parity = true;  // only its bit time matters here
-    else throw Error(ErrorKind::Usage, fmt::format("tek4125 profile: parity={} must be none, even or odd", kv.value));
-  } else {
-    unknownSetting(kContext, kv, kKeys);
-  }
-  p.validate();
-  profile = p;
-}
+void applyOverride(Tek4125Profile& profile, std::string_view keyValue) { applySetting(kSchema, profile, keyValue); }
 
 void applyOverrides(Tek4125Profile& profile, const std::vector<std::string>& keyValues) {
-  for (const auto& kv : keyValues) applyOverride(profile, kv);
+  applySettings(kSchema, profile, keyValues);
 }
 
-std::string describe(const Tek4125Profile& p) {
-  return fmt::format(
-      "profile={}\nwidth={}\nheight={}\nplanes={}\npalette-bits={}\nreserved={}\nbaud={}\ndata-bits={}\n"
-      "parity={}\nstop-bits={}\nxon-xoff={}\npower-up-map={}\nstrategy={}\nrr-origin={}\nrh-origin={}\n"
-      "surface-planes={}\npixel-bits={}\nraster-rows={}\nprogressive={}\nxy-short={}\nru-bits={}\n",
-      p.forms, p.width, p.height, p.planes, p.paletteBits, p.reserved, p.baud, p.dataBits, p.parity ? "even" : "none",
-      p.stopBits, p.xonXoff ? "on" : "off", p.powerUpMap == Tek4125PowerUpMap::Pgplot ? "pgplot" : "ral-cgm",
-      p.strategy, p.rrFromViewport ? "viewport" : "screen", p.rhFromScreen ? "screen" : "viewport", p.surfacePlanes,
-      p.pixelBitsFromSurface ? "surface" : "ru", p.rasterRowsDown ? "down" : "up", p.progressive ? "on" : "off", p.xyShort ? "on" : "off",
-      p.ruBitsFit ? "fit" : "planes");
-}
+std::string describe(const Tek4125Profile& profile) { return describeSettings(kSchema, profile); }
 
 }  // namespace lattice::tek4125

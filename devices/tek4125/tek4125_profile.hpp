@@ -10,6 +10,7 @@
 #include "devices/tek4125/tek4125_forms.hpp"
 #include "devices/tek4125/tek4125_strategy.hpp"
 #include "foundation/line_timing.hpp"
+#include "foundation/settings_schema.hpp"
 
 namespace lattice::tek4125 {
 
@@ -69,17 +70,16 @@ struct Tek4125Profile {
   void validate() const;
 };
 
-// Apply one "key=value" (keys: profile (strict|compact), width, height,
-// planes, palette-bits, reserved, baud, data-bits, parity (none|even|odd),
-// stop-bits, xon-xoff (on|off), power-up-map (pgplot|ral-cgm), strategy
-// (shortest|plain|skip|rectangles|spans|runs), rr-origin (screen|viewport),
-// rh-origin (viewport|screen), surface-planes (0..planes), pixel-bits
-// (ru|surface), raster-rows (up|down), progressive (on|off), xy-short (on|off),
-// ru-bits (planes|fit)).
-// Unknown keys and bad values throw lattice::Error(Usage) listing the keys.
+// The profile's settings, each key declared once (tek4125_profile.cpp):
+// --set, describe() and docs/cli.md's table are read from it.
+const SettingsSchema<Tek4125Profile>& tek4125Settings();
+
+// Apply one "key=value". Unknown keys and bad values throw
+// lattice::Error(Usage) naming the key and what it takes (or listing the
+// keys), and leave the profile as it was.
 void applyOverride(Tek4125Profile& profile, std::string_view keyValue);
 void applyOverrides(Tek4125Profile& profile, const std::vector<std::string>& keyValues);
-// One line per field, for `--help`-style listings and reports.
+// One key=value line per setting, in the table's order: what --set takes back.
 std::string describe(const Tek4125Profile& profile);
 
 }  // namespace lattice::tek4125

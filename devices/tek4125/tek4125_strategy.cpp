@@ -20,7 +20,7 @@ const std::vector<Tek4125NamedStrategy>& tek4125Strategies() {
 std::string tek4125StrategyNames() { return namesOf(tek4125Strategies()); }
 
 const Tek4125NamedStrategy& tek4125Strategy(std::string_view name) {
-  return findNamed(tek4125Strategies(), name, "strategy");
+  return findNamed(tek4125Strategies(), name, "driver strategy");
 }
 
 }  // namespace lattice::tek4125

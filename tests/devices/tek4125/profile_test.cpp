@@ -52,6 +52,15 @@ TEST_CASE("bad overrides are usage errors that say what is allowed") {
   CHECK_THAT(message("colours=3"), Catch::Contains("unknown key"));
   CHECK_THAT(message("baud=fast"), Catch::Contains("whole number"));
   CHECK_THAT(message("planes"), Catch::Contains("key=value"));
-  CHECK_THAT(message("reserved=255"), Catch::Contains("0..254"));
-  CHECK_THAT(message("width=5000"), Catch::Contains("1..4096"));
+  CHECK_THAT(message("reserved=255"), Catch::Contains("reserved: '255' is out of range; give a whole number from 0 to 254"));
+  CHECK_THAT(message("width=5000"), Catch::Contains("from 1 to 4096"));
+  // With 16 colour map entries, the range's top is the planes', not the key's alone.
+  Tek4125Profile four;
+  applyOverride(four, "planes=4");
+  try {
+    applyOverride(four, "reserved=15");
+    FAIL("reserved=15 with 4 planes was taken");
+  } catch (const Error& e) {
+    CHECK_THAT(e.what(), Catch::Contains("0..14"));
+  }
 }

@@ -1,0 +1,61 @@
+// docs/cli.md's table of each device's --set keys is the device's settings
+// table (foundation/settings_schema.hpp), regenerated here and compared with
+// the doc's text between the device's markers, so a key added, renamed or
+// re-ranged in code and not in the doc fails this test. On a difference it
+// prints the block to paste; LATTICE_REGENERATE_GOLDENS=1 rewrites the doc
+// instead (scripts/regenerate-goldens.sh devices/shared).
+#include <catch2/catch.hpp>
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include "devices/device_table.hpp"
+#include "foundation/system/atomic_file.hpp"
+#include "tests/support/golden.hpp"
+
+namespace {
+
+std::string readText(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+}  // namespace
+
+TEST_CASE("docs/cli.md lists each device's --set keys as its settings table declares them") {
+  const std::filesystem::path doc = lattice::testing::sourcePath("docs/cli.md");
+  std::string text = readText(doc);
+  REQUIRE_FALSE(text.empty());
+  bool rewritten = false;
+  for (const lattice::devices::DeviceEntry& entry : lattice::devices::deviceTable()) {
+    const std::string begin = fmt::format("<!-- settings:{} begin -->\n", entry.name);
+    const std::string end = fmt::format("<!-- settings:{} end -->\n", entry.name);
+    const std::string generated = lattice::settingsMarkdown(entry.settings());
+    const std::size_t from = text.find(begin);
+    const std::size_t to = text.find(end);
+    INFO("device " << entry.name << ": " << begin << "..." << end);
+    REQUIRE(from != std::string::npos);
+    REQUIRE(to != std::string::npos);
+    REQUIRE(from < to);
+    const std::size_t inside = from + begin.size();
+    if (lattice::testing::regeneratingGoldens()) {
+      text = text.substr(0, inside) + generated + text.substr(to);
+      rewritten = true;
+      continue;
+    }
+    const bool same = text.substr(inside, to - inside) == generated;
+    // Unwrapped, to paste: Catch's own report folds long lines.
+    if (!same) std::cout << "docs/cli.md needs, for device " << entry.name << ":\n" << begin << generated << end;
+    CHECK(same);
+  }
+  if (rewritten) {
+    lattice::writeFileAtomically(doc, std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+    WARN("rewrote the device settings tables of " << doc.string());
+  }
+}
