@@ -5,9 +5,9 @@
 // Method and tunables:
 // * The command tree is built once (buildCommandTree) and read for every
 //   command, nested ones too, and each command's flags; the devices' --set
-//   keys are read from the device table (the key list a bad key's error
-//   gives). Nothing here lists a command or a flag, so one added later is
-//   fuzzed the day it lands.
+//   keys and their choices are read from the device table's settings tables
+//   (foundation/settings_schema.hpp). Nothing here lists a command, a flag or
+//   a key, so one added later is fuzzed the day it lands.
 // * Input bytes are a program: byte 0 picks the command; then each byte
 //   picks a flag of it, and the flag's value comes from the next bytes: a
 //   number from the number pool for numeric flags (in-range values kept
@@ -38,6 +38,7 @@
 #include "app/commands/run_lattice.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/error.hpp"
+#include "foundation/settings_schema.hpp"
 #include "fuzz/entries.hpp"
 
 namespace lattice::fuzz {
@@ -99,25 +100,15 @@ Table buildTable() {
   CLI::App root;
   app::buildCommandTree(root);
   collect(root, {}, t.commands);
-  for (const devices::DeviceEntry& entry : devices::deviceTable()) {
-    try {
-      (void)devices::makeDevice(entry.name, {"?=?"});
-    } catch (const Error& e) {
-      // "...: unknown key '?'; keys: a, b, c": the profile's own list.
-      const std::string text = e.what();
-      const std::size_t at = text.find("keys: ");
-      if (at == std::string::npos) continue;
-      std::string keys = text.substr(at + 6);
-      std::size_t from = 0;
-      while (from < keys.size()) {
-        const std::size_t comma = std::min(keys.find(", ", from), keys.size());
-        const std::string key = keys.substr(from, comma - from);
-        for (const char* value : {"0", "1", "4", "nan", "inf", "-1", "99999999999", "on", "x"})
-          t.setItems.push_back(key + "=" + value);
-        from = comma + 2;
-      }
+  // Each device's keys from its settings table: its choices, its range's
+  // ends and the values every number must refuse.
+  for (const devices::DeviceEntry& entry : devices::deviceTable())
+    for (const SettingInfo& setting : entry.settings()) {
+      const std::string key(setting.key);
+      for (const std::string_view choice : setting.choices) t.setItems.push_back(key + "=" + std::string(choice));
+      for (const char* value : {"0", "1", "4", "nan", "inf", "-1", "99999999999", "on", "x"})
+        t.setItems.push_back(key + "=" + value);
     }
-  }
   t.setItems.push_back("no-equals");
   t.dir = std::filesystem::temp_directory_path() / ("lattice-fuzz-cli-" + std::to_string(::getpid()));
   std::filesystem::create_directories(t.dir);
