@@ -66,7 +66,7 @@ std::pair<int, int> polygonRows(const IndexedImage& screen, std::span<const doub
 // numerator grows by 2 |delta| a step and |delta| <= n, so the quotient
 // grows by at most one a step, a carry.
 // (The per-step 128-bit division made a 1 MB stream of long vectors take
-// 7 s; issue 15's target is 5 s for any 1 MB stream.)
+// 7 s; docs/limits.md promises 5 s for any 1 MB stream.)
 struct Stepper {
   long position, remainder, increment, modulus, sign;
   Stepper(long i, long origin, long delta, long n)

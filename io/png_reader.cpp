@@ -10,7 +10,7 @@
 // Samples are returned as written: no png_set_gamma / png_set_alpha_mode is
 // ever called, so gAMA, sRGB, cHRM and iCCP change nothing. (libpng's
 // simplified API converted a file with gAMA 1.0, as POV-Ray writes, to sRGB,
-// so `lattice diff` compared converted samples: issue 13.) Alpha is
+// so `lattice diff` compared converted samples.) Alpha is
 // composited onto black on the stored values: out = round(c * a / 255).
 //
 // libpng reports errors by longjmp; each step that calls libpng sets its own

@@ -11,7 +11,7 @@ namespace lattice::lht {
 std::uint64_t LatticeDefinition::hashFor(LhtPrecision entryForm) const {
   // From our canonical form of the values (loader/canonical_toml.hpp), never a
   // formatter's output (toml++ 3.3.0's formatter overflowed a float-to-int
-  // cast on small numbers in nested arrays: issue 15). "lattice2" marks the
+  // cast on small numbers in nested arrays, docs/limits.md). "lattice2" marks the
   // key's second form: caches keyed by the formatter's text are refused as
   // rasterized from another definition (docs/lattices.md). The thesis's
   // precision adds nothing to the key.

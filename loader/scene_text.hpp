@@ -1,5 +1,5 @@
 #pragma once
-// Checks on a scene file's text before the TOML parser sees it (issue 15).
+// Checks on a scene file's text before the TOML parser sees it (docs/limits.md, "toml++").
 //
 // Method and why: Debian's toml++ 3.3.0 has undefined behaviour in its
 // Unicode whitespace test (is_non_ascii_horizontal_whitespace reaches

@@ -55,7 +55,7 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   // orientations added a turned copy of the frame (1 B a pixel); the paced
   // copy of the winner takes the place of the candidate, so pacing adds none.
   // 20 B a pixel left the 5000-hair sphere 195 KiB above its prediction once
-  // issue 13's leaves and issue 16's static C++ runtime moved what is
+  // the closed-form leaves and the static C++ runtime moved what is
   // resident before the driver starts (bench/memory-calibration.sh, 2026-12-02).
   d.driverMemory = [](int w, int h) { return 22 * pixels(w, h); };
   d.emulatorMemory = 3 * pixels(profile.width, profile.height);  // the screen, and its RGB copy for the PNG

@@ -15,7 +15,7 @@
 //            run codes each, as the RAL GKS 4200 driver sends them.
 //            RP only at 4 bits a pixel; a picture of more than 16 colours
 //            goes as RL at 8 bits, as the GKS driver's 8-plane workstations.
-//   compact  the forms the driver sent before issue 14 (viewport around the
+//   compact  the forms the driver sent before `strict` (viewport around the
 //            picture, short xy forms, one TG for the whole palette, raw DEL,
 //            background left to the ESC FF clear, RP at 8 bits) plus RL
 //            without the GKS driver's limits, and RP and RL following each

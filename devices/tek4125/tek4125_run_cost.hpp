@@ -6,9 +6,9 @@
 // a capped RL) and, where the form set allows RP at this depth, its raster
 // bits; a run of the picture's most frequent colour may instead be skipped,
 // which inside a row costs the next span's header (`ESC RH xy ESC RL count`:
-// 12 bytes in strict). Before issue 25's second pass a skip counted as free,
-// and the programme turned near-background runs into background that the
-// planner then had to draw as codes anyway. Other span headers and
+// 12 bytes in strict). Counted as free, a skip let the programme turn
+// near-background runs into background that the planner then had to draw as
+// codes anyway. Other span headers and
 // rectangles are left out: they are shared by many runs.
 #include "devices/tek4125/tek4125_profile.hpp"
 #include "quantize/rate_distortion_runs.hpp"

@@ -1,7 +1,7 @@
 #pragma once
-// An instance: one object-space primitive shared by many placements (issue 13:
-// "a two-level structure (a top BVH over instances, one shared structure per
-// object ...)"). The scatter's union of instances is the top level; each
+// An instance: one object-space primitive shared by many placements (a
+// two-level structure: a top BVH over instances, one shared structure per
+// object). The scatter's union of instances is the top level; each
 // instance carries the ray into its object's space and the hit back.
 //
 // Method: a precomputed affine world-to-object map (3x4) takes the ray's

@@ -1,7 +1,7 @@
 #pragma once
-// A capsule as one leaf with closed-form intersections (issue 13: "closed-form
-// leaves ... the general quartic kept for what needs it"), for the floating
-// arithmetics. Fixed point keeps the quartic-and-CSG capsule of
+// A capsule as one leaf with closed-form intersections (closed-form leaves
+// where a shape has them, the general quartic kept for what needs it), for the
+// floating arithmetics. Fixed point keeps the quartic-and-CSG capsule of
 // composite_shapes.cpp, whose range checks it relies on.
 //
 // Method: the capsule is convex, so a line crosses it in one interval, and

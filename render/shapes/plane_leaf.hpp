@@ -1,8 +1,8 @@
 #pragma once
 // A half-space (a quartic of degree 1: a . x + a0 < 0 inside, such as the
 // scenes' `half_space` floors) as one leaf with a closed-form crossing, for
-// the floating arithmetics (issue 13: closed-form leaves, the general quartic
-// kept for what needs it). Fixed point keeps the quartic leaf.
+// the floating arithmetics (closed-form leaves where a shape has them, the
+// general quartic kept for what needs it). Fixed point keeps the quartic leaf.
 //
 // Method: the object-space plane is carried to the world once, at build time
 // (N = A^-T a, c = a0 - N . b for objectToWorld = (A, b), both divided by

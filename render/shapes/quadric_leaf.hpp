@@ -1,8 +1,8 @@
 #pragma once
 // A quadric (a quartic of degree 2: the scenes' cylinder, ellipsoid, cone,
 // paraboloid, hyperboloid) as one leaf with closed-form crossings, for the
-// floating arithmetics (issue 13: closed-form leaves, the general quartic kept
-// for what needs it). Fixed point keeps the quartic leaf.
+// floating arithmetics (closed-form leaves where a shape has them, the general
+// quartic kept for what needs it). Fixed point keeps the quartic leaf.
 //
 // Method: f(x) = x.A x + b.x + c with A symmetric, taken from the quartic's
 // coefficients once. The ray is carried to object space and re-based at its
