@@ -43,13 +43,8 @@ std::vector<StreamPoint> parseStreamPoints(const std::string& text, std::uint64_
   return points;
 }
 
-std::vector<std::string> checkStreamPointOutputs(const std::string& text, const std::string& output, bool force) {
-  std::vector<std::string> paths;
-  for (const StreamPoint& p : parseStreamPoints(text, 0)) {
-    paths.push_back(pointPngPath(output, p.tag));
-    checkOutputPath(paths.back(), "--at", force);
-  }
-  return paths;
+void checkStreamPointOutputs(const std::string& text, const std::string& output, bool force) {
+  for (const StreamPoint& p : parseStreamPoints(text, 0)) checkOutputPath(pointPngPath(output, p.tag), "--at", force);
 }
 
 std::string pointPngPath(const std::string& output, const std::string& tag) {

@@ -30,9 +30,9 @@ inline constexpr std::size_t kMaxStreamPoints = 32;
 std::vector<StreamPoint> parseStreamPoints(const std::string& text, std::uint64_t total);
 
 // The files the points of `text` will be written to (any stream length gives
-// the same names), each checked as -o is (app/output_check.hpp): called
+// the same names) checked as -o is (app/output_check.hpp): called
 // before the stream is read, so a bad --at costs nothing.
-std::vector<std::string> checkStreamPointOutputs(const std::string& text, const std::string& output, bool force);
+void checkStreamPointOutputs(const std::string& text, const std::string& output, bool force);
 
 // OUT.png and "25pct" -> OUT-at25pct.png.
 std::string pointPngPath(const std::string& output, const std::string& tag);

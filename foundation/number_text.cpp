@@ -30,30 +30,41 @@ std::string describeRange(NumberRange range) {
   return range.whole ? "a whole number" : "a finite number";
 }
 
-std::string numberTextProblem(std::string_view text, NumberRange range) {
+namespace {
+
+// The value of `text`, and why it is refused ("" when it is not).
+struct Reading {
   double value = 0;
+  std::string problem;
+};
+
+Reading readNumber(std::string_view text, NumberRange range) {
+  Reading r;
   // from_chars reads "nan" and "inf" as numbers, and takes no '+' or space:
   // the finiteness test below is what refuses the first two.
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), r.value);
   const bool parsed = !text.empty() && ec == std::errc() && end == text.data() + text.size();
-  if (!parsed || !std::isfinite(value))
-    return fmt::format("'{}' is not {}; give {}", text, ec == std::errc::result_out_of_range ? "a representable number" : "a finite number",
-                       describeRange(range));
+  if (!parsed || !std::isfinite(r.value))
+    r.problem = fmt::format("'{}' is not {}; give {}", text,
+                            ec == std::errc::result_out_of_range ? "a representable number" : "a finite number",
+                            describeRange(range));
   // Whole numbers in digits only: an integer flag's own conversion (CLI11's)
   // reads no fraction or exponent, so 1e3 and 4.0 are refused here, not there.
-  if (range.whole && (value != std::floor(value) || text.find_first_of(".eE") != std::string_view::npos))
-    return fmt::format("'{}' is not a whole number in digits; give {}", text, describeRange(range));
-  if (value < range.min || value > range.max)
-    return fmt::format("'{}' is out of range; give {}", text, describeRange(range));
-  return {};
+  else if (range.whole && (r.value != std::floor(r.value) || text.find_first_of(".eE") != std::string_view::npos))
+    r.problem = fmt::format("'{}' is not a whole number in digits; give {}", text, describeRange(range));
+  else if (r.value < range.min || r.value > range.max)
+    r.problem = fmt::format("'{}' is out of range; give {}", text, describeRange(range));
+  return r;
 }
 
+}  // namespace
+
+std::string numberTextProblem(std::string_view text, NumberRange range) { return readNumber(text, range).problem; }
+
 double parseNumberText(std::string_view what, std::string_view text, NumberRange range) {
-  const std::string problem = numberTextProblem(text, range);
-  if (!problem.empty()) throw Error(ErrorKind::Usage, fmt::format("{}: {}", what, problem));
-  double value = 0;
-  std::from_chars(text.data(), text.data() + text.size(), value);
-  return value;
+  const Reading r = readNumber(text, range);
+  if (!r.problem.empty()) throw Error(ErrorKind::Usage, fmt::format("{}: {}", what, r.problem));
+  return r.value;
 }
 
 int parseIntText(std::string_view what, std::string_view text, NumberRange range) {

@@ -111,11 +111,10 @@ std::string describeParseError(const CLI::App& root, const CLI::ParseError& erro
     const std::string flag = flagPart(argument);
     // Short flags may be bundled (-qk 16); only whole unknown names are judged.
     if (flag.rfind("--", 0) != 0 && flag.size() > 2) continue;
+    if (command->get_option_no_throw(flag) != nullptr) continue;
     for (const RemovedFlag& removed : kRemovedFlags)
-      if (command->get_option_no_throw(flag) == nullptr && flag == removed.flag)
-        return fmt::format("{}: {} was removed; write {} instead", path, flag, removed.instead);
-    if (command->get_option_no_throw(flag) == nullptr)
-      return fmt::format("{}: unknown flag '{}'; {}{}", path, flag, suggestion(flag, flags), help);
+      if (flag == removed.flag) return fmt::format("{}: {} was removed; write {} instead", path, flag, removed.instead);
+    return fmt::format("{}: unknown flag '{}'; {}{}", path, flag, suggestion(flag, flags), help);
   }
   return fmt::format("{}: {}; {}", path, tidy(error.what()), help);
 }

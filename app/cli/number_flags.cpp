@@ -48,12 +48,11 @@ CLI::Validator numberIn(NumberRange range) {
 void guardNumbers(CLI::App& root) {
   forEachNumericOption(root, "", [](const std::string&, CLI::Option& option, const std::string& type) {
     if (hasCheck(option, kCheckName)) return;
-    NumberRange range;
-    range.whole = type != "FLOAT";
     // 2^63 and 2^64 are the widest integers an option holds; CLI11's own
     // conversion refuses what overflows a narrower one.
-    if (type == "INT") range = {-9.2e18, 9.2e18, true};
-    if (type == "UINT") range = {0, 1.8e19, true};
+    const NumberRange range = type == "INT" ? NumberRange{-9.2e18, 9.2e18, true}
+                              : type == "UINT" ? NumberRange{0, 1.8e19, true}
+                                               : NumberRange{};
     option.check(numberIn(range).name(kBackstopName));
   });
 }

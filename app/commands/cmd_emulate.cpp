@@ -37,7 +37,7 @@ void runEmulate(const EmulateOptions& o, bool force) {
   using lattice::Error;
   using lattice::ErrorKind;
   // The --at items and the files they name are checked before anything is read.
-  if (!o.at.empty()) (void)lattice::app::checkStreamPointOutputs(o.at, o.output, force);
+  if (!o.at.empty()) lattice::app::checkStreamPointOutputs(o.at, o.output, force);
   const lattice::devices::Device device = lattice::devices::makeDevice(o.device, o.settings);
   std::unique_ptr<lattice::StreamDecoder> decoder = device.makeEmulator();
   // Refuses a PNG, a scene, an empty file... before it becomes a picture of noise.

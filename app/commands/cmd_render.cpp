@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+
 #include <initializer_list>
 #include <memory>
 #include <string>
@@ -189,9 +191,14 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
     job.baudFromProfile = cmd.count("--baud") == 0;
   }
   // One baud: --baud becomes the profile's rate too, so the wire budget, the
-  // timing line and the port all count at it (a device without a serial
-  // line, sixel, takes it for the budget alone).
-  if (cmd.count("--baud") > 0 && f.device != "png" && devices::makeDevice(f.device, job.settings).line) {
+  // timing line and the port all count at it. A device without a serial line
+  // (sixel) has no `baud` key in its settings table and takes it for the
+  // budget alone.
+  const auto hasBaudKey = [&] {
+    const std::vector<SettingInfo> keys = devices::deviceEntry(f.device).settings();
+    return std::any_of(keys.begin(), keys.end(), [](const SettingInfo& s) { return s.key == "baud"; });
+  };
+  if (cmd.count("--baud") > 0 && f.device != "png" && hasBaudKey()) {
     for (const std::string& setting : job.settings)
       if (setting.rfind("baud=", 0) == 0 && setting != fmt::format("baud={}", f.serial.baud))
         throw Error(ErrorKind::Usage, fmt::format("--baud {} and --set {} name two line rates; give one", f.serial.baud,
