@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# How long a newcomer waits for the compiler (docs/benchmarks.md, "Build time").
+# How long a newcomer waits for the compiler (docs/developing.md, "Build time"; figures from bench/build-time.sh).
 #   bench/build-time.sh [--runs N] [--rev REV] [--jobs J] [--targets 'lattice all']
 # Method: for each run and each target, a clean configure (scripts/build.sh's
 # flags and generator: Ninja where installed) and a clean build in a new

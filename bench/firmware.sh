@@ -5,11 +5,11 @@
 #   bench/firmware.sh [--board NAME] [--ram budget|board] [--size WxH] [--scene FILE] [--mode sample|passes]
 #                     [--sample N] [--set key=value ...]
 # --mode, --sample: the quantizer pipeline's (scripts/firmware.sh; the host's
-# render takes the same): sample (the default since issue 24) with the
+# render takes the same): sample (the default) with the
 # histogram from every Nth row and column (default 8: 1.125 renders a pixel;
 # 0.9 dB below two passes' palette on Plate 6's emulated screen, 4 is 0.8 dB
 # closer and 11 % more instructions, docs/firmware.md), or passes (every row
-# rendered twice, the figures measured before issue 24).
+# rendered twice, the older default).
 # --set: a Tek 4125 profile setting, given to the bake and to the host's
 # render alike; on netduinoplus2 the default is strategy=runs, the strategy
 # that streams rows with no frame (a 512x512 frame is 256 KiB, twice the

@@ -2,7 +2,7 @@
 # Where lattices still win: every example scene with lattices rendered in
 # lattice mode and with --full (each lattice replaced by its exact CSG
 # object), whole process, side by side (docs/gallery.md, "Where the lattice
-# wins"; issue 27, item 4).
+# wins").
 #   bench/lattice-vs-full.sh [--runs N] [--threads T] [--size WxH] [--out FILE]
 # Method: each case is a scene (and flags); a case is timed as `lattice render
 # SCENE -o x.png -q` three ways, in turn within each round so drift hits all

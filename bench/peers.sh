@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Lattice beside its peers, one command (issue 13): ours in lattice mode and
+# Lattice beside its peers, one command: ours in lattice mode and
 # with --full (lattices replaced by their exact objects), POV-Ray 3.7 on the
 # scene written by `lattice export pov`, and the Embree 3 program of
 # bench/peers/, run alternately (one run of each, in turn, N times) on the

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Turns bench/wire_bench's results into docs (issue 25): the SVG plot
+"""Turns bench/wire_bench's results into docs: the SVG plot
 docs/images/wire-trade.svg of PSNR against the Tek 4125 stream's seconds at
 9600 and 38400 baud (one x axis in bytes, labelled in seconds at both rates),
 one mark per form set, palette size, dithering and lambda; and the Markdown

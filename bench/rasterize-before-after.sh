@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Side-by-side rasterization speed of two `lattice` binaries (before and
-# after a change to lht/raster/rasterize or its cull), for docs/benchmarks.md.
+# after a change to lht/raster/rasterize or its cull), for a before/after row in bench/results/.
 #
 # Method: for each case, `lattice rasterize ... --stats` with BEFORE and AFTER
 # alternately (so load drifts hit both alike), N times each; reports each

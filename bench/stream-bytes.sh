@@ -7,7 +7,7 @@
 # 256-colour PNG. The reference PNG is our quantizer's indexed PNG
 # (`lattice quantize -k 256` of the truecolour render, the one the issue's
 # 59,194 bytes come from); pngquant's is shown beside it where installed.
-# Targets (issue 14): strict <= 2.0x, compact <= 1.5x that PNG.
+# Targets: strict <= 2.0x, compact <= 1.5x that PNG.
 #   bench/stream-bytes.sh [--build DIR] [--scenes "a.toml b.toml"] [--out FILE]
 set -euo pipefail
 source "$(dirname "$0")/lib.sh"

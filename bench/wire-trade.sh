@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The trade on the wire (docs/trade.md, "On the wire"; issue 25), one command:
+# The trade on the wire (docs/trade.md, "On the wire"), one command:
 #   bench/wire-trade.sh [--build DIR] [--scene NAME (fuzzy-sphere-1000)] [--size WxH (512x512)]
 #                       [--out DIR (BUILD/wire)] [--no-docs]
 # Renders the scene once and runs bench/wire_bench.cpp: every Tek 4125 form

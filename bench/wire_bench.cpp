@@ -1,6 +1,6 @@
 // wire_bench SCENE.toml [--size WxH] [--out DIR]
 //
-// The wire half of the trade (docs/trade.md, "On the wire"; issue 25): the
+// The wire half of the trade (docs/trade.md, "On the wire"): the
 // scene is rendered once (double, full ray trace, as bench/trade.sh's palette
 // rows), then for each 4125 form set (strict, compact), palette size,
 // dithering and rate-distortion lambda, the real driver writes its stream

@@ -2,7 +2,7 @@
 // cylinders, thesis 3.4) have true surfaces and normals. Two forms: quartics
 // joined by CSG (every arithmetic; the reference), and one closed-form leaf
 // (capsule_leaf.cpp) that float and double use: 1.7-3x faster, measured in
-// docs/benchmarks.md ("Issue 13 steps").
+// bench/results/2026-12-02-optimisation-steps.md.
 #include "render/shapes/composite_shapes.hpp"
 
 #include <type_traits>

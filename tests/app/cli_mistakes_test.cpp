@@ -1,4 +1,4 @@
-// Issue 28's command-line mistakes, run on the real binary: each gets one
+// Command-line mistakes, run on the real binary: each gets one
 // `lattice: error:` line that names the fix, and the exit code of its kind
 // (docs/cli.md). The before/after messages are in docs/cli.md ("Mistakes").
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// `lattice emulate` checks what it was given (issue 28): a PNG, a scene or an
+// `lattice emulate` checks what it was given: a PNG, a scene or an
 // empty file is refused with exit 3 naming what it is; another device's
 // stream names the device to use; --raw decodes the bytes anyway.
 #include <catch2/catch.hpp>

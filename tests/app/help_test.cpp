@@ -1,6 +1,6 @@
 // Help as docs/cli.md groups it, defaults that say what happens, the
 // program's name in usage lines, and the man page and bash completion
-// generated from the same command table (issue 28).
+// generated from the same command table.
 #include <catch2/catch.hpp>
 
 #include <cstdio>

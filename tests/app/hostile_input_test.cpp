@@ -1,4 +1,4 @@
-// Whole-program limits (issue 15, docs/limits.md): an endless stream into
+// Whole-program limits (docs/limits.md): an endless stream into
 // `lattice emulate` stops at the stream-size limit, and running out of
 // memory is an input error (exit 3), never an internal error (exit 70).
 #include <catch2/catch.hpp>

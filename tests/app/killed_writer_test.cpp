@@ -1,4 +1,4 @@
-// Writers killed at random moments (issue 15): the real `lattice` binary is
+// Writers killed at random moments: the real `lattice` binary is
 // started, sent SIGINT, SIGTERM or SIGHUP after a random delay, and the
 // output directory must then hold the old output or the new one, whole,
 // and nothing else (no "<out>.tmp-PID-N" left behind).

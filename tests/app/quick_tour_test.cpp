@@ -1,5 +1,5 @@
-// README.md's "Quick tour" runs top to bottom on a fresh directory (issue
-// 28): its commands are read from the README itself, so the tour cannot
+// README.md's "Quick tour" runs top to bottom on a fresh directory:
+// its commands are read from the README itself, so the tour cannot
 // drift from the program. Only the scenes are copied in; everything else a
 // command needs must come from a command before it. A command that needs a
 // real terminal (`--port auto`) is skipped, saying so.

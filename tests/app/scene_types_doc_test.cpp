@@ -1,5 +1,5 @@
-// docs/scene-format.md's table of object types is the loader's own (issue
-// 28): regenerated here from the node table (loader/node_types.cpp and the
+// docs/scene-format.md's table of object types is the loader's own:
+// regenerated here from the node table (loader/node_types.cpp and the
 // lattice module's types) and compared with the doc, so a type or key added
 // in code and not in the doc fails this test. LATTICE_REGENERATE_GOLDENS=1
 // rewrites the doc's table instead (scripts/regenerate-goldens.sh).

@@ -1,4 +1,4 @@
-// `lattice send --port virtual:DEVICE` (issue 28): the stream goes through a
+// `lattice send --port virtual:DEVICE`: the stream goes through a
 // real pseudo-terminal (the serial code of a real line, XON/XOFF at the
 // baud rate, the 4027's `!REP` answers) to the device's emulator, and the
 // screen it draws is the one `lattice emulate` draws from the same file.

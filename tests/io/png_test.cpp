@@ -112,7 +112,7 @@ std::vector<std::uint8_t> liarPng(std::uint32_t width, std::uint32_t height) {
 
 }  // namespace
 
-TEST_CASE("a PNG header claiming a huge picture is refused before any pixel memory (issue 15)") {
+TEST_CASE("a PNG header claiming a huge picture is refused before any pixel memory") {
   const lattice::testing::TempDir scratch("png-liar");
   for (const auto& [w, h] : {std::pair<std::uint32_t, std::uint32_t>{65535, 65535}, {20000, 20000}, {16384, 8193}}) {
     const auto bytes = liarPng(w, h);
@@ -148,7 +148,7 @@ TEST_CASE("a PNG header claiming a huge picture is refused before any pixel memo
   CHECK(WEXITSTATUS(status) == 3);
 }
 
-TEST_CASE("PNG samples are read as written: a gAMA chunk changes nothing (issue 13)") {
+TEST_CASE("PNG samples are read as written: a gAMA chunk changes nothing") {
   // A real PNG with gAMA 1.0 (as POV-Ray writes), written by libpng's own
   // writer; readPng must return the stored samples, not sRGB conversions.
   const lattice::testing::TempDir scratch("png-gama");

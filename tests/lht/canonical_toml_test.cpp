@@ -1,4 +1,4 @@
-// The canonical text a lattice's cache key is computed from (issue 15): our
+// The canonical text a lattice's cache key is computed from: our
 // own walk of the TOML values, never a formatter's output.
 #include <catch2/catch.hpp>
 

@@ -246,7 +246,7 @@ TEST_CASE("lattice scene: the full trace of a scatter shares one object and draw
   REQUIRE(copies.root.children[1].children.size() == 300);
   REQUIRE(copies.root.children[1].children[0].leaf->shape().kind == LeafShape::Kind::Polyline);
   // Double: the same picture to the last bit at this size (measured identical
-  // at 512x512 on the fuzzy spheres and the thistle too: docs/benchmarks.md).
+  // at 512x512 on the fuzzy spheres and the thistle too: bench/results/2026-11-22-renderer-and-peers.md).
   CHECK(renderFull<double>(scene).rgb == renderFull<double>(copies).rgb);
   // Float: the ray is carried into object space in float, one rounding more.
   const RgbImage a = renderFull<float>(scene), b = renderFull<float>(copies);

@@ -280,7 +280,7 @@ TEST_CASE("lht file: the streamed file reader agrees with parseLht on good and b
   }
 }
 
-TEST_CASE("lht file: a huge junk file is refused from its first bytes, without reading it (issue 15)") {
+TEST_CASE("lht file: a huge junk file is refused from its first bytes, without reading it") {
   // 256 MiB, sparse: reading it whole, as the reader once did, would raise
   // the peak resident memory by as much.
   const lattice::testing::TempDir scratch("lht-junk");

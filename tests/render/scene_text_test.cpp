@@ -1,4 +1,4 @@
-// The scene text is checked before toml++ parses it (issue 15): invalid UTF-8
+// The scene text is checked before toml++ parses it: invalid UTF-8
 // and the characters toml++ 3.3.0's whitespace test mishandles are refused
 // with their line and column; comments may hold anything valid.
 #include <catch2/catch.hpp>

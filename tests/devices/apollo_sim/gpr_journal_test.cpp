@@ -90,7 +90,7 @@ TEST_CASE("garbage into the journal decoder is counted, never thrown") {
   CHECK(decoder.report().unknownCommands + decoder.report().malformed > 0);
 }
 
-TEST_CASE("GPR journal: two-byte clears are charged to the drawing budget (issue 15)") {
+TEST_CASE("GPR journal: two-byte clears are charged to the drawing budget") {
   // Each 'K' record clears 1024 x 1024 pixels: 1,024 fit in kPixelWorkBudget,
   // the next is refused.
   auto journal = [](int clears) {

@@ -112,7 +112,7 @@ TEST_CASE("every !RVE the driver sends starts with 0 0, and draws the same under
 }
 
 TEST_CASE("the two readings of !RVE's first pair differ on a stream that starts it with a step") {
-  // The driver's form before issue 29: the chain's next step first.
+  // The driver's older form: the chain's next step first.
   const std::string text = "!COL C1!VEC 10 10 12 10!RVE 0 -3 -2 0\r";
   Tek4027Profile profile;
   const IndexedImage moved = decodeUnder(text, reading(profile, "move"));

@@ -1,4 +1,4 @@
-// The 4027 emulator's work is bounded by its input (issue 15): erasing the
+// The 4027 emulator's work is bounded by its input: erasing the
 // graphics and drawing vectors are charged against kPixelWorkBudget.
 #include <catch2/catch.hpp>
 
@@ -19,7 +19,7 @@ std::vector<std::uint8_t> repeat(const std::string& unit, std::uint64_t times) {
 }
 }  // namespace
 
-TEST_CASE("4027: a stream of graphics erases is refused once it passes the drawing budget (issue 15)") {
+TEST_CASE("4027: a stream of graphics erases is refused once it passes the drawing budget") {
   const std::uint64_t screen = Tek4027Decoder().image().pixels.size();  // the profile's screen
   const std::uint64_t fit = kPixelWorkBudget / screen;
   {

@@ -1,4 +1,4 @@
-// The emulator's work is bounded by its input (issue 15): rectangle fills are
+// The emulator's work is bounded by its input: rectangle fills are
 // row fills charged against kPixelWorkBudget, and a stream that asks for more
 // drawing than the budget is refused by decodeBytes (what `lattice emulate`
 // and a fuzzer call).
@@ -49,7 +49,7 @@ TEST_CASE("rectangle fills copy or XOR whole rows and are charged their area") {
   CHECK(std::all_of(copy.image().pixels.begin(), copy.image().pixels.end(), [](PaletteIndex p) { return p == 7; }));
 }
 
-TEST_CASE("a stream of full-screen fills is refused once it passes the drawing budget (issue 15)") {
+TEST_CASE("a stream of full-screen fills is refused once it passes the drawing budget") {
   const std::uint64_t screen = 1280u * 1024u;
   const int fit = static_cast<int>(kPixelWorkBudget / screen);  // 819
   {
