@@ -1,5 +1,7 @@
 #include "loader/lattice_tables.hpp"
 
+#include <fmt/core.h>
+
 #include "lht/raster/lattice_object.hpp"
 #include "loader/table_build.hpp"
 
@@ -16,6 +18,15 @@ std::shared_ptr<const LhtFile> onDemandTable(const LatticeDefinition& lattice, L
   lht->objectHash = lattice.hashFor(precision);
   lht->table = std::make_shared<const OnDemandTable>(lht->box, object.primitive, precision, capacityBytes);
   return lht;
+}
+
+// A cache an older Lattice wrote in a layout this one no longer reads is
+// rebuilt (and rewritten) as if it were missing, with a one-line note.
+bool retiredCache(const std::filesystem::path& cache) {
+  const std::optional<std::uint32_t> version = retiredLhtVersion(cache);
+  if (version)
+    fmt::print(stderr, "lattice: note: {}: an old .lht cache (version {}); rebuilding it\n", cache.string(), *version);
+  return version.has_value();
 }
 
 }  // namespace
@@ -42,7 +53,7 @@ std::shared_ptr<LatticeTables::Slot> LatticeTables::slotOf(const LatticeDefiniti
     const auto& cache = lattice->cache;
     if (lattice->formUnder(settings_) == LhtForm::OnDemand) {
       slot->table = onDemandTable(*lattice, form, settings_.onDemandCacheBytes);  // no cache: nothing to keep
-    } else if (cache && std::filesystem::exists(*cache)) {
+    } else if (cache && std::filesystem::exists(*cache) && !retiredCache(*cache)) {
       slot->table =
           std::make_shared<const LhtFile>(readLhtFile(*cache, lattice->hashFor(form), form, lattice->formUnder(settings_)));
     } else {

@@ -25,7 +25,7 @@ bool isFlag(const std::string& argument) {
   return argument.size() > 1 && argument[0] == '-' && !looksLikeNumber(argument);
 }
 
-// Flags that were removed, and what to write instead (docs/cli.md, "Removed flags").
+// Flags that were removed, and what to write instead (docs/cli.md, "Removed flags and formats").
 struct RemovedFlag {
   const char* flag;
   const char* instead;

@@ -16,12 +16,9 @@ void runLhtInfo(const std::string& path) {
   fmt::print("file:          {}\n", path);
   const LhtPrecisionInfo& precision = lhtPrecisionInfo(lht.precision());
   fmt::print("format:        version {}\n", lht.version);
-  // A hashed table of versions 1-3 was chained in its file (lht/file/chained_table.hpp).
-  const bool chained = lht.form() == LhtForm::Hashed && lht.version < kLhtVersion;
-  const std::string_view summary = std::visit(
-      [](const auto& t) { return std::decay_t<decltype(formTable(t))>::kFormSummary; }, lht.table);
-  fmt::print("form:          {}\n",
-             chained ? "hashed (read from the chained layout, thesis sec. 2.3; held open-addressed)" : summary);
+  fmt::print("form:          {}\n", std::visit(
+                                          [](const auto& t) { return std::decay_t<decltype(formTable(t))>::kFormSummary; },
+                                          lht.table));
   fmt::print("precision:     {} ({}-byte entries: {})\n", precision.name, precision.entryBytes, precision.summary);
   fmt::print("lattice:       {} x {} x {} cells, lambda {:g}, f_lat {:g} (cell {:g})\n", c[0], c[1], c[2],
              lht.box.lambda(), lht.box.oversample(), lht.box.cellSize());

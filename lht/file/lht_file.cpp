@@ -12,7 +12,6 @@
 #include "foundation/system/atomic_file.hpp"
 #include "foundation/error.hpp"
 #include "foundation/little_endian.hpp"
-#include "lht/file/chained_table.hpp"
 
 namespace lattice::lht {
 
@@ -54,6 +53,14 @@ Error bad(const std::string& name, const std::string& what) {
   return Error(ErrorKind::Input, fmt::format("{}: {}; rebuild it with `lattice rasterize` (or delete it so the "
                                              "scene rasterizes the lattice again)",
                                              name, what));
+}
+
+// Versions 1 and 2, and version 3's hashed form, held the thesis's chained
+// table; the program rebuilds its own caches, so it no longer reads them.
+Error retired(const std::string& name, std::uint32_t version) {
+  return bad(name, fmt::format("written by an older Lattice (.lht version {}, the chained table), which this "
+                               "program no longer reads",
+                               version));
 }
 
 // "0 thesis, 1 wide, 2 compact"
@@ -149,8 +156,9 @@ LhtHeader parseHeader(std::span<const std::uint8_t> prefix, std::uint64_t size, 
   LhtHeader h;
   h.version = static_cast<std::uint32_t>(r.uint(4));
   if (h.version < 1 || h.version > kLhtVersion)
-    throw bad(name, fmt::format("format version {} but this program reads versions 1 to {}", h.version,
-                                kLhtVersion));
+    throw bad(name, fmt::format("format version {} but this program reads versions {} and {}", h.version,
+                                kLhtCompressedVersion, kLhtVersion));
+  if (h.version < kLhtCompressedVersion) throw retired(name, h.version);
   if (h.version == kLhtCompressedVersion) {
     h.headerBytes = kLhtHeaderBytesV3;
     if (size < kLhtHeaderBytesV3 + 8 || prefix.size() < kLhtHeaderBytesV3)
@@ -159,15 +167,12 @@ LhtHeader parseHeader(std::span<const std::uint8_t> prefix, std::uint64_t size, 
   }
   for (int a = 0; a < 3; ++a) h.cells[a] = static_cast<int>(r.uint(2));
   const auto precisionCode = static_cast<std::uint16_t>(r.uint(2));
-  // Version 1 had only the thesis's entry (and 0 in this field).
-  const std::optional<LhtPrecision> precision =
-      h.version == 1 ? std::optional(LhtPrecision::Thesis) : lhtPrecisionFromCode(precisionCode);
+  const std::optional<LhtPrecision> precision = lhtPrecisionFromCode(precisionCode);
   if (!precision)
     throw bad(name, fmt::format("unknown entry precision code {} at byte 18 (this program knows {})", precisionCode,
                                 precisionCodes()));
   h.precision = *precision;
-  // Versions 1-3 chained their slots (an overflow index in each); 4 probes open.
-  h.stride = h.version == kLhtVersion ? LatticeHashTable::slotStride(h.precision) : entryBytes(h.precision);
+  h.stride = LatticeHashTable::slotStride(h.precision);
   h.lambda = r.f64();
   h.oversample = r.f64();
   for (int a = 0; a < 3; ++a) h.origin[a] = r.f64();
@@ -186,6 +191,7 @@ LhtHeader parseHeader(std::span<const std::uint8_t> prefix, std::uint64_t size, 
                                   lhtFiledFormCodes()));
     if (layoutCode > static_cast<std::uint16_t>(PairLayout::Ordered))
       throw bad(name, fmt::format("unknown pair layout code {} at byte 110 (0 symmetric, 1 ordered)", layoutCode));
+    if (*form == LhtForm::Hashed) throw retired(name, h.version);  // version 3's hashed form was chained
     h.form = *form;
     h.layout = layoutCode;
     if (h.form != LhtForm::Hashed) {
@@ -254,8 +260,7 @@ LhtFile assemble(const LhtHeader& h, std::vector<std::uint8_t> body, const std::
           },
           [] {});
     } else {
-      lht.table = h.version == kLhtVersion ? LatticeHashTable(h.precision, std::move(body), h.buckets, h.entries)
-                                           : readChainedTable(h.precision, body, h.buckets, h.entries);
+      lht.table = LatticeHashTable(h.precision, std::move(body), h.buckets, h.entries);
     }
     return lht;
   } catch (const Error& e) {
@@ -317,6 +322,23 @@ LhtFile readLhtFile(const std::filesystem::path& path, std::optional<std::uint64
   if (readChecksum(tail) != fnv1a64(body, fnv1a64(std::span<const std::uint8_t>(header, h.headerBytes))))
     throw bad(name, "checksum mismatch: the file is corrupted");
   return assemble(h, std::move(body), name, expectedObjectHash, expectedPrecision, expectedForm);
+}
+
+std::optional<std::uint32_t> retiredLhtVersion(const std::filesystem::path& path) {
+  std::uint8_t header[kLhtHeaderBytesV3] = {};
+  std::ifstream in(path, std::ios::binary);
+  in.read(reinterpret_cast<char*>(header), sizeof header);
+  if (static_cast<std::size_t>(in.gcount()) < kLhtHeaderBytes || std::memcmp(header, kMagic, sizeof kMagic) != 0)
+    return std::nullopt;
+  Reader r(std::span<const std::uint8_t>(header, sizeof header));
+  r.at = sizeof kMagic;
+  const auto version = static_cast<std::uint32_t>(r.uint(4));
+  if (version == 1 || version == 2) return version;
+  r.at = kLhtHeaderBytes;  // version 3's form code
+  if (version == kLhtCompressedVersion && static_cast<std::size_t>(in.gcount()) == sizeof header &&
+      lhtFormFromCode(static_cast<std::uint16_t>(r.uint(2))) == LhtForm::Hashed)
+    return version;
+  return std::nullopt;
 }
 
 }  // namespace lattice::lht

@@ -6,10 +6,10 @@
 //        0    8  magic "LATLHT\r\n" (the CR LF catches text-mode mangling)
 //        8    4  version: 4 for the hashed form (kLhtVersion), 3 for the
 //                compressed one (kLhtCompressedVersion); 1 and 2, and 3's
-//                hashed form, are still read (see below)
+//                hashed form (the thesis's chained table), are no longer
+//                read: a scene's cache in one is rebuilt
 //       12    6  cells along x, y, z (u16 each, 1..255)
-//       18    2  entry precision code (LhtPrecision: 0 thesis, 1 wide, 2 compact;
-//                reserved and 0 in version 1, whose entries are all the thesis's)
+//       18    2  entry precision code (LhtPrecision: 0 thesis, 1 wide, 2 compact)
 //       20    8  lambda (object units)
 //       28    8  f_lat
 //       36   24  lattice origin in object coordinates (x, y, z)
@@ -17,27 +17,19 @@
 //       68    8  N_lp (pairs, as eq. 1.3 counts them)
 //       76    8  N_iz (hitting pairs, same counting)
 //       84    8  entries
-//       92    8  buckets (primary slots)
-//      100    8  slots (primary + overflow)
-//      108  e*n  the n slots, e = entryBytes(precision) bytes each, as in memory
+//       92    8  capacity (slots)
+//      100    8  slots (the same number)
+//      108  e*n  the n slots of lht/table/hash_table.hpp's open-addressed
+//                table, e = LatticeHashTable::slotStride(precision) bytes
+//                each, an empty slot all zero, as in memory and in the
+//                firmware's flash
 //      end    8  FNV-1a 64 of every byte before it
 //
-// That is version 2 (and 1): the thesis's chained table, read into the
-// open-addressed layout (lht/file/chained_table.hpp). Version 4 has version 2's
-// header with the open-addressed table of lht/table/hash_table.hpp as the body:
-//       92    8  capacity (slots, a power of two)
-//      100    8  slots (the same number)
-//      108  e*n  the n slots, e = LatticeHashTable::slotStride(precision)
-//                = entryBytes(precision) - 4 bytes each (no overflow
-//                index), an empty slot all zero, as in memory and in the
-//                firmware's flash
-//
-// Version 3 adds 8 header bytes and, for the compressed form, its own body:
-//      108    2  form code (LhtForm: 0 hashed, 1 compressed)
-//      110    2  pair layout (PairLayout: 0 symmetric, 1 ordered; 0 when hashed)
+// That is version 4, the hashed form. Version 3 adds 8 header bytes and the
+// body of another form:
+//      108    2  form code (LhtForm: 1 compressed; 0, hashed, was chained)
+//      110    2  pair layout (PairLayout: 0 symmetric, 1 ordered)
 //      112    4  reserved, 0
-//   hashed: fields 92 and 100 and the slots as in version 2, from byte 116
-//   (read, never written: hashed tables are written as version 4).
 //   any other form (lht/table/table_forms.hpp): fields 84, 92, 100 and 110
 //   are its LhtBodyHeader, and its body runs from byte 116 to the checksum.
 //   compressed: field 92 holds the bitmap's bits (which the cells and the
@@ -118,5 +110,8 @@ void writeLhtFile(const std::filesystem::path& path, const LhtFile& lht,
 LhtFile readLhtFile(const std::filesystem::path& path, std::optional<std::uint64_t> expectedObjectHash = std::nullopt,
                     std::optional<LhtPrecision> expectedPrecision = std::nullopt,
                     std::optional<LhtForm> expectedForm = std::nullopt);
+// The version of a file an older Lattice wrote in a layout this one no
+// longer reads (a cache to rebuild, with a note); nullopt for anything else.
+std::optional<std::uint32_t> retiredLhtVersion(const std::filesystem::path& path);
 
 }  // namespace lattice::lht

@@ -6,8 +6,7 @@
 //
 // Method and tunables:
 // * Open addressing with linear probing over one array of slots
-//   (the thesis chained into an overflow area; files of versions 1-3 hold
-//   that layout and are converted on reading, lht/file/chained_table.hpp). A
+//   (the thesis chained into an overflow area). A
 //   look-up reads consecutive slots from the key's home until it meets the
 //   key, a smaller one or an empty slot (below), so a miss (three in four look-ups on the hair
 //   plates) costs one or two cache lines and no pointer chasing, and a slot
@@ -20,8 +19,8 @@
 //   than its own: a miss costs about what a hit does instead of walking the
 //   run to its empty slot, and one comparison ends both. Insertion keeps
 //   the order by carrying the smaller key on. The layout is then the same
-//   whatever order the keys came in (a chained file converted, a table
-//   rasterized with any number of threads).
+//   whatever order the keys came in (a table rasterized with any number of
+//   threads).
 // * Home = h * capacity / 2^32, h the top 32 bits of key * 2^64/phi
 //   (Fibonacci hashing: neighbouring lattice points, keys differing in one
 //   low byte, land far apart). Two multiplies and shifts, no division, and
@@ -81,8 +80,7 @@ class LatticeHashTable {
   // Builds from rasterized hits (distinct keys), each stored at `precision`.
   explicit LatticeHashTable(const RasterHits& hits, LhtPrecision precision = LhtPrecision::Thesis,
                             double maxLoad = kMaxLoad);
-  // An empty table sized for `entries`, filled with insert() (a chained
-  // table of an older file being converted).
+  // An empty table sized for `entries`, filled with insert().
   LatticeHashTable(LhtPrecision precision, std::uint64_t entries, double maxLoad = kMaxLoad);
   // Adopts slots read from a file (slotBytes.size() == capacity *
   // slotStride(precision)); throws lattice::Error(Input) if they are not a

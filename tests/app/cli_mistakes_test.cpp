@@ -97,7 +97,7 @@ TEST_CASE("flags that would do nothing in the combination are refused with the r
   CHECK(std::filesystem::file_size(scratch / "x.six") <= 960);
 }
 
-TEST_CASE("outputs are checked before any work; read-only ones need --force", "[cli]") {
+TEST_CASE("outputs are checked before any work, read-only ones need --force", "[cli]") {
   const TempDir scratch("cli-outputs");
   // /proc is a directory nobody can create files in, root included.
   auto run = runLattice(fmt::format("render {} --width 8 --height 8 -o /proc/lattice-never.png", kScene));

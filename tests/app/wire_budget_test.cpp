@@ -120,7 +120,7 @@ TEST_CASE("wire budget on sixel: a byte count below the lossless stream is met, 
   CHECK(lastPsnr < all.choice.psnr);
 }
 
-TEST_CASE("wire budget: nothing fits, the smallest stream is reported; --wire-shrink makes it fit") {
+TEST_CASE("wire budget: nothing fits, the smallest stream is reported, --wire-shrink makes it fit") {
   const RgbImage reference = truecolour("sphere-hole.toml", 64, 64);
   const devices::Device d = devices::makeDevice("tek4125", {});
   app::WireBudget budget;
@@ -186,7 +186,7 @@ TEST_CASE("lattice render --wire-bytes and lattice emulate --at, end to end") {
   CHECK(empty.rgb != whole.rgb);
 }
 
-TEST_CASE("one baud: --baud feeds the budget and the timing line; two budgets are refused", "[wire]") {
+TEST_CASE("one baud: --baud feeds the budget and the timing line, two budgets are refused", "[wire]") {
   const testing::TempDir dir("one-baud");
   const std::string scene = fmt::format("{}/scenes/torus-floor.toml", LATTICE_SOURCE_DIR);
   const auto stream = dir.path() / "b.tek";

@@ -41,7 +41,7 @@ TEST_CASE("malformed text is refused: empty, trailing junk, '+', spaces, hex", "
   }
 }
 
-TEST_CASE("the range and wholeness are checked; values inside pass exactly", "[numbers]") {
+TEST_CASE("the range and wholeness are checked, values inside pass exactly", "[numbers]") {
   CHECK(parseNumberText("--x", "0.5", {0, 1}) == 0.5);
   CHECK(parseNumberText("--x", "-3", {}) == -3);
   CHECK(parseNumberText("--x", "1e3", {0, 1000}) == 1000);

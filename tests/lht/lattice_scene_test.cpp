@@ -23,6 +23,9 @@
 #include "loader/scene_loader.hpp"
 #include "tests/support/golden.hpp"
 #include "tests/support/hair_scene.hpp"
+#include "tests/support/temp_dir.hpp"
+#include "foundation/system/atomic_file.hpp"
+#include "lht/file/lht_file.hpp"
 #include "foundation/error.hpp"
 
 using namespace lattice;
@@ -289,6 +292,23 @@ TEST_CASE("lattice scene: the cache file is written, reused, and refused when th
     CHECK(message.find("different object") != std::string::npos);
   }
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("lattice scene: a cache an older Lattice wrote is rebuilt, not refused") {
+  const lattice::testing::TempDir dir("lht-old-cache");
+  std::ofstream(dir / "s.toml") << fuzzyScene(5, "cache = \"hair.lht\"");
+  const std::filesystem::path cache = dir / "hair.lht";
+  render(loadSceneWithLattices(dir / "s.toml").scene, false);  // writes a version-4 cache
+  std::vector<std::uint8_t> bytes = readWholeFile(cache);
+  REQUIRE(bytes.size() > 12);
+  REQUIRE(bytes[8] == lht::kLhtVersion);
+  bytes[8] = 2;  // as version 2 of the format, the thesis's chained table, headed it
+  writeFileAtomically(cache, bytes);
+  REQUIRE(lht::retiredLhtVersion(cache) == 2u);
+  const RgbImage picture = render(loadSceneWithLattices(dir / "s.toml").scene, false);
+  CHECK(picture.width > 0);
+  CHECK_FALSE(lht::retiredLhtVersion(cache));  // rewritten in today's layout
+  CHECK(lht::readLhtFile(cache).version == lht::kLhtVersion);
 }
 
 TEST_CASE("lattice scene: the precision key picks the entry form and the thesis's keeps the old object hash") {

@@ -1,4 +1,5 @@
 #include <catch2/catch.hpp>
+#include <fmt/core.h>
 
 #include <unistd.h>
 
@@ -8,7 +9,6 @@
 #include <string>
 
 #include "foundation/system/atomic_file.hpp"
-#include "lht/file/chained_table.hpp"
 #include "lht/raster/lattice_object.hpp"
 #include "lht/file/lht_file.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -20,7 +20,7 @@ using namespace lattice::lht;
 
 namespace {
 
-LhtFile makeSphereLht(LhtPrecision precision = LhtPrecision::Thesis) {
+LhtFile makeSphereLht(LhtPrecision precision = LhtPrecision::Thesis, LhtForm form = LhtForm::Hashed) {
   const LatticeObject sphere = sphereObject(0.5);
   LhtFile lht;
   lht.box = LatticeBox(sphere.bounds, 1.0, 2.0);
@@ -30,7 +30,10 @@ LhtFile makeSphereLht(LhtPrecision precision = LhtPrecision::Thesis) {
   lht.objectHash = sphere.hash();
   lht.pairs = raster.stats.pairs;
   lht.hits = raster.stats.hits;
-  lht.table = LatticeHashTable(raster.hits, precision);
+  if (form == LhtForm::Compressed)
+    lht.table = CompressedTable(raster.hits, lht.box.cells(), precision);
+  else
+    lht.table = LatticeHashTable(raster.hits, precision);
   return lht;
 }
 
@@ -42,52 +45,14 @@ std::vector<std::uint8_t> resealed(std::vector<std::uint8_t> bytes) {
   return bytes;
 }
 
-// The table as a chained file of `version` (1 or 2) would hold it: one
-// bucket per entry, each key first in its bucket's primary slot, the rest
-// in the overflow area linked from it (the thesis's layout, sec. 2.3).
-std::vector<std::uint8_t> chainedFile(const LhtFile& lht, std::uint32_t version) {
-  const LatticeHashTable& t = lht.hashed();
-  const std::size_t entry = entryBytes(t.precision());
-  const std::uint64_t buckets = t.entryCount();
-  std::vector<std::uint8_t> body(buckets * entry, 0);
-  for (std::uint64_t b = 0; b < buckets; ++b) storeLittleEndian32(&body[(b + 1) * entry - kEntryNextBytes], kNoNext);
-  const auto slots = t.slotView();
-  for (std::size_t i = 0; i < slots.size(); i += t.entryStride()) {
-    if (LatticeHashTable::loadKey(&slots[i]) == 0) continue;
-    const std::size_t head = chainedBucketOf(&slots[i], buckets) * entry;
-    if (LatticeHashTable::loadKey(&body[head]) == 0) {
-      std::copy_n(&slots[i], t.entryStride(), &body[head]);
-      continue;
-    }
-    const std::size_t added = body.size();
-    body.resize(added + entry);
-    std::copy_n(&slots[i], t.entryStride(), &body[added]);
-    std::copy_n(&body[head + entry - kEntryNextBytes], kEntryNextBytes, &body[added + entry - kEntryNextBytes]);
-    storeLittleEndian32(&body[head + entry - kEntryNextBytes], static_cast<std::uint32_t>(added / entry));
-  }
+// The file an older Lattice wrote: `version` 1 or 2 in a version-4 file's
+// header, or version 3 with the hashed form code. The body is not the old
+// chained layout: the header alone decides, before any body is read.
+std::vector<std::uint8_t> olderFile(const LhtFile& lht, std::uint32_t version) {
   std::vector<std::uint8_t> bytes = serializeLht(lht);
-  bytes.resize(kLhtHeaderBytes);
   bytes[8] = static_cast<std::uint8_t>(version);
-  if (version == 1) bytes[18] = 0;
-  for (int b = 0; b < 8; ++b) bytes[92 + b] = static_cast<std::uint8_t>(buckets >> (8 * b));
-  const std::uint64_t slotCount = body.size() / entry;
-  for (int b = 0; b < 8; ++b) bytes[100 + b] = static_cast<std::uint8_t>(slotCount >> (8 * b));
-  bytes.insert(bytes.end(), body.begin(), body.end());
-  bytes.resize(bytes.size() + 8);
+  if (version == kLhtCompressedVersion) bytes.insert(bytes.begin() + kLhtHeaderBytes, 8, 0);  // form code 0: hashed
   return resealed(bytes);
-}
-
-// Both tables hold the same keys with the same payloads.
-void checkSameEntries(const LatticeHashTable& got, const LatticeHashTable& want) {
-  CHECK(got.entryCount() == want.entryCount());
-  const auto slots = want.slotView();
-  for (std::size_t i = 0; i < slots.size(); i += want.entryStride()) {
-    const std::uint64_t key = LatticeHashTable::loadKey(&slots[i]);
-    if (key == 0) continue;
-    const std::uint8_t* e = got.findKey(key);
-    REQUIRE(e != nullptr);
-    CHECK(std::equal(e, e + want.entryStride(), &slots[i]));
-  }
 }
 
 // The message of the Error thrown by parsing `bytes`, which must be Input.
@@ -141,35 +106,27 @@ TEST_CASE("lht file: every precision writes and reads back the identical table a
   }
 }
 
-TEST_CASE("lht file: chained files of versions 1 and 2 are still read, and checked") {
-  for (const LhtPrecisionInfo& form : kLhtPrecisions) {
-    INFO(form.name);
-    const LhtFile lht = makeSphereLht(form.precision);
-    const std::vector<std::uint8_t> v2 = chainedFile(lht, 2);
-    const LhtFile back = parseLht(v2, "old.lht", lht.objectHash, form.precision);
-    CHECK(back.version == 2);
-    checkSameEntries(back.hashed(), lht.hashed());
-    // Written again, it is a version-4 file of the same table.
-    CHECK(serializeLht(back)[8] == kLhtVersion);
-    checkSameEntries(parseLht(serializeLht(back), "new.lht").hashed(), lht.hashed());
-    // A chain that loops back on itself is refused, not followed forever:
-    // the last overflow slot links to the first.
-    std::vector<std::uint8_t> looped = v2;
-    const std::size_t last = v2.size() - 8 - kEntryNextBytes;
-    const std::uint64_t buckets = lht.hashed().entryCount();
-    for (int b = 0; b < 4; ++b) looped[last + b] = static_cast<std::uint8_t>(buckets >> (8 * b));
-    CHECK(refusal(resealed(looped)).find("inconsistent") != std::string::npos);
-  }
-  // A version-1 file is the version-2 thesis file with 1 in the version and 0 at byte 18.
+TEST_CASE("lht file: the chained tables of versions 1 to 3 are refused, and a cache of one is told apart") {
   const LhtFile lht = makeSphereLht();
-  std::vector<std::uint8_t> v1 = chainedFile(lht, 1);
-  REQUIRE(v1[18] == 0);
-  const LhtFile back = parseLht(v1, "old.lht", lht.objectHash, LhtPrecision::Thesis);
-  CHECK(back.version == 1);
-  CHECK(back.precision() == LhtPrecision::Thesis);
-  checkSameEntries(back.hashed(), lht.hashed());
-  const std::string message = refusal(v1, std::nullopt, LhtPrecision::Wide);
-  CHECK(message.find("'thesis' entries") != std::string::npos);
+  const lattice::testing::TempDir dir("lht-older");
+  for (std::uint32_t version : {1u, 2u, kLhtCompressedVersion}) {
+    INFO("version " << version);
+    const std::vector<std::uint8_t> old = olderFile(lht, version);
+    const std::string message = refusal(old);
+    CHECK(message.find(fmt::format("older Lattice (.lht version {}", version)) != std::string::npos);
+    CHECK(message.find("lattice rasterize") != std::string::npos);
+    const std::string path = dir / fmt::format("v{}.lht", version);
+    writeFileAtomically(path, old);
+    CHECK(retiredLhtVersion(path) == version);
+  }
+  // Today's files, and a file that is not an .lht at all, are not old caches.
+  writeLhtFile(dir / "v4.lht", lht, AtomicFile::Landing::Now);
+  CHECK_FALSE(retiredLhtVersion(dir / "v4.lht"));
+  writeLhtFile(dir / "v3.lht", makeSphereLht(LhtPrecision::Thesis, LhtForm::Compressed), AtomicFile::Landing::Now);
+  CHECK_FALSE(retiredLhtVersion(dir / "v3.lht"));
+  writeFileAtomically(dir / "junk.lht", std::vector<std::uint8_t>(200, 2));
+  CHECK_FALSE(retiredLhtVersion(dir / "junk.lht"));
+  CHECK_FALSE(retiredLhtVersion(dir / "missing.lht"));
 }
 
 TEST_CASE("lht file: every kind of bad file is refused with a message naming it and the fix") {

@@ -167,7 +167,7 @@ TEST_CASE("form CLI: rasterize --form compressed writes version 3, lht-info show
   CHECK(bad.stderrText.find("--lht-form: unknown LHT form 'zip'; use one of hashed, compressed") != std::string::npos);
 }
 
-TEST_CASE("form CLI: render --lht-stats prints each lattice's look-ups; without it nothing is counted") {
+TEST_CASE("form CLI: render --lht-stats prints each lattice's look-ups, without it nothing is counted") {
   REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
   const TempDir dir("stats-cli");
   std::ofstream(dir / "s.toml") << ballScene();
@@ -185,7 +185,7 @@ TEST_CASE("form CLI: render --lht-stats prints each lattice's look-ups; without 
   CHECK(full.stderrText.find("lht-stats: no lattice was looked up") != std::string::npos);
 }
 
-TEST_CASE("precision CLI: render --lattice-lookup and the scene's `lookup` pick the look-up; bad names are refused") {
+TEST_CASE("precision CLI: render --lattice-lookup and the scene's `lookup` pick the look-up, bad names are refused") {
   REQUIRE(std::filesystem::exists(lattice::testing::latticeBinary()));
   const TempDir dir("lookup-cli");
   std::ofstream(dir / "s.toml") << ballScene();

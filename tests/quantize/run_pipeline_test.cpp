@@ -70,7 +70,7 @@ TEST_CASE("the sink's colour count caps an explicit --colors") {
   CHECK(sink.image().colormap.size() == 16);
 }
 
-TEST_CASE("passes and frame modes give identical pictures; passes renders twice") {
+TEST_CASE("passes and frame modes give identical pictures, passes renders twice") {
   for (Dither dither : {Dither::None, Dither::FloydSteinberg, Dither::Bayer}) {
     auto a = photoSource(77, 51);
     auto b = photoSource(77, 51);

@@ -48,7 +48,7 @@ TEST_CASE("mishandled characters are refused in keys, strings and values, at the
     CHECK_FALSE(tomlWhitespaceTestUndefined(c));
 }
 
-TEST_CASE("comments may hold any character; escapes and other text pass") {
+TEST_CASE("comments may hold any character, escapes and other text pass") {
   CHECK_NOTHROW(checkSceneText("# Lewis's th\xC3\xA8se \xC2\xB6 \xE3\x80\x81\na = \"x # \\u00B6\" # \xC2\xB6\n", "s.toml"));
   CHECK_NOTHROW(checkSceneText("a = \"\\\"\" # \xC2\xB6\nb = '''it's''' # \xC3\xA9\n", "s.toml"));
   CHECK_NOTHROW(checkSceneText("name = \"\xE2\x82\xAC \xF0\x9F\x99\x82\"\n", "s.toml"));  // U+20AC, U+1F642

@@ -40,7 +40,7 @@ std::string at(int x, int y) {
 
 }  // namespace
 
-TEST_CASE("4014 emulator: graph mode moves first, then draws; GS BEL draws the first vector") {
+TEST_CASE("4014 emulator: graph mode moves first, then draws, GS BEL draws the first vector") {
   const Tek4014Decoder d = run(std::string("\x1d") + at(10, 10) + at(20, 10) + "\x1f");
   CHECK(litCount(d) == 11);
   CHECK(lit(d, 10, 10));
@@ -67,7 +67,7 @@ TEST_CASE("4014 emulator: point plot, special point plot and incremental plot") 
   CHECK(r.beamY() == 408);
 }
 
-TEST_CASE("4014 emulator: ESC FF erases; line styles and other escapes are known") {
+TEST_CASE("4014 emulator: ESC FF erases, line styles and other escapes are known") {
   const Tek4014Decoder d = run(std::string("\x1c") + at(5, 6) + "\x1b\x0c");
   CHECK(litCount(d) == 0);
   // After ESC, LF, CR and the high half are ignored and the escape goes on.
@@ -124,7 +124,7 @@ TEST_CASE("4014 emulator: random bytes never throw, and chunking never matters")
   }
 }
 
-TEST_CASE("4014 emulator: erases and vectors are charged; a stream of erases is refused past the budget") {
+TEST_CASE("4014 emulator: erases and vectors are charged, a stream of erases is refused past the budget") {
   {
     Tek4014Decoder d;
     decodeBytes(d, bytes(std::string("\x1d") + at(0, 0) + at(1023, 0) + at(1023, 779)), "v.tek");

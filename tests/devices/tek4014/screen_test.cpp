@@ -161,7 +161,7 @@ TEST_CASE("4014 screen: vectors on the 12-bit screen") {
   checkLines(4096, 3120, 140000, 16, 8);
 }
 
-TEST_CASE("4014 screen: an erase darkens every bitmap; drawing goes on after it") {
+TEST_CASE("4014 screen: an erase darkens every bitmap, drawing goes on after it") {
   Tek4014Screen screen(70, 50);
   IndexedImage expected = blank(70, 50);
   // One vector for each bitmap: diagonal, column, row, antidiagonal.

@@ -73,7 +73,7 @@ TEST_CASE("!MIX sends whole percent per gun, and the emulator shows them exactly
     CHECK(std::abs(levelFromPercent(percentFromLevel(static_cast<std::uint8_t>(level))) - level) <= 2);
 }
 
-TEST_CASE("profile= picks a preset wherever it is typed; other keys refine it") {
+TEST_CASE("profile= picks a preset wherever it is typed, other keys refine it") {
   Tek4027Profile p;
   applyOverrides(p, {"height=300", "profile=compact"});
   CHECK(p.name == "compact");

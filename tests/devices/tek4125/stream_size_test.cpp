@@ -62,7 +62,7 @@ TEST_CASE("the savings are real: the shortest stream beats one raster write per 
         cutPicture(b.image(), compact, img.width, img.height).pixels);
 }
 
-TEST_CASE("a one-colour picture is one rectangle; merging rows is what makes it one") {
+TEST_CASE("a one-colour picture is one rectangle, merging rows is what makes it one") {
   for (const std::string forms : {"strict", "compact"}) {
     INFO(forms);
     const Tek4125Profile profile = profileWith(forms, 8);
