@@ -109,11 +109,11 @@ void lhtReader(std::span<const std::uint8_t> bytes) {
 }
 
 void tek4125Decoder(std::span<const std::uint8_t> bytes) {
-  tek4125::Tek4125Profile profile;
-  profile.rrFromViewport = (bytes.size() / 8) % 2 == 1;
-  profile.rhFromScreen = (bytes.size() / 16) % 2 == 1;
-  const auto decoder = tek4125::makeTek4125Decoder(profile);
-  decode(*decoder, bytes);
+  tek4125::Tek4125Readings readings;  // the origin readings vary with the input's length
+  readings.rrFromViewport = (bytes.size() / 8) % 2 == 1;
+  readings.rhFromScreen = (bytes.size() / 16) % 2 == 1;
+  tek4125::Tek4125Decoder decoder(tek4125::Tek4125Profile{}, readings);
+  decode(decoder, bytes);
 }
 
 void tek4027Decoder(std::span<const std::uint8_t> bytes) {

@@ -119,12 +119,13 @@ Palette Tek4125Decoder::defaultColorMap(int entries, Tek4125PowerUpMap which) {
   return map;
 }
 
-Tek4125Decoder::Tek4125Decoder(const Tek4125Profile& profile)
-    : profile_(profile), mask_(0), bitsPerPixel_(profile.planes) {
+Tek4125Decoder::Tek4125Decoder(const Tek4125Profile& profile, const Tek4125Readings& readings)
+    : profile_(profile), readings_(readings), mask_(0), bitsPerPixel_(profile.planes) {
   profile_.validate();
-  mask_ = (1 << (profile_.surfacePlanes > 0 ? profile_.surfacePlanes : profile_.planes)) - 1;
+  const int surface = readings_.surfacePlanes > 0 ? std::min(readings_.surfacePlanes, profile_.planes) : profile_.planes;
+  mask_ = (1 << surface) - 1;
   screen_ = IndexedImage(profile_.width, profile_.height, 0);
-  screen_.colormap = defaultColorMap(profile_.colorMapSize(), profile_.powerUpMap);
+  screen_.colormap = defaultColorMap(profile_.colorMapSize(), readings_.powerUpMap);
   vx1_ = profile_.width - 1;
   vy1_ = profile_.height - 1;
 }
@@ -422,8 +423,8 @@ void Tek4125Decoder::rasterChar(std::uint8_t c) {
 // is the other reading). Work is bounded by the viewport: once the beam has
 // left it across the top or bottom, nothing more can be drawn.
 void Tek4125Decoder::writeAtBeam(int index, long count) {
-  const int step = profile_.rasterRowsDown ? -1 : 1;
-  while (count > 0 && (profile_.rasterRowsDown ? beamY_ >= vy0_ : beamY_ <= vy1_)) {
+  const int step = readings_.rasterRowsDown ? -1 : 1;
+  while (count > 0 && (readings_.rasterRowsDown ? beamY_ >= vy0_ : beamY_ <= vy1_)) {
     if (beamX_ > vx1_) {
       beamX_ = vx0_;
       beamY_ += step;
@@ -441,7 +442,7 @@ void Tek4125Decoder::writeAtBeam(int index, long count) {
 // Bits a pixel: as the last RU set (RAL GKS driver, GK4TRO, where they
 // always equal its surface's planes), or surface 1's planes.
 int Tek4125Decoder::pixelBits() const {
-  return profile_.pixelBitsFromSurface ? std::bit_width(static_cast<unsigned>(mask_)) : bitsPerPixel_;
+  return readings_.pixelBitsFromSurface ? std::bit_width(static_cast<unsigned>(mask_)) : bitsPerPixel_;
 }
 
 // ints_: count, run codes. A run code is length * 2^bits + index (RAL GKS
@@ -506,18 +507,18 @@ void Tek4125Decoder::execute() {
       vy0_ = std::clamp(std::min(xyY(0), xyY(1)), 0, profile_.height - 1);
       vy1_ = std::clamp(std::max(xyY(0), xyY(1)), 0, profile_.height - 1);
       beamX_ = vx0_;
-      beamY_ = profile_.rasterRowsDown ? vy1_ : vy0_;  // the corner the first row starts at
+      beamY_ = readings_.rasterRowsDown ? vy1_ : vy0_;  // the corner the first row starts at
       break;
     case Action::RH:  // relative to the viewport (zebra dev_4107.c), or as the profile reads it
-      beamX_ = (profile_.rhFromScreen ? 0 : vx0_) + xy(0);
-      beamY_ = (profile_.rhFromScreen ? 0 : vy0_) + xyY(0);
+      beamX_ = (readings_.rhFromScreen ? 0 : vx0_) + xy(0);
+      beamY_ = (readings_.rhFromScreen ? 0 : vy0_) + xyY(0);
       break;
     case Action::RP:
       if (rasterPixels_ > 0) malformed();  // fewer characters than pixels
       rasterPixels_ = 0;
       break;
     case Action::RR: {  // screen pixels (PGPLOT tkdriv.f), or relative to the viewport as the profile reads it
-      const int ox = profile_.rrFromViewport ? vx0_ : 0, oy = profile_.rrFromViewport ? vy0_ : 0;
+      const int ox = readings_.rrFromViewport ? vx0_ : 0, oy = readings_.rrFromViewport ? vy0_ : 0;
       const int x0 = std::max(std::min(xy(0), xy(1)) + ox, 0);
       const int x1 = std::min(std::max(xy(0), xy(1)) + ox, profile_.width - 1);
       const int y0 = std::max(std::min(xyY(0), xyY(1)) + oy, 0);

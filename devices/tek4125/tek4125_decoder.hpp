@@ -21,19 +21,20 @@
 #include "devices/stream_decoder.hpp"
 #include "devices/tek4125/tek4125_profile.hpp"
 #include "devices/tek4125/tek4125_params.hpp"
+#include "devices/tek4125/tek4125_readings.hpp"
 
 namespace lattice::tek4125 {
 
 class Tek4125Decoder final : public StreamDecoder {
  public:
-  explicit Tek4125Decoder(const Tek4125Profile& profile);
+  explicit Tek4125Decoder(const Tek4125Profile& profile, const Tek4125Readings& readings = {});
   void feed(std::span<const std::uint8_t> bytes) override;
   void finish() override;
   const IndexedImage& image() const override { return screen_; }
   const DecodeReport& report() const override { return report_; }
   bool inTekMode() const { return tekMode_; }
 
-  // The power-up colour map (the profile's power-up-map, docs/tek4125.md).
+  // The power-up colour map (a reading: tek4125_readings.hpp).
   static Palette defaultColorMap(int entries, Tek4125PowerUpMap map = Tek4125PowerUpMap::Pgplot);
 
  private:
@@ -65,13 +66,14 @@ class Tek4125Decoder final : public StreamDecoder {
   void fillPanel();
   void rasterChar(std::uint8_t c);
   void writeAtBeam(int index, long count);  // raster pixels: right, wrapping up (or down) the viewport
-  int pixelBits() const;  // bits a pixel in RP and RL, as the profile's pixel-bits reads them
+  int pixelBits() const;  // bits a pixel in RP and RL, as the readings pack them
   void runLengthWrite();
   void setColor(int index, int c1, int c2, int c3);
   int pixelX(int x) const;
   int pixelY(int y) const;
 
   Tek4125Profile profile_;
+  Tek4125Readings readings_;
   IndexedImage screen_;
   DecodeReport report_;
   int mask_;  // planes of surface 1 (all at power-up; RD may give it fewer)

@@ -38,20 +38,12 @@ double indexIn(SettingChoices names, std::string_view name) {
 }
 
 constexpr std::string_view kParity[] = {"none", "even", "odd"};  // even and odd: only the bit time matters
-constexpr std::string_view kPowerUpMaps[] = {"pgplot", "ral-cgm"};  // Tek4125PowerUpMap's order
-constexpr std::string_view kRrOrigins[] = {"screen", "viewport"};
-constexpr std::string_view kRhOrigins[] = {"viewport", "screen"};
-constexpr std::string_view kPixelBits[] = {"ru", "surface"};
-constexpr std::string_view kRasterRows[] = {"up", "down"};
 constexpr std::string_view kRuBits[] = {"planes", "fit"};
 
 // Rows that the constraints over several keys name.
 constexpr auto kPlanes = whole<&P::planes>("planes", {4, 8}, "bit planes, 4 or 8: 4 for a 16-colour unit");
 constexpr auto kReserved = whole<&P::reserved>("reserved", {0, 254},
                                                 "colour map entries the picture leaves alone, e.g. for dialog-area text");
-constexpr auto kSurfacePlanes =
-    whole<&P::surfacePlanes>("surface-planes", {0, 8},
-                             "the emulator's planes of surface 1 before any RD, at most planes (0: all)");
 
 // Every key of the profile, in describe()'s order (docs/cli.md shows this table).
 constexpr Setting<P> kSettings[] = {
@@ -74,21 +66,10 @@ constexpr Setting<P> kSettings[] = {
     choice<kParity, &P::parity>("parity", "the line's parity, for the transmit time"),
     whole<&P::stopBits>("stop-bits", {1, 2}, "stop bits a character on the line, for the transmit time"),
     onOff<&P::xonXoff>("xon-xoff", "whether the terminal flags DC1/DC3 on the line (recorded; the stream is the same)"),
-    choice<kPowerUpMaps, &P::powerUpMap>("power-up-map",
-        "the emulator's colour map before any TG: PGPLOT's table or RAL-CGM's (they differ at 5..7)"),
     {"strategy", SettingKind::Choice, {}, strategyNames,
      "how the driver spends bytes within the form set; shortest tries each way and keeps the smallest stream",
      [](const P& p) { return indexIn(strategyNames(), p.strategy); },
      [](P& p, double i) { p.strategy = strategyNames()[static_cast<std::size_t>(i)]; }},
-    choice<kRrOrigins, &P::rrFromViewport>("rr-origin",
-        "the emulator's reading of RR corners: relative to the screen or to the pixel viewport"),
-    choice<kRhOrigins, &P::rhFromScreen>("rh-origin",
-                                         "the emulator's reading of RH: relative to the viewport or to the screen"),
-    kSurfacePlanes,
-    choice<kPixelBits, &P::pixelBitsFromSurface>("pixel-bits",
-        "the emulator's packing of RP and RL pixels: by the bits RU set or by surface 1's planes"),
-    choice<kRasterRows, &P::rasterRowsDown>("raster-rows",
-        "the emulator's beam after RS: from the lower left, wrapping a row up, or from the upper left, wrapping down"),
     onOff<&P::progressive>("progressive",
                            "a blocky whole picture first, then the rows interlaced: the picture early on a slow line"),
     onOff<&P::xyShort>("xy-short",
@@ -115,8 +96,6 @@ void Tek4125Profile::validate() const {
   if (reserved > colorMapSize() - 2)
     refuse(fmt::format("{}={} is out of range; use a value in 0..{} with {}={}", kReserved.key, reserved,
                        colorMapSize() - 2, kPlanes.key, planes));
-  if (surfacePlanes > planes)
-    refuse(fmt::format("{}={} is more than {}={}", kSurfacePlanes.key, surfacePlanes, kPlanes.key, planes));
 }
 
 int Tek4125Profile::pixelBitsFor(int colours) const {

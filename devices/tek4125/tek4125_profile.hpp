@@ -14,11 +14,6 @@
 
 namespace lattice::tek4125 {
 
-// The colour map a terminal shows before any TG: two public tables disagree
-// on entries 5..7 (PGPLOT drivers/tkdriv.f: 5 cyan, 6 magenta, 7 yellow;
-// RAL-CGM cgmtek.h: 5 yellow, 6 cyan, 7 magenta). Only the emulator uses it.
-enum class Tek4125PowerUpMap { Pgplot, RalCgm };
-
 struct Tek4125Profile {
   int width = 1280;          // visible pixels (assumed, as the sibling 4115B)
   int height = 1024;
@@ -41,20 +36,8 @@ struct Tek4125Profile {
   // bits a pixel as the palette needs (no source: off by default, so the
   // default streams stay; a wire budget turns it on). planes: the planes.
   bool ruBitsFit = false;
-  // Readings no source settles, as the emulator applies them (the driver
-  // ignores these). A strict stream must draw the same under every one.
-  Tek4125PowerUpMap powerUpMap = Tek4125PowerUpMap::Pgplot;
-  bool rrFromViewport = false;  // rr-origin=screen|viewport: RR corners relative to the pixel viewport
-  bool rhFromScreen = false;    // rh-origin=viewport|screen: RH relative to the screen, not the viewport
-  int surfacePlanes = 0;        // surface-planes=N: planes of surface 1 before any RD (0 = all)
-  // pixel-bits=ru|surface: RP and RL pack pixels by the bits RU set, or by
-  // surface 1's planes (no source writes fewer bits than its surface has).
-  bool pixelBitsFromSurface = false;
-  // raster-rows=up|down: after RS the beam starts at the viewport's
-  // lower-left corner and a wrap moves it a row up (what the RAL GKS
-  // driver's bottom-row-first RL rasters need), or at the upper-left
-  // corner, wrapping a row down.
-  bool rasterRowsDown = false;
+  // (How the emulator reads what no source settles is not a setting:
+  // tek4125_readings.hpp.)
 
   int colorMapSize() const { return 1 << planes; }
   // Colours a picture may use: the map minus reserved entries.

@@ -163,9 +163,8 @@ TEST_CASE("raster writes wrap at the viewport edge and XOR with ALU mode 7") {
                                         char(0x20 + 0x16)});
   s.cmd("RU").i(1).i(7).i(4);
   s.cmd("RR").p(10, 10).p(10, 10).i(15);
-  Tek4125Profile down;  // the wrap a row down (the default, raster-rows=up, wraps off the top)
-  applyOverride(down, "raster-rows=down");
-  const Tek4125Decoder d = run(s.bytes, down);
+  // The wrap a row down (the default reading, raster-rows=up, wraps off the top).
+  const Tek4125Decoder d = run(s.bytes, {}, {"raster-rows=down"});
   const IndexedImage& img = d.image();
   CHECK(img.at(10, 1023 - 11) == 1);
   CHECK(img.at(11, 1023 - 11) == 2);

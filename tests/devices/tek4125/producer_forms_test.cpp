@@ -32,9 +32,7 @@ TEST_CASE("RL rasters sent as the GKS driver sends them, bottom row first after 
   // Image row r (0 = top): 4 pixels of index r + 1, then 6 of index 15 - r.
   for (int r = 9; r >= 0; --r) s.cmd("RL").i(2).i(4 * 16 + (r + 1)).i(6 * 16 + (15 - r));
   s.cmd("RL").i(1).i(15 * 16 + 3);  // 15 pixels: past the top row's end
-  Tek4125Profile down;
-  applyOverride(down, "raster-rows=down");
-  const auto up = run(s.bytes), flipped = run(s.bytes, down);
+  const auto up = run(s.bytes), flipped = run(s.bytes, {}, {"raster-rows=down"});
   for (const Tek4125Decoder* d : {&up, &flipped}) {
     CHECK(d->report().malformed == 0);
     CHECK(d->report().unknownCommands == 0);
@@ -65,9 +63,7 @@ TEST_CASE("RL at 8 bits wraps a run across the viewport's edge, a row up or (ras
   s.cmd("RL").i(2).i(12 * 256 + 200).i(255 * 256 + 9);
   s.cmd("RH").full(0, 0);
   s.cmd("RL").i(1).i(65535);  // the largest code: 255 pixels of index 255
-  Tek4125Profile down;
-  applyOverride(down, "raster-rows=down");
-  const auto up = run(s.bytes), d = run(s.bytes, down);
+  const auto up = run(s.bytes), d = run(s.bytes, {}, {"raster-rows=down"});
   CHECK(up.report().malformed == 0);
   CHECK(d.report().malformed == 0);
   CHECK(px(up, 1279, 500) == 200);
@@ -88,9 +84,7 @@ TEST_CASE("RL codes split by RU's bits, or (pixel-bits=surface) by surface 1's p
   s.cmd("RD").i(1).i(8).cmd("RU").i(1).i(11).i(4);
   s.cmd("RS").full(0, 0).full(1279, 1023).cmd("RH").full(0, 0);
   s.cmd("RL").i(1).i(2 * 256 + 7);  // 32 pixels at 4 bits, 2 at 8
-  Tek4125Profile surface;
-  applyOverride(surface, "pixel-bits=surface");
-  const auto ru = run(s.bytes), planes = run(s.bytes, surface);
+  const auto ru = run(s.bytes), planes = run(s.bytes, {}, {"pixel-bits=surface"});
   CHECK(px(ru, 31, 0) == 7);
   CHECK(px(ru, 32, 0) == 0);
   CHECK(px(planes, 1, 0) == 7);
@@ -128,7 +122,7 @@ TEST_CASE("after KI1 a raw DEL is dropped and ESC ? stands for it inside a param
   CHECK(px(e, 1023 * 1280 / 4096, 127 * 1280 / 4096) == 1);
 }
 
-TEST_CASE("RD gives surface 1 its planes; fewer planes mask the indices drawn") {
+TEST_CASE("RD gives surface 1 its planes, fewer planes mask the indices drawn") {
   Stream s;
   s.cmd("RD").i(1).i(4);  // surface 1 owns 4 of the 8 planes
   s.cmd("RU").i(1).i(11).i(8).cmd("RS").full(0, 0).full(1279, 1023);
@@ -137,14 +131,13 @@ TEST_CASE("RD gives surface 1 its planes; fewer planes mask the indices drawn") 
   CHECK(d.report().malformed == 0);
   CHECK(px(d, 10, 10) == 0x5);
   // A terminal whose surface 1 starts with 4 planes masks too, until RD says 8.
-  Tek4125Profile fourPlaneSurface;
-  fourPlaneSurface.surfacePlanes = 4;
+  const std::vector<std::string> fourPlaneSurface = {"surface-planes=4"};
   Stream t;
   t.cmd("RR").full(10, 10).full(11, 11).i(0x35);
-  CHECK(px(run(t.bytes, fourPlaneSurface), 10, 10) == 0x5);
+  CHECK(px(run(t.bytes, {}, fourPlaneSurface), 10, 10) == 0x5);
   Stream u;
   u.cmd("RD").i(1).i(8).cmd("RR").full(10, 10).full(11, 11).i(0x35);
-  CHECK(px(run(u.bytes, fourPlaneSurface), 10, 10) == 0x35);
+  CHECK(px(run(u.bytes, {}, fourPlaneSurface), 10, 10) == 0x35);
 }
 
 TEST_CASE("TB sets the colour of entry 0, in the colour mode in force") {
@@ -155,7 +148,7 @@ TEST_CASE("TB sets the colour of entry 0, in the colour mode in force") {
   CHECK(d.image().colormap[0] == Rgb8{0, 128, 255});
 }
 
-TEST_CASE("the power-up colour map follows PGPLOT's table or, as a profile key, RAL-CGM's") {
+TEST_CASE("the power-up colour map follows PGPLOT's table or, as a reading, RAL-CGM's") {
   const Palette pgplot = Tek4125Decoder::defaultColorMap(256, Tek4125PowerUpMap::Pgplot);
   const Palette ral = Tek4125Decoder::defaultColorMap(256, Tek4125PowerUpMap::RalCgm);
   CHECK(pgplot[5] == Rgb8{0, 255, 255});
@@ -166,9 +159,7 @@ TEST_CASE("the power-up colour map follows PGPLOT's table or, as a profile key, 
   CHECK(ral[7] == Rgb8{255, 0, 255});
   CHECK(pgplot[1] == ral[1]);
   CHECK(pgplot[16] == Rgb8{0, 0, 0});
-  Tek4125Profile profile;
-  applyOverride(profile, "power-up-map=ral-cgm");
-  CHECK(Tek4125Decoder(profile).image().colormap[5] == Rgb8{255, 255, 0});
+  CHECK(Tek4125Decoder(Tek4125Profile{}, readingsOf({"power-up-map=ral-cgm"})).image().colormap[5] == Rgb8{255, 255, 0});
 }
 
 TEST_CASE("PGPLOT's, zebra's, RAL-CGM's and the GKS driver's set-up sequences are accepted whole") {
@@ -197,16 +188,14 @@ TEST_CASE("PGPLOT's, zebra's, RAL-CGM's and the GKS driver's set-up sequences ar
   CHECK(d.image().colormap[3] == Rgb8{0, 255, 0});
 }
 
-TEST_CASE("RR and RH follow the profile's origin readings") {
+TEST_CASE("RR and RH follow the origin readings") {
   Stream s;
   s.cmd("RS").full(100, 100).full(199, 199).cmd("RR").full(0, 0).full(1, 1).i(4);
   s.cmd("RU").i(1).i(11).i(4).cmd("RH").full(10, 10).cmd("RP").i(1).i(1).raw("\x50");  // index 12
   const auto screen = run(s.bytes);
   CHECK(px(screen, 0, 0) == 4);
   CHECK(px(screen, 110, 110) == 12);
-  Tek4125Profile other;
-  applyOverrides(other, {"rr-origin=viewport", "rh-origin=screen"});
-  const auto viewport = run(s.bytes, other);
+  const auto viewport = run(s.bytes, {}, {"rr-origin=viewport", "rh-origin=screen"});
   CHECK(px(viewport, 0, 0) == 0);
   CHECK(px(viewport, 100, 100) == 4);
   // RH from the screen puts the beam left of and below the viewport: RP

@@ -9,14 +9,17 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <memory>
 #include <set>
 
 #include "devices/device_table.hpp"
+#include "devices/tek4125/tek4125_decoder.hpp"
 #include "devices/tek4125/tek4125_progressive.hpp"
 #include "devices/tek4125/tek4125_strategy.hpp"
 #include "foundation/byte_sink.hpp"
 #include "io/image_metrics.hpp"
 #include "quantize/run_pipeline.hpp"
+#include "tests/devices/tek4125/readings_keys.hpp"
 #include "tests/support/example_scene.hpp"
 
 using namespace lattice;
@@ -38,9 +41,13 @@ std::vector<std::uint8_t> render(const char* scene, int width, int height, std::
   return out.data();
 }
 
+// The screen after `count` bytes, under the profile `settings` and the
+// emulator's `readings` (readings_keys.hpp).
 IndexedImage screenAfter(const std::vector<std::uint8_t>& bytes, std::size_t count,
-                         const std::vector<std::string>& settings) {
-  auto decoder = devices::makeDevice("tek4125", settings).makeEmulator();
+                         const std::vector<std::string>& settings, const std::vector<std::string>& readings = {}) {
+  tek4125::Tek4125Profile profile;
+  tek4125::applyOverrides(profile, settings);
+  auto decoder = std::make_unique<tek4125::Tek4125Decoder>(profile, tek4125::test::readingsOf(readings));
   decoder->feed(std::span<const std::uint8_t>(bytes).subspan(0, count));
   decoder->finish();
   if (count == bytes.size()) {
@@ -111,9 +118,7 @@ TEST_CASE("progressive: a strict progressive stream draws the same under every u
   const IndexedImage usual = screenAfter(bytes, bytes.size(), settings);
   for (const char* reading : {"rr-origin=viewport", "rh-origin=screen", "surface-planes=4", "power-up-map=ral-cgm"}) {
     INFO(reading);
-    std::vector<std::string> under = settings;
-    under.push_back(reading);
-    const IndexedImage other = screenAfter(bytes, bytes.size(), under);
+    const IndexedImage other = screenAfter(bytes, bytes.size(), settings, {reading});
     long differing = 0;
     for (std::size_t i = 0; i < usual.pixels.size(); ++i)
       differing += !(usual.colormap[usual.pixels[i]] == other.colormap[other.pixels[i]]);

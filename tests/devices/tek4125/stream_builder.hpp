@@ -6,6 +6,8 @@
 #include "devices/tek4125/tek4125_decoder.hpp"
 #include "devices/tek4125/tek4125_encoding.hpp"
 
+#include "tests/devices/tek4125/readings_keys.hpp"
+
 namespace lattice::tek4125::test {
 
 struct Stream {
@@ -34,8 +36,11 @@ struct Stream {
   }
 };
 
-inline Tek4125Decoder run(const tek4125::Bytes& b, Tek4125Profile profile = {}) {
-  Tek4125Decoder d(profile);
+// The stream decoded under `profile` and the readings given as key=value
+// (readings_keys.hpp).
+inline Tek4125Decoder run(const tek4125::Bytes& b, const Tek4125Profile& profile = {},
+                          const std::vector<std::string>& readings = {}) {
+  Tek4125Decoder d(profile, readingsOf(readings));
   d.feed(b);
   d.finish();
   return d;

@@ -1,14 +1,15 @@
 // The strict form set (tek4125_forms.hpp) checked on the bytes themselves,
 // not through our own emulator: what the stream contains and what it never
 // contains. Then through the emulator under every reading no source
-// settles (profile keys rr-origin, rh-origin, surface-planes, pixel-bits,
-// raster-rows, power-up-map): a strict stream must draw the same picture
+// settles (the readings rr-origin, rh-origin, surface-planes, pixel-bits,
+// raster-rows, power-up-map: readings_keys.hpp): a strict stream must draw the same picture
 // under each, while a compact one shows that it depends on them.
 #include <catch2/catch.hpp>
 
 #include <string>
 #include <vector>
 
+#include "tests/devices/tek4125/readings_keys.hpp"
 #include "tests/devices/tek4125/tek_test_support.hpp"
 
 using namespace lattice;
@@ -108,7 +109,7 @@ TEST_CASE("a strict stream: set-up first, full xy, one colour per TG, no raw DEL
   }
 }
 
-TEST_CASE("a strict stream draws the same picture under every unsettled reading; a compact one does not") {
+TEST_CASE("a strict stream draws the same picture under every unsettled reading, a compact one does not") {
   struct Reading {
     std::vector<std::string> keys;
     bool compactDiffersAt12, compactDiffersAt200;  // where a compact stream is known to depend on it
@@ -122,10 +123,9 @@ TEST_CASE("a strict stream draws the same picture under every unsettled reading;
       {{"power-up-map=ral-cgm"}, false, false},
       {{"rr-origin=viewport", "rh-origin=screen", "surface-planes=1", "pixel-bits=surface", "raster-rows=down"},
        true, true}};
-  auto screenUnder = [&](const std::vector<std::uint8_t>& bytes, Tek4125Profile p,
+  auto screenUnder = [&](const std::vector<std::uint8_t>& bytes, const Tek4125Profile& p,
                          const std::vector<std::string>& reading) {
-    applyOverrides(p, reading);
-    Tek4125Decoder d(p);
+    Tek4125Decoder d(p, readingsOf(reading));
     d.feed(bytes);
     d.finish();
     return d.image();
@@ -135,7 +135,7 @@ TEST_CASE("a strict stream draws the same picture under every unsettled reading;
     for (const std::string forms : {"strict", "compact"}) {
       Tek4125Profile profile;
       profile.forms = forms;
-      // Compact with the pre-issue-14 strategy, which uses RR for long runs.
+      // Compact with the older strategy, which uses RR for long runs.
       const Tek4125DriverOptions options =
           forms == "strict" ? Tek4125DriverOptions{} : tek4125Strategy("spans").options;
       const auto bytes = encode(img, profile, options);
