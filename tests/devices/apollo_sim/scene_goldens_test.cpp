@@ -1,5 +1,5 @@
 // The example scenes through the simulated Apollo display: renderer ->
-// pipeline -> ApolloDriver -> GPR framebuffer. The picture in the middle of the
+// pipeline -> the journal driver -> GPR framebuffer. The picture in the middle of the
 // screen must be the quantized image exactly (the colour map takes 0xRRGGBB,
 // 8 bits a gun, so no rounding), the rest of the screen one background index,
 // and the picture is kept as a golden (docs/testing.md). Pipeline modes that
@@ -19,6 +19,7 @@
 #include "loader/scene_loader.hpp"
 #include "tests/support/example_scene.hpp"
 #include "tests/support/golden.hpp"
+#include "tests/support/scene_goldens.hpp"
 
 using namespace lattice;
 using namespace lattice::io;
@@ -26,13 +27,6 @@ using namespace lattice::quantize;
 using namespace lattice::apollo;
 
 namespace {
-
-struct SceneCase {
-  const char* scene;  // file under scenes/
-  int width, height;
-  const char* profile;  // apolloProfileByName
-  Dither dither;
-};
 
 const char* ditherName(Dither d) {
   switch (d) {
@@ -43,75 +37,41 @@ const char* ditherName(Dither d) {
   return "";
 }
 
-std::string stemOf(const SceneCase& c) {
-  std::string name = c.scene;
-  name = name.substr(0, name.find('.'));
-  return fmt::format("apollo_sim/scenes/{}_{}x{}_{}{}", name, c.width, c.height, c.profile, ditherName(c.dither));
-}
-
-void runSceneCase(const SceneCase& c) {
-  INFO("scene " << c.scene << " " << c.width << "x" << c.height << " on " << c.profile);
-  const SceneDesc scene = testing::loadExampleScene(c.scene);
-  Renderer<double> renderer = testing::makeTestRenderer(scene, c.width, c.height);
-  const ApolloProfile profile = apolloProfileByName(c.profile);
-
-  PipelineOptions options;
-  options.progress = false;
-  options.quantize.dither = c.dither;
-
-  IndexedImageSink quantizedSink(profile.colorMapEntries());
-  runPipeline(renderer, quantizedSink, options);
-  const IndexedImage& quantized = quantizedSink.image();
-
-  const ApolloScreen result = renderToApollo(renderer, profile, options);
-  const IndexedImage& screen = result.screen;
-  REQUIRE(screen.width == profile.width);
-  REQUIRE(screen.height == profile.height);
-
+// Through the device table's journal driver and its replaying emulator, in
+// the shared golden harness (tests/support/scene_goldens.hpp); the journal
+// itself is not a golden, the screen is.
+void runSceneCase(const char* scene, int width, int height, const std::string& profileName, Dither dither) {
+  const ApolloProfile profile = apolloProfileByName(profileName);
+  testing::SceneGoldenCase c;
+  c.device = "apollo";
+  c.settings = {"profile=" + profileName};
+  c.scene = scene;
+  c.width = width;
+  c.height = height;
+  c.dither = dither;
+  c.colours = profile.colorMapEntries();
+  const std::string name = std::string(scene).substr(0, std::string(scene).find('.'));
+  c.stem = fmt::format("apollo_sim/scenes/{}_{}x{}_{}{}", name, width, height, profileName, ditherName(dither));
+  testing::ScreenRules rules;
   // Centred, odd leftovers to the right and bottom (ApolloDriver::begin).
-  const int left = (profile.width - c.width) / 2, top = (profile.height - c.height) / 2;
-  const PaletteIndex background = screen.at(0, 0);
-  RgbImage picture(c.width, c.height);
-  long wrongIndices = 0, wrongColours = 0, outsideDrawn = 0;
-  for (int y = 0; y < screen.height; ++y)
-    for (int x = 0; x < screen.width; ++x) {
-      const int px = x - left, py = y - top;
-      if (px < 0 || py < 0 || px >= c.width || py >= c.height) {
-        outsideDrawn += screen.at(x, y) != background;
-        continue;
-      }
-      // The sink loads the palette in order, so even the indices agree.
-      wrongIndices += screen.at(x, y) != quantized.at(px, py);
-      const Rgb8 shown = screen.colorAt(x, y);
-      wrongColours += !(shown == quantized.colorAt(px, py));
-      picture.pixel(px, py)[0] = shown.r;
-      picture.pixel(px, py)[1] = shown.g;
-      picture.pixel(px, py)[2] = shown.b;
-    }
-  CHECK(wrongIndices == 0);
-  CHECK(wrongColours == 0);
-  CHECK(outsideDrawn == 0);
-  testing::checkGoldenPng(stemOf(c) + ".png", picture);
+  rules.origin = [](const IndexedImage& screen, int w, int h) {
+    return std::pair{(screen.width - w) / 2, (screen.height - h) / 2};
+  };
+  rules.sameIndices = true;  // the sink loads the palette in order, so even the indices agree
+  testing::runSceneGolden(c, rules);
 }
 
 }  // namespace
 
 TEST_CASE("scene goldens: the example scenes on a DN660") {
-  const SceneCase cases[] = {
-      {"sphere-hole.toml", 64, 64, "dn660", Dither::None},
-      {"torus-floor.toml", 80, 60, "dn660", Dither::None},
-      {"thesis-camera.toml", 64, 64, "dn660", Dither::None},
-      {"hook.toml", 64, 64, "dn660", Dither::None},
-  };
-  for (const SceneCase& c : cases) runSceneCase(c);
+  for (const auto& [scene, w, h] : {std::tuple{"sphere-hole.toml", 64, 64}, std::tuple{"torus-floor.toml", 80, 60},
+                                    std::tuple{"thesis-camera.toml", 64, 64}, std::tuple{"hook.toml", 64, 64}})
+    runSceneCase(scene, w, h, "dn660", Dither::None);
 }
 
 TEST_CASE("scene goldens: 16 colours on a 4-plane DN660, dithered") {
-  const SceneCase cases[] = {
-      {"torus-floor.toml", 80, 60, "dn660-4", Dither::FloydSteinberg},
-      {"thesis-camera.toml", 64, 64, "dn660-4", Dither::Bayer},
-  };
-  for (const SceneCase& c : cases) runSceneCase(c);
+  runSceneCase("torus-floor.toml", 80, 60, "dn660-4", Dither::FloydSteinberg);
+  runSceneCase("thesis-camera.toml", 64, 64, "dn660-4", Dither::Bayer);
 }
 
 TEST_CASE("scene goldens: passes and frame mode draw the same screen") {

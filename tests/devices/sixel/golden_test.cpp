@@ -14,6 +14,8 @@
 #include "tests/devices/tek4027/synthetic_images.hpp"
 #include "tests/support/example_scene.hpp"
 #include "tests/support/golden.hpp"
+#include "devices/sixel/sixel_forms.hpp"
+#include "tests/support/scene_goldens.hpp"
 
 using namespace lattice;
 using namespace lattice::sixel;
@@ -49,31 +51,27 @@ TEST_CASE("golden: synthetic frames at 16 and 256 registers") {
 }
 
 TEST_CASE("golden: example scenes through the whole sixel chain") {
-  struct Case {
-    const char* scene;
-    int width, height, registers;
+  // The shared golden harness (tests/support/scene_goldens.hpp): the screen is
+  // the picture itself, its registers the quantized indices, each gun as the
+  // register's percent leaves it.
+  testing::ScreenRules rules;
+  rules.sameIndices = true;
+  rules.colourMatches = [](Rgb8 given, Rgb8 shown) {
+    return shown == Rgb8{eightBitOf(percentOf(given.r)), eightBitOf(percentOf(given.g)), eightBitOf(percentOf(given.b))};
   };
-  for (const Case c : {Case{"sphere-hole.toml", 64, 64, 16}, Case{"torus-floor.toml", 80, 60, 256},
-                       Case{"fuzzy-sphere-1000.toml", 96, 96, 256}}) {
-    INFO(c.scene << " at " << c.registers << " registers");
-    const SceneDesc scene = testing::loadExampleScene(c.scene);
-    Renderer<double> renderer = testing::makeTestRenderer(scene, c.width, c.height);
-    const devices::Device device = devices::makeDevice("sixel", {fmt::format("registers={}", c.registers)});
-    quantize::PipelineOptions options;
-    options.progress = false;
-    IndexedImageSink quantized(c.registers);
-    quantize::runPipeline(renderer, quantized, options);
-    MemorySink stream;
-    auto driver = device.makeDriver(stream);
-    quantize::runPipeline(renderer, driver->sink(), options);
-    REQUIRE(driver->stats().bytes == stream.data().size());
-    SixelProfile profile;
-    profile.registers = c.registers;
-    const IndexedImage screen = cleanDecode(stream.data(), profile);
-    CHECK(screen.pixels == quantized.image().pixels);
-    std::string stem = c.scene;
-    stem = fmt::format("scenes/{}_{}x{}_{}", stem.substr(0, stem.find('.')), c.width, c.height, c.registers);
-    testing::checkGoldenBytes("sixel/" + stem + ".six", stream.data());
-    testing::checkGoldenPng("sixel/" + stem + ".png", toRgbImage(screen));
+  for (const auto& [scene, w, h, registers] :
+       {std::tuple{"sphere-hole.toml", 64, 64, 16}, std::tuple{"torus-floor.toml", 80, 60, 256},
+        std::tuple{"fuzzy-sphere-1000.toml", 96, 96, 256}}) {
+    testing::SceneGoldenCase c;
+    c.device = "sixel";
+    c.settings = {fmt::format("registers={}", registers)};
+    c.scene = scene;
+    c.width = w;
+    c.height = h;
+    c.colours = registers;
+    const std::string name = std::string(scene).substr(0, std::string(scene).find('.'));
+    c.stem = fmt::format("sixel/scenes/{}_{}x{}_{}", name, w, h, registers);
+    c.streamExtension = ".six";
+    testing::runSceneGolden(c, rules);
   }
 }
