@@ -41,6 +41,7 @@
 #include <string>
 #include <vector>
 
+#include "devices/gun_percent.hpp"
 #include "devices/sixel/sixel_decoder.hpp"
 #include "devices/sixel/sixel_driver.hpp"
 #include "devices/sixel/sixel_forms.hpp"
@@ -215,8 +216,8 @@ bool benchOne(const std::string& path, int runs) {
   std::vector<Rgb8> expected(picture.pixels.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
     const Rgb8 c = picture.colormap[picture.pixels[i]];
-    expected[i] = Rgb8{sixel::eightBitOf(sixel::percentOf(c.r)), sixel::eightBitOf(sixel::percentOf(c.g)),
-                       sixel::eightBitOf(sixel::percentOf(c.b))};
+    expected[i] = Rgb8{sixel::devices::eightOfPercent(sixel::percentOf(c.r)), sixel::devices::eightOfPercent(sixel::percentOf(c.g)),
+                       sixel::devices::eightOfPercent(sixel::percentOf(c.b))};
   }
   const std::vector<Rgb8> oursByOurs = decodeOurs(ours.data()), theirsByOurs = decodeOurs(bytesOf(theirs));
   const std::vector<Rgb8> oursByLib = decodeLibsixel(ours.data(), picture.width, picture.height);

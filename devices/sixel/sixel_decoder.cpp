@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "devices/gun_percent.hpp"
 #include "devices/sixel/sixel_forms.hpp"
 #include "devices/tek_hls.hpp"
 #include "devices/work_budget.hpp"
@@ -217,8 +218,8 @@ void SixelDecoder::defineOrSelect() {
   }
   const std::uint32_t space = params_[1], x = params_[2], y = params_[3], z = params_[4];
   if (space == kColourSpaceRgb && x <= 100 && y <= 100 && z <= 100) {
-    registers_[static_cast<std::size_t>(reg)] = {eightBitOf(static_cast<int>(x)), eightBitOf(static_cast<int>(y)),
-                                                 eightBitOf(static_cast<int>(z))};
+    registers_[static_cast<std::size_t>(reg)] = {devices::eightOfPercent(static_cast<int>(x)), devices::eightOfPercent(static_cast<int>(y)),
+                                                 devices::eightOfPercent(static_cast<int>(z))};
   } else if (space == kColourSpaceHls && x <= 360 && y <= 100 && z <= 100) {
     registers_[static_cast<std::size_t>(reg)] =
         devices::tekHlsToRgb({static_cast<int>(x), static_cast<int>(y), static_cast<int>(z)});

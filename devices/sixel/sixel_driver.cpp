@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "devices/gun_percent.hpp"
 #include "devices/sixel/sixel_forms.hpp"
 #include "foundation/error.hpp"
 
@@ -18,8 +19,8 @@ std::string sixelHeader(const SixelProfile& p, const FrameInfo& frame) {
   out += fmt::format("{}1;1;{};{}", kRaster, frame.width, frame.height);
   for (std::size_t i = 0; i < frame.palette.size(); ++i) {
     const Rgb8 c = frame.palette[i];
-    out += fmt::format("{}{};{};{};{};{}", kColour, i, kColourSpaceRgb, percentOf(c.r), percentOf(c.g),
-                       percentOf(c.b));
+    out += fmt::format("{}{};{};{};{};{}", kColour, i, kColourSpaceRgb, devices::percentOf8(c.r), devices::percentOf8(c.g),
+                       devices::percentOf8(c.b));
   }
   return out;
 }

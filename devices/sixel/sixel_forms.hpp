@@ -36,10 +36,5 @@ inline constexpr int kBandRows = 6;
 inline constexpr int kColourSpaceHls = 1;
 inline constexpr int kColourSpaceRgb = 2;
 
-// 8-bit gun <-> the register's percent, both rounded to nearest.
-constexpr int percentOf(std::uint8_t v8) { return (v8 * 100 + 127) / 255; }
-constexpr std::uint8_t eightBitOf(int percent) { return static_cast<std::uint8_t>((percent * 255 + 50) / 100); }
-// Largest gun difference of 8 bits -> percent -> 8 bits (checked over 0..255 in tests).
-inline constexpr int kPercentRoundTripMaxDelta = 2;
 
 }  // namespace lattice::sixel

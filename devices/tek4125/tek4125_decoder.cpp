@@ -6,6 +6,8 @@
 #include <cstdlib>
 
 #include "devices/canvas.hpp"
+#include "devices/gun_percent.hpp"
+#include "devices/tek_hls.hpp"
 #include "devices/work_budget.hpp"
 #include "foundation/rounding.hpp"
 
@@ -15,25 +17,6 @@ namespace {
 
 constexpr std::uint8_t kEsc = 0x1B, kFF = 0x0C, kGS = 0x1D, kUS = 0x1F, kCR = 0x0D, kDel = 0x7F;
 constexpr std::size_t kMaxPanelPoints = 65536;  // bounds the fill work a stream can ask for
-
-std::uint8_t percentTo8(int percent) {
-  const int p = std::clamp(percent, 0, 100);
-  return static_cast<std::uint8_t>((p * 255 + 50) / 100);
-}
-
-// Tek HLS: hue in degrees with blue at 0, red at 120, green at 240 (assumed
-// from the 4100 colour-cone diagrams); lightness and saturation 0..100.
-Rgb8 hlsToRgb(int hue, int lightness, int saturation) {
-  const double h = std::fmod(std::fmod(hue + 240.0, 360.0) + 360.0, 360.0) / 360.0;  // standard hue
-  const double l = std::clamp(lightness, 0, 100) / 100.0, s = std::clamp(saturation, 0, 100) / 100.0;
-  const double q = l < 0.5 ? l * (1 + s) : l + s - l * s, p = 2 * l - q;
-  auto channel = [&](double t) {
-    t -= std::floor(t);
-    double v = t < 1.0 / 6 ? p + (q - p) * 6 * t : t < 0.5 ? q : t < 2.0 / 3 ? p + (q - p) * (2.0 / 3 - t) * 6 : p;
-    return static_cast<std::uint8_t>(scaledStep(v, 0.0, 1.0, 255));
-  };
-  return Rgb8{channel(h + 1.0 / 3), channel(h), channel(h - 1.0 / 3)};
-}
 
 }  // namespace
 
@@ -115,7 +98,8 @@ Palette Tek4125Decoder::defaultColorMap(int entries, Tek4125PowerUpMap which) {
   const auto& table = which == Tek4125PowerUpMap::Pgplot ? pgplot : ralCgm;
   Palette map(static_cast<std::size_t>(entries));
   for (int i = 0; i < entries && i < 16; ++i)
-    map[static_cast<std::size_t>(i)] = Rgb8{percentTo8(table[i][0]), percentTo8(table[i][1]), percentTo8(table[i][2])};
+    map[static_cast<std::size_t>(i)] = Rgb8{devices::eightOfPercent(table[i][0]), devices::eightOfPercent(table[i][1]),
+                                            devices::eightOfPercent(table[i][2])};
   return map;
 }
 
@@ -462,9 +446,11 @@ void Tek4125Decoder::runLengthWrite() {
 void Tek4125Decoder::setColor(int index, int c1, int c2, int c3) {
   if (index < 0 || index >= profile_.colorMapSize()) return malformed();
   Rgb8 rgb;
-  if (colorMode_ == 3) rgb = hlsToRgb(c1, c2, c3);
-  else if (colorMode_ == 2) rgb = Rgb8{percentTo8(100 - c1), percentTo8(100 - c2), percentTo8(100 - c3)};
-  else rgb = Rgb8{percentTo8(c1), percentTo8(c2), percentTo8(c3)};
+  if (colorMode_ == 3) rgb = devices::tekHlsToRgb({c1, c2, c3});  // the 4027's and sixel's HLS too
+  else if (colorMode_ == 2)  // CMY
+    rgb = Rgb8{devices::eightOfPercent(100 - c1), devices::eightOfPercent(100 - c2), devices::eightOfPercent(100 - c3)};
+  else
+    rgb = Rgb8{devices::eightOfPercent(c1), devices::eightOfPercent(c2), devices::eightOfPercent(c3)};
   screen_.colormap[static_cast<std::size_t>(index)] = rgb;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "devices/gun_percent.hpp"
 #include "devices/tek4125/tek4125_progressive.hpp"
 #include "devices/tek4125/tek4125_rows.hpp"
 #include "devices/tek4125/tek4125_writer.hpp"
@@ -167,7 +168,7 @@ std::unique_ptr<Tek4125Driver::Stream> Tek4125Driver::openStream(const Tek4125Dr
   for (int i = 0; i < 3; ++i) out.integer(1);
   auto colour = [&](int i) {
     const Rgb8 c = frame_.palette[static_cast<std::size_t>(i)];
-    return std::array<int, 3>{percentFrom8(c.r), percentFrom8(c.g), percentFrom8(c.b)};
+    return std::array<int, 3>{devices::percentOf8(c.r), devices::percentOf8(c.g), devices::percentOf8(c.b)};
   };
   if (forms.explicitBackground && reserved == 0) {  // the colour the clear shows: picture colour 0
     out.command("TB");

@@ -60,12 +60,6 @@ struct Tek4125Placement {
 };
 Tek4125Placement placePicture(const Tek4125Profile& profile, int width, int height);
 
-// 8-bit gun to the terminal's 0..100 percent, rounded to nearest.
-constexpr int percentFrom8(unsigned v8) { return static_cast<int>((v8 * 100u + 127u) / 255u); }
-// And back, rounded to nearest (what the emulator shows).
-constexpr std::uint8_t eightFromPercent(int percent) {
-  return static_cast<std::uint8_t>((static_cast<unsigned>(percent) * 255u + 50u) / 100u);
-}
 
 class Tek4125Driver final : public IndexedSink, public PaletteCountsSink {
  public:

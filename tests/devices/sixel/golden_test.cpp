@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "devices/device_table.hpp"
+#include "devices/gun_percent.hpp"
 #include "quantize/run_pipeline.hpp"
 #include "tests/devices/sixel/sixel_support.hpp"
 #include "tests/devices/tek4027/synthetic_images.hpp"
@@ -57,7 +58,7 @@ TEST_CASE("golden: example scenes through the whole sixel chain") {
   testing::ScreenRules rules;
   rules.sameIndices = true;
   rules.colourMatches = [](Rgb8 given, Rgb8 shown) {
-    return shown == Rgb8{eightBitOf(percentOf(given.r)), eightBitOf(percentOf(given.g)), eightBitOf(percentOf(given.b))};
+    return shown == Rgb8{devices::eightOfPercent(devices::percentOf8(given.r)), devices::eightOfPercent(devices::percentOf8(given.g)), devices::eightOfPercent(devices::percentOf8(given.b))};
   };
   for (const auto& [scene, w, h, registers] :
        {std::tuple{"sphere-hole.toml", 64, 64, 16}, std::tuple{"torus-floor.toml", 80, 60, 256},

@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 
+#include "devices/gun_percent.hpp"
 #include "devices/sixel/sixel_band.hpp"
 #include "devices/sixel/sixel_forms.hpp"
 #include "foundation/error.hpp"
@@ -33,7 +34,7 @@ void checkReproduces(const IndexedImage& img, const SixelProfile& profile = {}) 
       wrongRegisters += screen.at(x, y) != img.at(x, y);
       const Rgb8 a = img.colorAt(x, y), b = screen.colorAt(x, y);
       wrongColours += std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)}) >
-                      kPercentRoundTripMaxDelta;
+                      devices::kPercentRoundTripMaxDelta;
     }
   CHECK(wrongRegisters == 0);
   CHECK(wrongColours == 0);
@@ -60,11 +61,11 @@ std::vector<std::uint8_t> expandRuns(const std::string& runs) {
 
 TEST_CASE("8 bits -> percent -> 8 bits stays within the stated bound") {
   int worst = 0;
-  for (int v = 0; v < 256; ++v) worst = std::max(worst, std::abs(eightBitOf(percentOf(static_cast<std::uint8_t>(v))) - v));
-  CHECK(worst <= kPercentRoundTripMaxDelta);
-  CHECK(percentOf(0) == 0);
-  CHECK(percentOf(255) == 100);
-  CHECK(eightBitOf(100) == 255);
+  for (int v = 0; v < 256; ++v) worst = std::max(worst, std::abs(devices::eightOfPercent(devices::percentOf8(static_cast<std::uint8_t>(v))) - v));
+  CHECK(worst <= devices::kPercentRoundTripMaxDelta);
+  CHECK(devices::percentOf8(0) == 0);
+  CHECK(devices::percentOf8(255) == 100);
+  CHECK(devices::eightOfPercent(100) == 255);
 }
 
 TEST_CASE("runs: each written sixel lies between must and may, and long runs are repeats") {

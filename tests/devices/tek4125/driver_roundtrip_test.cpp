@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "devices/gun_percent.hpp"
 #include "tests/devices/tek4125/tek_test_support.hpp"
 #include "foundation/error.hpp"
 
@@ -154,12 +155,14 @@ TEST_CASE("the decoded picture does not depend on how the stream is chunked") {
 }
 
 TEST_CASE("palette quantization to percent rounds to nearest and back") {
-  CHECK(percentFrom8(0) == 0);
-  CHECK(percentFrom8(255) == 100);
-  CHECK(percentFrom8(128) == 50);
-  CHECK(percentFrom8(1) == 0);
-  CHECK(percentFrom8(2) == 1);
-  for (unsigned v = 0; v < 256; ++v) CHECK(std::abs(int(eightFromPercent(percentFrom8(v))) - int(v)) <= 2);
+  CHECK(devices::percentOf8(0) == 0);
+  CHECK(devices::percentOf8(255) == 100);
+  CHECK(devices::percentOf8(128) == 50);
+  CHECK(devices::percentOf8(1) == 0);
+  CHECK(devices::percentOf8(2) == 1);
+  for (int v = 0; v < 256; ++v)
+    CHECK(std::abs(devices::eightOfPercent(devices::percentOf8(static_cast<std::uint8_t>(v))) - v) <=
+          devices::kPercentRoundTripMaxDelta);
 }
 
 TEST_CASE("the driver refuses pictures and palettes the terminal cannot show") {

@@ -9,6 +9,7 @@
 
 #include <string>
 
+#include "devices/gun_percent.hpp"
 #include "devices/tek4125/tek4125_driver.hpp"
 #include "devices/tek4125/tek4125_profile.hpp"
 #include "tests/support/scene_goldens.hpp"
@@ -44,8 +45,8 @@ void runSceneCase(const char* scene, int width, int height, int planes, Dither d
   };
   // The driver loads 0..100 percent a gun; the screen shows it back in 8 bits.
   rules.colourMatches = [](Rgb8 given, Rgb8 shown) {
-    return shown == Rgb8{eightFromPercent(percentFrom8(given.r)), eightFromPercent(percentFrom8(given.g)),
-                         eightFromPercent(percentFrom8(given.b))};
+    return shown == Rgb8{devices::eightOfPercent(devices::percentOf8(given.r)), devices::eightOfPercent(devices::percentOf8(given.g)),
+                         devices::eightOfPercent(devices::percentOf8(given.b))};
   };
   rules.background = 0;
   testing::runSceneGolden(c, rules);
