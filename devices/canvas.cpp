@@ -65,8 +65,8 @@ std::pair<int, int> polygonRows(const IndexedImage& screen, std::span<const doub
 // origin +- floor((2 i |delta| + n) / 2n). The division is done once: the
 // numerator grows by 2 |delta| a step and |delta| <= n, so the quotient
 // grows by at most one a step, a carry.
-// (The per-step 128-bit division made a 1 MB stream of long vectors take
-// 7 s; docs/limits.md promises 5 s for any 1 MB stream.)
+// (A 128-bit division a step made 1 MB streams of long vectors break the
+// bound docs/limits.md promises; bench/tek4014-vectors.sh measures it.)
 struct Stepper {
   long position, remainder, increment, modulus, sign;
   Stepper(long i, long origin, long delta, long n)

@@ -67,10 +67,9 @@ std::vector<Vec3d> fibonacciSphere(int count);
 
 // The most instances one lattice_scatter places (docs/limits.md). Placement
 // is linear (the Fibonacci spiral) and the union's BVH O(n log n), but each
-// instance holds about 850 bytes and every ray passes more of them: measured
-// by bench/scatter-scaling.sh, 100,000 hairs load in 0.36 s and 86 MiB and
-// render 64x64 in 0.62 s; 10^6 take 2.5 s and 837 MiB before the first ray
-// and 8.3 s for 64x64 (minutes for 512x512).
+// instance holds about 850 bytes and every ray passes more of them; the
+// limit keeps a scene's load and render within the figures docs/limits.md
+// gives (measured by bench/scatter-scaling.sh).
 inline constexpr long long kMaxScatterCount = 100000;
 
 }  // namespace lattice::lht

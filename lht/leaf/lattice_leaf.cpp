@@ -132,8 +132,8 @@ class BlendedLatticeLeaf final : public LatticeLeafBase<T> {
     enterS = sSum / covered;
     // Opposite normals can cancel; the heaviest hit's normal stands in.
     enterNormal = lattice::length(nSum) > covered * T(0.25) ? lattice::normalize(nSum) : bestNormal;
-    // The exit from the heaviest hitting pair alone: blending it too cost
-    // 0.035 s of 0.50 on Plate 6 at f_lat 1 for 0.01 dB (docs/lattices.md).
+    // The exit from the heaviest hitting pair alone: blending it too costs
+    // time for no visible gain (docs/lattices.md gives the measurement).
     if (!this->read(outs.point[heaviest.o], in.point[heaviest.i], leaveS, leaveNormal)) {
       leaveS = T(0);
       leaveNormal = -enterNormal;
