@@ -9,7 +9,7 @@
 # make); -ffunction-sections/-fdata-sections with --gc-sections keep only
 # what the image reaches (the core's file and thread code never links).
 set(CMAKE_SYSTEM_NAME Generic)
-# LATTICE_FIRMWARE_CPU: the board's core (firmware/boards.tsv; an M4 runs
+# LATTICE_FIRMWARE_CPU: the board's core (firmware/boards/BOARD/board.tsv; an M4 runs
 # M3 code too, and its own build may use UMAAL and the DSP instructions).
 if(NOT LATTICE_FIRMWARE_CPU)
   set(LATTICE_FIRMWARE_CPU cortex-m3)

@@ -1,7 +1,7 @@
 #pragma once
 // The byte sink of the firmware, one implementation per board
-// (firmware/boards.tsv): this file's notes are the mps2-an385's, whose
-// uart_sink.cpp drives the CMSDK APB UART0 of the MPS2 AN385
+// (firmware/boards/BOARD/byte_sink.cpp): this file's notes are the
+// mps2-an385's, whose byte_sink.cpp drives the CMSDK APB UART0 of the MPS2 AN385
 // (base 0x40004000, qemu hw/arm/mps2.c; register layout from Arm's CMSDK
 // technical reference, DDI 0479: DATA at +0, STATE at +4 with bit 0 "TX
 // buffer full", CTRL at +8 with bit 0 "TX enable", BAUDDIV at +0x10). It is

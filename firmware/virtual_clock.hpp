@@ -7,7 +7,7 @@
 // exactly 1 ns (QEMU's -icount documentation), so ticks times the tick's
 // length in ns is the number of instructions executed - the count
 // bench/firmware.sh reports. The processor clock is the board's
-// (firmware/boards.tsv, LATTICE_BOARD_HZ): QEMU's mps2-an385 runs at 25 MHz
+// (firmware/boards/BOARD/board.tsv, LATTICE_BOARD_HZ): QEMU's mps2-an385 runs at 25 MHz
 // (hw/arm/mps2.c, SYSCLK_FRQ; 40 ns a tick), its netduinoplus2 at 168 MHz
 // (hw/arm/netduinoplus2.c; 5.95 ns a tick, so the count is good to 6).
 #include <cstdint>

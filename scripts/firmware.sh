@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The firmware end to end (docs/firmware.md): bake a scene with the host
-# `lattice`, build the image for a board of firmware/boards.tsv, run it under
+# `lattice`, build the image for a board of firmware/boards/, run it under
 # that board's QEMU machine with its serial port to a file, compare the
 # stream with the host's `lattice render --arith fixed` (it prints
 # "identical" or the first differing byte, and fails on a difference), and
@@ -44,9 +44,10 @@ done
 [[ -n $scene ]] || { echo "firmware.sh: give a scene file (see --help)" >&2; exit 2; }
 [[ -f $scene ]] || { echo "firmware.sh: $scene: no such scene file" >&2; exit 2; }
 
-# The board's row of firmware/boards.tsv: name, QEMU machine, CPU, ...
-row=$(awk -v b="$board" '$1 == b && $1 !~ /^#/' firmware/boards.tsv)
-[[ -n $row ]] || { echo "firmware.sh: --board $board is not in firmware/boards.tsv ($(awk '$1 !~ /^#/ {printf "%s ", $1}' firmware/boards.tsv))" >&2; exit 2; }
+# The board's row (firmware/boards/BOARD/board.tsv): name, QEMU machine, CPU, ...
+[[ $board != */* && -f firmware/boards/$board/board.tsv ]] ||
+  { echo "firmware.sh: --board $board is not a folder of firmware/boards/ ($(ls firmware/boards | tr '\n' ' '))" >&2; exit 2; }
+row=$(awk '$1 !~ /^#/' "firmware/boards/$board/board.tsv")
 read -r _ machine cpu _ <<<"$row"
 
 for tool in arm-none-eabi-g++ qemu-system-arm; do

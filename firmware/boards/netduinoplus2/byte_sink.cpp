@@ -1,4 +1,4 @@
-// The byte sink of the netduinoplus2 board (firmware/boards.tsv): USART1 of
+// The byte sink of the netduinoplus2 board (firmware/boards/netduinoplus2/): USART1 of
 // an STM32F405/F407, polled. QEMU 7.2's stm32f405_soc wires its first serial
 // chardev (-serial) to USART1 at 0x40011000 (hw/arm/stm32f405_soc.c lists
 // the USARTs from 0x40011000; `info mtree` shows stm32f2xx-usart there).
