@@ -19,6 +19,7 @@
 // a setting that is not one field (a preset, a character spelled as a name)
 // gives its own pair of captureless functions. Rows are constant data with
 // plain function pointers, so a table sits in flash on the firmware.
+#include <array>
 #include <cstddef>
 #include <iterator>
 #include <span>
@@ -198,6 +199,31 @@ constexpr auto choiceAs(std::string_view key, std::string_view help) {
                       return static_cast<double>(i);  // past the names: a value none names
                     },
                     [](P& p, double v) { settings_detail::field<Path...>(p) = Values[static_cast<std::size_t>(v)]; }};
+}
+
+// The names of a table of EnumName pairs (foundation/name_table.hpp), for a
+// Choice row over an enum field: the table is the one spelling.
+template <const auto& Table>
+SettingChoices namesOfTable() {
+  static const auto names = [] {
+    std::array<std::string_view, std::size(Table)> n{};
+    for (std::size_t i = 0; i < n.size(); ++i) n[i] = Table[i].second;
+    return n;
+  }();
+  return names;
+}
+
+// An enum field taking one of the names of `Table`, stored as that entry's value.
+template <const auto& Table, auto... Path>
+constexpr auto choiceOf(std::string_view key, std::string_view help) {
+  using P = settings_detail::ProfileOf<Path...>;
+  return Setting<P>{key, SettingKind::Choice, {}, &namesOfTable<Table>, help,
+                    [](const P& p) {
+                      std::size_t i = 0;
+                      while (i < std::size(Table) && Table[i].first != settings_detail::field<Path...>(p)) ++i;
+                      return static_cast<double>(i);
+                    },
+                    [](P& p, double v) { settings_detail::field<Path...>(p) = Table[static_cast<std::size_t>(v)].first; }};
 }
 
 template <class Profile>

@@ -30,7 +30,11 @@ struct RemovedFlag {
   const char* flag;
   const char* instead;
 };
-constexpr RemovedFlag kRemovedFlags[] = {{"--apollo-profile", "--set profile=P (with --device apollo)"}};
+constexpr RemovedFlag kRemovedFlags[] = {
+    {"--apollo-profile", "--set profile=P (with --device apollo)"},
+    {"--split", "`lattice quantize --split` to compare palettes (render uses the median cut)"},
+    {"--refine", "`lattice quantize --refine` to compare palettes (render refines nothing)"},
+};
 
 std::string suggestion(const std::string& typed, const std::vector<std::string>& names) {
   const std::optional<std::string> nearest = nearestName(typed, names);

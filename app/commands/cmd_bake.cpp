@@ -72,7 +72,7 @@ void addBake(CLI::App& root) {
       "  lattice bake scenes/hook.toml --size 64x64 --set planes=4 -o scene_data.cpp\n"
       "  scripts/firmware.sh scenes/hook.toml --size 64x64        # bake, build, run under QEMU, decode");
   auto flags = std::make_shared<BakeFlags>();
-  flags->pipeline.histogram = "small";
+  flags->pipeline.initial.quantize.histogram = lattice::quantize::HistogramForm::Small;
   cmd->add_option("scene", flags->scene, "Scene file (TOML, see docs/scene-format.md)")->required();
   cmd->add_option("-o,--output", flags->output, "The C++ file to write (atomically)")->required();
   cmd->add_option("--size", flags->size, "Picture size WIDTHxHEIGHT in pixels")->capture_default_str();

@@ -33,7 +33,7 @@ void runQuantize(const QuantizeArgs& args, const CLI::App& cmd) {
                                      args.output));
   lattice::RgbImage image = lattice::io::readPng(args.input);  // Error(Input) naming the file
   lattice::RgbImageSource source(image);
-  lattice::IndexedImageSink sink(args.pipeline.colors);
+  lattice::IndexedImageSink sink(options.maxColors);
   lattice::quantize::PipelineReport report = lattice::quantize::runPipeline(source, sink, options);
   lattice::io::writePng(output, sink.image());  // atomic; Error(Output) naming the file
   if (args.verbose)

@@ -141,7 +141,7 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
                  "rasterize within it exits 3 before any work (default: half the physical memory, which only "
                  "refuses; docs/memory.md)")
       ->group("Memory");
-  addPipelineOptions(&cmd, f.pipeline, "Quantizer (devices)");
+  addPipelineOptions(&cmd, f.pipeline, "Quantizer (devices)", kRenderPipelineKeys);
   addSerialOptions(&cmd, f.serial, /*portRequired=*/false, profileBaudText());
   addWireOptions(&cmd, f.wire);
 }
@@ -153,10 +153,11 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
   refuseUnless(cmd, {"--stream", "--port"}, !png,
                fmt::format("takes a device's command stream, and a truecolour render has none: add --device ({})",
                            deviceChoices));
-  refuseUnless(cmd, {"--colors", "--dither", "--split", "--refine", "--mode", "--sample", "--histogram"}, !png,
-               fmt::format("sets the quantizer of a device's colours, and a truecolour PNG is not quantized: add "
-                           "--device ({}), or quantize the PNG afterwards with `lattice quantize`",
-                           deviceChoices));
+  for (std::string_view key : kRenderPipelineKeys)  // the quantizer's flags, from its schema
+    refuseUnless(cmd, {fmt::format("--{}", key).c_str()}, !png,
+                 fmt::format("sets the quantizer of a device's colours, and a truecolour PNG is not quantized: add "
+                             "--device ({}), or quantize the PNG afterwards with `lattice quantize`",
+                             deviceChoices));
   refuseUnless(cmd, {"--set"}, !png,
                fmt::format("overrides a device profile, and none was chosen: add --device ({})", deviceChoices));
   refuseUnless(cmd, {"--flow", "--data-bits", "--parity", "--stop-bits", "--stall-timeout", "--pace"},

@@ -1,5 +1,6 @@
 // docs/cli.md's table of each device's --set keys is the device's settings
-// table (foundation/settings_schema.hpp), regenerated here and compared with
+// table (foundation/settings_schema.hpp), and its table of the quantizer's
+// flags the quantizer's (quantize/pipeline_settings.hpp), regenerated here and compared with
 // the doc's text between the device's markers, so a key added, renamed or
 // re-ranged in code and not in the doc fails this test. On a difference it
 // prints the block to paste; LATTICE_REGENERATE_GOLDENS=1 rewrites the doc
@@ -15,6 +16,7 @@
 
 #include "devices/device_table.hpp"
 #include "foundation/system/atomic_file.hpp"
+#include "quantize/pipeline_settings.hpp"
 #include "tests/support/golden.hpp"
 
 namespace {
@@ -28,18 +30,22 @@ std::string readText(const std::filesystem::path& path) {
 
 }  // namespace
 
-TEST_CASE("docs/cli.md lists each device's --set keys as its settings table declares them") {
+TEST_CASE("docs/cli.md lists each device's --set keys and the quantizer's flags as their tables declare them") {
   const std::filesystem::path doc = lattice::testing::sourcePath("docs/cli.md");
   std::string text = readText(doc);
   REQUIRE_FALSE(text.empty());
   bool rewritten = false;
-  for (const lattice::devices::DeviceEntry& entry : lattice::devices::deviceTable()) {
-    const std::string begin = fmt::format("<!-- settings:{} begin -->\n", entry.name);
-    const std::string end = fmt::format("<!-- settings:{} end -->\n", entry.name);
-    const std::string generated = lattice::settingsMarkdown(entry.settings());
+  std::vector<std::pair<std::string, std::vector<lattice::SettingInfo>>> tables;
+  for (const lattice::devices::DeviceEntry& entry : lattice::devices::deviceTable())
+    tables.emplace_back(entry.name, entry.settings());
+  tables.emplace_back("quantizer", lattice::settingInfos(lattice::quantize::pipelineSettings()));
+  for (const auto& [name, infos] : tables) {
+    const std::string begin = fmt::format("<!-- settings:{} begin -->\n", name);
+    const std::string end = fmt::format("<!-- settings:{} end -->\n", name);
+    const std::string generated = lattice::settingsMarkdown(infos);
     const std::size_t from = text.find(begin);
     const std::size_t to = text.find(end);
-    INFO("device " << entry.name << ": " << begin << "..." << end);
+    INFO(name << ": " << begin << "..." << end);
     REQUIRE(from != std::string::npos);
     REQUIRE(to != std::string::npos);
     REQUIRE(from < to);
@@ -51,11 +57,11 @@ TEST_CASE("docs/cli.md lists each device's --set keys as its settings table decl
     }
     const bool same = text.substr(inside, to - inside) == generated;
     // Unwrapped, to paste: Catch's own report folds long lines.
-    if (!same) std::cout << "docs/cli.md needs, for device " << entry.name << ":\n" << begin << generated << end;
+    if (!same) std::cout << "docs/cli.md needs, for " << name << ":\n" << begin << generated << end;
     CHECK(same);
   }
   if (rewritten) {
     lattice::writeFileAtomically(doc, std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
-    WARN("rewrote the device settings tables of " << doc.string());
+    WARN("rewrote the settings tables of " << doc.string());
   }
 }
