@@ -4,22 +4,25 @@
 // the final screen is the one the ordinary stream draws.
 //
 // Method, after the set-up and the background RR as ever:
-//   1. Covers: the picture is cut into bands of kBandRows rows. For each
-//      band, its middle row, simplified by rate-distortion runs
-//      (quantize/rate_distortion_runs.hpp) under RR costs at kCoverLambda,
-//      is sent as one RR per run not of the background colour, each
-//      kBandRows tall: a blocky picture for a small share of the bytes.
-//   2. Rows, interlaced as PNG's Adam7 interlaces rows: every 8th row from
-//      row 0, then every 8th from row 4, every 4th from row 2, then the odd
-//      rows. Each row is drawn whole by the ordinary row planner
+//   1. Covers (tek4125_covers.hpp): RR rectangles in bands of 8, then 4,
+//      then 2 rows, each in the palette entry nearest its area's mean
+//      colour, each level painting only where it brings the screen nearer
+//      the picture: a blocky whole picture, then a finer one, for a share
+//      of the bytes.
+//   2. Rows, each drawn whole by the ordinary row planner
 //      (tek4125_rows.hpp) without merging rectangles down rows, overwriting
-//      its band's cover. A run of the background colour is skipped only
-//      where the covers left the background on every such pixel of the row;
-//      elsewhere the row is sent without skipping.
+//      the covers, in the order of the error they remove a byte: a row's
+//      squared error against what the covers show over its estimated bytes
+//      (an RH and span header, and a few bytes a run), the most first, ties
+//      in the order PNG's Adam7 interlaces rows (every 8th row from row 0,
+//      then every 8th from row 4, every 4th from row 2, the odd rows).
+//      A run of the background colour is skipped only where the covers
+//      left the background on every such pixel of the row; elsewhere the
+//      row is sent without skipping.
 // Forms: RR, RH, RP and RL as the form set allows; no new form, so strict
 // stays strict (docs/tek-sources.md: RR, PGPLOT). The row order is free:
 // every strict span starts with its own RH.
-// Tunables: kBandRows (8, Adam7's first pass), kCoverLambda, kRectangleBytes.
+// Tunables: the covers' (tek4125_covers.hpp); kRowHeaderBytes, kRunBytes.
 #include <span>
 
 #include "devices/tek4125/tek4125_rows.hpp"
@@ -28,9 +31,8 @@
 
 namespace lattice::tek4125 {
 
-inline constexpr int kBandRows = 8;
-inline constexpr double kCoverLambda = 4000.0;
-inline constexpr double kRectangleBytes = 15.0;  // ESC RR, two five-byte xy, an index
+inline constexpr double kRowHeaderBytes = 10.0;  // ESC RH xy, ESC RL count
+inline constexpr double kRunBytes = 3.0;         // an 8-bit run code of 4 pixels or more
 
 // pixels: the picture's palette indices, row-major (device index = palette
 // index + reserved). Returns what was drawn (rectangles include the covers).
@@ -38,7 +40,12 @@ Tek4125RowStats drawProgressive(Tek4125Writer& out, const Tek4125RowLayout& layo
                                 const Tek4125DriverOptions& options, std::span<const PaletteIndex> pixels,
                                 const Palette& palette, int reserved);
 
-// The image rows in the order drawProgressive sends them.
+// The image rows in Adam7's interlaced order.
 std::vector<int> progressiveRowOrder(int height);
+// The order drawProgressive sends the rows in, given what the covers show
+// (shown: device indices, -1 the clear): by error removed a byte, most
+// first, ties in progressiveRowOrder's order.
+std::vector<int> rowsByGain(std::span<const PaletteIndex> pixels, std::span<const int> shown, const Palette& palette,
+                            int reserved, int width, int height);
 
 }  // namespace lattice::tek4125

@@ -1,0 +1,165 @@
+#include "devices/tek4125/tek4125_covers.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <unordered_map>
+
+#include "devices/tek4125/tek4125_encoding.hpp"
+#include "quantize/rate_distortion_runs.hpp"
+
+namespace lattice::tek4125 {
+
+namespace {
+
+struct Sums {
+  std::int64_t r = 0, g = 0, b = 0, squares = 0, pixels = 0;
+  double shownError = 0;  // squared error of what the screen shows now
+  Sums& operator+=(const Sums& o) {
+    r += o.r, g += o.g, b += o.b, squares += o.squares, pixels += o.pixels, shownError += o.shownError;
+    return *this;
+  }
+  Sums operator-(const Sums& o) const {
+    return Sums{r - o.r, g - o.g, b - o.b, squares - o.squares, pixels - o.pixels, shownError - o.shownError};
+  }
+};
+
+// The palette entry nearest a colour, remembered per 18-bit colour (a band's
+// means repeat, and the palette is at most 256 entries).
+class NearestEntry {
+ public:
+  explicit NearestEntry(const Palette& palette) : palette_(palette) {}
+  PaletteIndex operator()(Rgb8 c) {
+    const Color18 key = packColor18(reduce8to6(c.r), reduce8to6(c.g), reduce8to6(c.b));
+    const auto found = memo_.find(key);
+    if (found != memo_.end()) return found->second;
+    const Rgb8 q{expand6to8(red6(key)), expand6to8(green6(key)), expand6to8(blue6(key))};
+    PaletteIndex best = 0;
+    double bestError = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < palette_.size(); ++i)
+      if (const double e = quantize::colourError(q, palette_[i]); e < bestError) bestError = e, best = PaletteIndex(i);
+    memo_.emplace(key, best);
+    return best;
+  }
+
+ private:
+  const Palette& palette_;
+  std::unordered_map<Color18, PaletteIndex> memo_;
+};
+
+class CoverPainter {
+ public:
+  CoverPainter(Tek4125Writer& out, const Tek4125RowLayout& layout, std::span<const PaletteIndex> pixels,
+               const Palette& palette, int reserved, std::vector<int>& shown)
+      : out_(out), layout_(layout), pixels_(pixels), palette_(palette), reserved_(reserved), shown_(shown),
+        nearest_(palette) {}
+
+  template <typename V>
+  int at(const V& v, int x, int y) const {
+    return int(v[std::size_t(y) * std::size_t(layout_.width) + std::size_t(x)]);
+  }
+
+  // One band of rows y0..y1 (inclusive, image rows, 0 = top).
+  void band(int y0, int y1, double lambda) {
+    lambda_ = lambda;
+    const int width = layout_.width;
+    // Cut points: columns whose band (targets and screen) differs from the previous column's.
+    cuts_.assign(1, 0);
+    for (int x = 1; x < width; ++x)
+      for (int y = y0; y <= y1; ++y)
+        if (at(pixels_, x, y) != at(pixels_, x - 1, y) || at(shown_, x, y) != at(shown_, x - 1, y)) {
+          cuts_.push_back(x);
+          break;
+        }
+    cuts_.push_back(width);
+    const std::size_t cells = cuts_.size() - 1;
+    prefix_.assign(cells + 1, Sums{});
+    for (std::size_t c = 0; c < cells; ++c) {
+      Sums s;
+      for (int y = y0; y <= y1; ++y) {  // columns of a cell are alike: sum one, scale by its width
+        const Rgb8 t = palette_[std::size_t(at(pixels_, cuts_[c], y))];
+        s.r += t.r, s.g += t.g, s.b += t.b;
+        s.squares += std::int64_t(t.r) * t.r + std::int64_t(t.g) * t.g + std::int64_t(t.b) * t.b;
+        s.shownError += quantize::colourError(t, colourShown(palette_, at(shown_, cuts_[c], y), reserved_));
+      }
+      const int n = cuts_[c + 1] - cuts_[c];
+      s.r *= n, s.g *= n, s.b *= n, s.squares *= n, s.shownError *= n;
+      s.pixels = std::int64_t(n) * (y1 - y0 + 1);
+      prefix_[c + 1] = prefix_[c];
+      prefix_[c + 1] += s;
+    }
+    // best[k]: the least cost of cells [0, k); from[k] and colour[k] (-1: left alone) its last segment.
+    std::vector<double> best(cells + 1, std::numeric_limits<double>::infinity());
+    std::vector<std::size_t> from(cells + 1, 0);
+    std::vector<int> colour(cells + 1, -1);
+    best[0] = 0;
+    const double rectangle = 3 + (out_.forms().fullXy ? 10 : 8);  // ESC RR xy xy, the index added below
+    for (std::size_t k = 1; k <= cells; ++k) {
+      best[k] = best[k - 1] + (prefix_[k] - prefix_[k - 1]).shownError, from[k] = k - 1;
+      const std::size_t first = k > std::size_t(kCoverWindow) ? k - std::size_t(kCoverWindow) : 0;
+      for (std::size_t j = k; j-- > first;) {
+        const Sums s = prefix_[k] - prefix_[j];
+        const PaletteIndex c = nearest_(meanOf(s));
+        const double bytes = rectangle + intLength(c + reserved_);
+        const double total = best[j] + errorOf(s, palette_[c]) + lambda_ * bytes;
+        if (total < best[k]) best[k] = total, from[k] = j, colour[k] = c;
+      }
+    }
+    for (std::size_t k = cells; k > 0; k = from[k])
+      if (colour[k] >= 0) paint(cuts_[from[k]], cuts_[k] - 1, y0, y1, colour[k] + reserved_);
+  }
+
+  std::uint64_t rectangles() const { return rectangles_; }
+
+ private:
+  static Rgb8 meanOf(const Sums& s) {
+    auto channel = [&](std::int64_t sum) { return std::uint8_t((sum + s.pixels / 2) / s.pixels); };
+    return Rgb8{channel(s.r), channel(s.g), channel(s.b)};
+  }
+  // sum over the pixels of |t - c|^2 = S2 - 2 c.S1 + n |c|^2, exact in integers.
+  static double errorOf(const Sums& s, Rgb8 c) {
+    const std::int64_t dot = c.r * s.r + c.g * s.g + c.b * s.b;
+    const std::int64_t norm = std::int64_t(c.r) * c.r + std::int64_t(c.g) * c.g + std::int64_t(c.b) * c.b;
+    return double(s.squares - 2 * dot + s.pixels * norm);
+  }
+  void paint(int x0, int x1, int y0, int y1, int device) {
+    const int top = layout_.bottom + layout_.height - 1 - y0;  // image row 0 is the top screen row
+    out_.command("RR");  // corners in screen pixels, lower-left then upper-right
+    out_.xy(layout_.left + x0, top - (y1 - y0));
+    out_.xy(layout_.left + x1, top);
+    out_.integer(device);
+    ++rectangles_;
+    for (int y = y0; y <= y1; ++y)
+      std::fill_n(shown_.begin() + long(y) * layout_.width + x0, x1 - x0 + 1, device);
+  }
+
+  Tek4125Writer& out_;
+  const Tek4125RowLayout& layout_;
+  std::span<const PaletteIndex> pixels_;
+  const Palette& palette_;
+  int reserved_;
+  std::vector<int>& shown_;
+  NearestEntry nearest_;
+  std::vector<int> cuts_;
+  std::vector<Sums> prefix_;
+  double lambda_ = 0;
+  std::uint64_t rectangles_ = 0;
+};
+
+}  // namespace
+
+Rgb8 colourShown(const Palette& palette, int device, int reserved) {
+  const int p = device < 0 ? 0 : device - reserved;  // the clear shows entry 0, which strict's TB sets
+  return p >= 0 && std::size_t(p) < palette.size() ? palette[std::size_t(p)] : Rgb8{0, 0, 0};
+}
+
+std::uint64_t drawCovers(Tek4125Writer& out, const Tek4125RowLayout& layout, std::span<const PaletteIndex> pixels,
+                         const Palette& palette, int reserved, std::vector<int>& shown) {
+  CoverPainter painter(out, layout, pixels, palette, reserved, shown);
+  for (int rows : kCoverLevels)
+    for (int y0 = 0; y0 < layout.height; y0 += rows)
+      painter.band(y0, std::min(layout.height, y0 + rows) - 1, kCoverLambdaPerRow * rows);
+  return painter.rectangles();
+}
+
+}  // namespace lattice::tek4125
