@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
-#include <unordered_map>
 
 #include "devices/tek4125/tek4125_encoding.hpp"
 #include "quantize/rate_distortion_runs.hpp"
@@ -24,27 +23,31 @@ struct Sums {
   }
 };
 
-// The palette entry nearest a colour, remembered per 18-bit colour (a band's
-// means repeat, and the palette is at most 256 entries).
+// The palette entry nearest a colour, remembered in a small direct-mapped
+// table of 18-bit colours (a band's means repeat; a miss searches the
+// palette, at most 256 entries), so its memory is fixed whatever the picture.
 class NearestEntry {
  public:
-  explicit NearestEntry(const Palette& palette) : palette_(palette) {}
+  explicit NearestEntry(const Palette& palette) : palette_(palette), keys_(kSlots, kEmpty), values_(kSlots, 0) {}
   PaletteIndex operator()(Rgb8 c) {
     const Color18 key = packColor18(reduce8to6(c.r), reduce8to6(c.g), reduce8to6(c.b));
-    const auto found = memo_.find(key);
-    if (found != memo_.end()) return found->second;
+    const std::size_t slot = (key * 2654435761u) >> 20 & (kSlots - 1);  // Knuth's multiplicative hash
+    if (keys_[slot] == key) return values_[slot];
     const Rgb8 q{expand6to8(red6(key)), expand6to8(green6(key)), expand6to8(blue6(key))};
     PaletteIndex best = 0;
     double bestError = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < palette_.size(); ++i)
       if (const double e = quantize::colourError(q, palette_[i]); e < bestError) bestError = e, best = PaletteIndex(i);
-    memo_.emplace(key, best);
+    keys_[slot] = key, values_[slot] = best;
     return best;
   }
 
  private:
+  static constexpr std::size_t kSlots = 4096;
+  static constexpr Color18 kEmpty = ~Color18{0};  // no 18-bit colour
   const Palette& palette_;
-  std::unordered_map<Color18, PaletteIndex> memo_;
+  std::vector<Color18> keys_;
+  std::vector<PaletteIndex> values_;
 };
 
 class CoverPainter {
