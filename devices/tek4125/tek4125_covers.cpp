@@ -157,9 +157,9 @@ Rgb8 colourShown(const Palette& palette, int device, int reserved) {
 }
 
 std::uint64_t drawCovers(Tek4125Writer& out, const Tek4125RowLayout& layout, std::span<const PaletteIndex> pixels,
-                         const Palette& palette, int reserved, std::vector<int>& shown) {
+                         const Palette& palette, int reserved, std::vector<int>& shown, std::span<const int> levels) {
   CoverPainter painter(out, layout, pixels, palette, reserved, shown);
-  for (int rows : kCoverLevels)
+  for (int rows : levels)
     for (int y0 = 0; y0 < layout.height; y0 += rows)
       painter.band(y0, std::min(layout.height, y0 + rows) - 1, kCoverLambdaPerRow * rows);
   return painter.rectangles();

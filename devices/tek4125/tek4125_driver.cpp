@@ -6,6 +6,7 @@
 
 #include "devices/tek4125/tek4125_progressive.hpp"
 #include "devices/tek4125/tek4125_rows.hpp"
+#include "devices/tek4125/tek4125_run_cost.hpp"
 #include "devices/tek4125/tek4125_writer.hpp"
 #include "foundation/error.hpp"
 
@@ -215,9 +216,13 @@ void Tek4125Driver::streamRow(Stream& stream, int y, std::span<const PaletteInde
 
 void Tek4125Driver::closeStream(Stream& stream, Tek4125StreamStats& stats) const {
   stream.planner.finish();
-  const Tek4125RowStats r = profile_.progressive ? drawProgressive(stream.out, stream.layout, stream.options, pixels_,
-                                                                   frame_.palette, profile_.reserved)
-                                                 : stream.planner.stats();
+  Tek4125RowStats r = stream.planner.stats();
+  if (profile_.progressive) {
+    const int background = stream.layout.background >= 0 ? stream.layout.background - profile_.reserved : -1;
+    const quantize::RunCost draftCost = tek4125RunCost(profile_, static_cast<int>(frame_.palette.size()), background);
+    r = drawProgressive(stream.out, stream.layout, stream.options, pixels_, frame_.palette, profile_.reserved,
+                        draftCost);
+  }
   stats = stream.stats;
   stats.rasterWrites = r.rasterWrites;
   stats.runLengthWrites = r.runLengthWrites;

@@ -37,42 +37,41 @@ std::vector<int> rowsByGain(std::span<const PaletteIndex> pixels, std::span<cons
   return order;
 }
 
+void drawRows(Tek4125RowPlanner& planner, std::span<const PaletteIndex> pixels, const Palette& palette, int reserved,
+              std::span<int> shown, const quantize::RunCost& cost, double lambda) {
+  const auto w = static_cast<std::size_t>(planner.width());
+  const int height = static_cast<int>(pixels.size() / w);
+  std::vector<PaletteIndex> draft(w);
+  std::vector<int> row(w);
+  for (int y : rowsByGain(pixels, shown, palette, reserved, int(w), height)) {
+    const std::size_t at = std::size_t(y) * w;
+    std::copy_n(pixels.begin() + long(at), w, draft.begin());
+    if (lambda > 0) quantize::rateDistortionRow(draft, palette, cost, lambda);
+    for (std::size_t x = 0; x < w; ++x) row[x] = draft[x] + reserved;
+    const std::span<int> rowShown = shown.subspan(at, w);
+    planner.row(y, row, rowShown);
+    std::copy(row.begin(), row.end(), rowShown.begin());
+  }
+}
+
 Tek4125RowStats drawProgressive(Tek4125Writer& out, const Tek4125RowLayout& layout,
                                 const Tek4125DriverOptions& options, std::span<const PaletteIndex> pixels,
-                                const Palette& palette, int reserved) {
-  const int width = layout.width, height = layout.height;
-  const auto w = static_cast<std::size_t>(width);
-  const int background = layout.background;  // device index, -1 when nothing is skipped
-  // What each pixel shows once the covers are drawn (-1: not known, the clear).
-  std::vector<int> shown(w * static_cast<std::size_t>(height), background);
+                                const Palette& palette, int reserved, const quantize::RunCost& draftCost) {
+  // What each pixel shows (-1: not known, the clear): the background RR's colour, then what each step drew.
+  std::vector<int> shown(pixels.size(), layout.background);
   Tek4125RowStats stats;
-
   stats.rectangleFills += drawCovers(out, layout, pixels, palette, reserved, shown);
-
   Tek4125DriverOptions rowOptions = options;
   rowOptions.mergeRows = false;  // rows do not come in order: each row's rectangles go at once
-  Tek4125RowLayout plainLayout = layout;
-  plainLayout.background = -1;
-  Tek4125DriverOptions plainOptions = rowOptions;
-  plainOptions.skipBackground = false;
-  Tek4125RowPlanner skipping(out, layout, rowOptions), plain(out, plainLayout, plainOptions);
-  std::vector<int> row(w);
-  for (int y : rowsByGain(pixels, shown, palette, reserved, width, height)) {
-    bool skip = background >= 0 && options.skipBackground;
-    for (std::size_t x = 0; x < w; ++x) {
-      row[x] = pixels[std::size_t(y) * w + x] + reserved;
-      if (row[x] == background && shown[std::size_t(y) * w + x] != background) skip = false;
-    }
-    (skip ? skipping : plain).row(y, row);
-  }
-  skipping.finish();
-  plain.finish();
-  for (const Tek4125RowPlanner* p : {&skipping, &plain}) {
-    stats.rasterWrites += p->stats().rasterWrites;
-    stats.runLengthWrites += p->stats().runLengthWrites;
-    stats.rectangleFills += p->stats().rectangleFills;
-    stats.skippedPixels += p->stats().skippedPixels;
-  }
+  Tek4125RowPlanner planner(out, layout, rowOptions);
+  drawRows(planner, pixels, palette, reserved, shown, draftCost, kDraftLambda);
+  drawRows(planner, pixels, palette, reserved, shown, draftCost, 0);
+  planner.finish();
+  const Tek4125RowStats& rows = planner.stats();
+  stats.rasterWrites += rows.rasterWrites;
+  stats.runLengthWrites += rows.runLengthWrites;
+  stats.rectangleFills += rows.rectangleFills;
+  stats.skippedPixels += rows.skippedPixels;
   return stats;
 }
 
