@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 #include "devices/tek4125/tek4125_encoding.hpp"
 #include "quantize/rate_distortion_runs.hpp"
@@ -50,22 +51,26 @@ class NearestEntry {
   std::vector<PaletteIndex> values_;
 };
 
+void fill(std::vector<int>& shown, int width, const CoverRectangle& r) {
+  for (int y = r.y0; y <= r.y1; ++y) std::fill_n(shown.begin() + long(y) * width + r.x0, r.x1 - r.x0 + 1, r.device);
+}
+
 class CoverPainter {
  public:
-  CoverPainter(Tek4125Writer& out, const Tek4125RowLayout& layout, std::span<const PaletteIndex> pixels,
-               const Palette& palette, int reserved, std::vector<int>& shown)
-      : out_(out), layout_(layout), pixels_(pixels), palette_(palette), reserved_(reserved), shown_(shown),
+  CoverPainter(int width, bool fullXy, std::span<const PaletteIndex> pixels, const Palette& palette, int reserved,
+               std::vector<int>& shown)
+      : width_(width), fullXy_(fullXy), pixels_(pixels), palette_(palette), reserved_(reserved), shown_(shown),
         nearest_(palette) {}
 
   template <typename V>
   int at(const V& v, int x, int y) const {
-    return int(v[std::size_t(y) * std::size_t(layout_.width) + std::size_t(x)]);
+    return int(v[std::size_t(y) * std::size_t(width_) + std::size_t(x)]);
   }
 
   // One band of rows y0..y1 (inclusive, image rows, 0 = top).
   void band(int y0, int y1, double lambda) {
     lambda_ = lambda;
-    const int width = layout_.width;
+    const int width = width_;
     // Cut points: columns whose band (targets and screen) differs from the previous column's.
     cuts_.assign(1, 0);
     for (int x = 1; x < width; ++x)
@@ -96,7 +101,7 @@ class CoverPainter {
     std::vector<std::size_t> from(cells + 1, 0);
     std::vector<int> colour(cells + 1, -1);
     best[0] = 0;
-    const double rectangle = 3 + (out_.forms().fullXy ? 10 : 8);  // ESC RR xy xy, the index added below
+    const double rectangle = 3 + (fullXy_ ? 10 : 8);  // ESC RR xy xy, the index added below
     for (std::size_t k = 1; k <= cells; ++k) {
       best[k] = best[k - 1] + (prefix_[k] - prefix_[k - 1]).shownError, from[k] = k - 1;
       const std::size_t first = k > std::size_t(kCoverWindow) ? k - std::size_t(kCoverWindow) : 0;
@@ -109,10 +114,10 @@ class CoverPainter {
       }
     }
     for (std::size_t k = cells; k > 0; k = from[k])
-      if (colour[k] >= 0) paint(cuts_[from[k]], cuts_[k] - 1, y0, y1, colour[k] + reserved_);
+      if (colour[k] >= 0) paint(CoverRectangle{cuts_[from[k]], cuts_[k] - 1, y0, y1, colour[k] + reserved_});
   }
 
-  std::uint64_t rectangles() const { return rectangles_; }
+  std::vector<CoverRectangle> covers;
 
  private:
   static Rgb8 meanOf(const Sums& s) {
@@ -125,19 +130,13 @@ class CoverPainter {
     const std::int64_t norm = std::int64_t(c.r) * c.r + std::int64_t(c.g) * c.g + std::int64_t(c.b) * c.b;
     return double(s.squares - 2 * dot + s.pixels * norm);
   }
-  void paint(int x0, int x1, int y0, int y1, int device) {
-    const int top = layout_.bottom + layout_.height - 1 - y0;  // image row 0 is the top screen row
-    out_.command("RR");  // corners in screen pixels, lower-left then upper-right
-    out_.xy(layout_.left + x0, top - (y1 - y0));
-    out_.xy(layout_.left + x1, top);
-    out_.integer(device);
-    ++rectangles_;
-    for (int y = y0; y <= y1; ++y)
-      std::fill_n(shown_.begin() + long(y) * layout_.width + x0, x1 - x0 + 1, device);
+  void paint(const CoverRectangle& r) {
+    covers.push_back(r);
+    fill(shown_, width_, r);
   }
 
-  Tek4125Writer& out_;
-  const Tek4125RowLayout& layout_;
+  int width_;
+  bool fullXy_;
   std::span<const PaletteIndex> pixels_;
   const Palette& palette_;
   int reserved_;
@@ -146,7 +145,6 @@ class CoverPainter {
   std::vector<int> cuts_;
   std::vector<Sums> prefix_;
   double lambda_ = 0;
-  std::uint64_t rectangles_ = 0;
 };
 
 }  // namespace
@@ -156,13 +154,25 @@ Rgb8 colourShown(const Palette& palette, int device, int reserved) {
   return p >= 0 && std::size_t(p) < palette.size() ? palette[std::size_t(p)] : Rgb8{0, 0, 0};
 }
 
-std::uint64_t drawCovers(Tek4125Writer& out, const Tek4125RowLayout& layout, std::span<const PaletteIndex> pixels,
-                         const Palette& palette, int reserved, std::vector<int>& shown, std::span<const int> levels) {
-  CoverPainter painter(out, layout, pixels, palette, reserved, shown);
+std::vector<CoverRectangle> planCovers(int width, int height, bool fullXy, std::span<const PaletteIndex> pixels,
+                                       const Palette& palette, int reserved, std::vector<int>& shown,
+                                       std::span<const int> levels) {
+  CoverPainter painter(width, fullXy, pixels, palette, reserved, shown);
   for (int rows : levels)
-    for (int y0 = 0; y0 < layout.height; y0 += rows)
-      painter.band(y0, std::min(layout.height, y0 + rows) - 1, kCoverLambdaPerRow * rows);
-  return painter.rectangles();
+    for (int y0 = 0; y0 < height; y0 += rows) painter.band(y0, std::min(height, y0 + rows) - 1, kCoverLambdaPerRow * rows);
+  return std::move(painter.covers);
+}
+
+void sendCovers(Tek4125Writer& out, const Tek4125RowLayout& layout, std::span<const CoverRectangle> covers,
+                std::vector<int>& shown) {
+  for (const CoverRectangle& r : covers) {
+    const int top = layout.bottom + layout.height - 1 - r.y0;  // image row 0 is the top screen row
+    out.command("RR");  // corners in screen pixels, lower-left then upper-right
+    out.xy(layout.left + r.x0, top - (r.y1 - r.y0));
+    out.xy(layout.left + r.x1, top);
+    out.integer(r.device);
+    fill(shown, layout.width, r);
+  }
 }
 
 }  // namespace lattice::tek4125

@@ -21,6 +21,7 @@
 //
 // Tunables: kCoverLevels (band heights), kCoverLambdaPerRow, kCoverWindow.
 #include <array>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -41,12 +42,22 @@ inline constexpr int kCoverWindow = 64;
 // clear, entry 0; an entry outside the picture's: black).
 Rgb8 colourShown(const Palette& palette, int device, int reserved);
 
-// Paints the covers, band heights `levels` in turn. pixels: palette
-// indices, row-major, the picture's size; shown: the device index each
-// pixel shows (layout's size), updated with every rectangle sent (-1:
-// unknown, the page's clear). Returns the rectangles sent.
-std::uint64_t drawCovers(Tek4125Writer& out, const Tek4125RowLayout& layout, std::span<const PaletteIndex> pixels,
-                         const Palette& palette, int reserved, std::vector<int>& shown,
-                         std::span<const int> levels = kCoverLevels);
+// One cover: image columns x0..x1 and rows y0..y1 (inclusive, row 0 the
+// top), filled with device index `device`.
+struct CoverRectangle {
+  int x0 = 0, x1 = 0, y0 = 0, y1 = 0, device = 0;
+};
+
+// Chooses the covers, band heights `levels` in turn, of a width x height
+// picture. pixels: palette indices, row-major; fullXy: the form set's (a
+// rectangle's bytes); shown: the device index each pixel shows before (-1:
+// the page's clear), updated with every rectangle chosen.
+std::vector<CoverRectangle> planCovers(int width, int height, bool fullXy, std::span<const PaletteIndex> pixels,
+                                       const Palette& palette, int reserved, std::vector<int>& shown,
+                                       std::span<const int> levels = kCoverLevels);
+
+// Sends the covers as RR commands and paints them into shown (the layout's size).
+void sendCovers(Tek4125Writer& out, const Tek4125RowLayout& layout, std::span<const CoverRectangle> covers,
+                std::vector<int>& shown);
 
 }  // namespace lattice::tek4125

@@ -216,13 +216,9 @@ void Tek4125Driver::streamRow(Stream& stream, int y, std::span<const PaletteInde
 
 void Tek4125Driver::closeStream(Stream& stream, Tek4125StreamStats& stats) const {
   stream.planner.finish();
-  Tek4125RowStats r = stream.planner.stats();
-  if (profile_.progressive) {
-    const int background = stream.layout.background >= 0 ? stream.layout.background - profile_.reserved : -1;
-    const quantize::RunCost draftCost = tek4125RunCost(profile_, static_cast<int>(frame_.palette.size()), background);
-    r = drawProgressive(stream.out, stream.layout, stream.options, pixels_, frame_.palette, profile_.reserved,
-                        draftCost);
-  }
+  const Tek4125RowStats r = profile_.progressive ? drawProgressive(stream.out, stream.layout, stream.options, pixels_,
+                                                                   frame_.palette, profile_.reserved, progressive_)
+                                                 : stream.planner.stats();
   stats = stream.stats;
   stats.rasterWrites = r.rasterWrites;
   stats.runLengthWrites = r.runLengthWrites;
@@ -256,6 +252,13 @@ void Tek4125Driver::end() {
     stream_.reset();
     sink_.flush();
     return;
+  }
+  if (profile_.progressive) {
+    // Every candidate below keeps options_'s background, so one plan serves them all.
+    const int background = options_.skipBackground ? mostFrequentIndex() : -1;
+    progressive_ = planProgressive(frame_.width, frame_.height, background >= 0 ? background + profile_.reserved : -1,
+                                   profile_.formSet().fullXy, pixels_, frame_.palette, profile_.reserved,
+                                   tek4125RunCost(profile_, static_cast<int>(frame_.palette.size()), background));
   }
   std::vector<Tek4125DriverOptions> candidates{options_};
   if (options_.shortest) {

@@ -90,7 +90,7 @@ constexpr Setting<P> kSettings[] = {
     choice<kRasterRows, &P::rasterRowsDown>("raster-rows",
         "the emulator's beam after RS: from the lower left, wrapping a row up, or from the upper left, wrapping down"),
     onOff<&P::progressive>("progressive",
-                           "a blocky whole picture first, then the rows interlaced: the picture early on a slow line"),
+                           "a blocky picture first, then draft rows, then exact ones: the picture early on a slow line"),
     onOff<&P::xyShort>("xy-short",
         "strict: RR and RH xys leave out an unchanged Hi-Y and Hi-X (one source); fewer bytes, on under a wire budget"),
     choice<kRuBits, &P::ruBitsFit>("ru-bits",

@@ -4,7 +4,6 @@
 #include <array>
 #include <vector>
 
-#include "devices/tek4125/tek4125_covers.hpp"
 #include "quantize/rate_distortion_runs.hpp"
 
 namespace lattice::tek4125 {
@@ -37,35 +36,46 @@ std::vector<int> rowsByGain(std::span<const PaletteIndex> pixels, std::span<cons
   return order;
 }
 
-void drawRows(Tek4125RowPlanner& planner, std::span<const PaletteIndex> pixels, const Palette& palette, int reserved,
-              std::span<int> shown, const quantize::RunCost& cost, double lambda) {
+void drawRows(Tek4125RowPlanner& planner, std::span<const PaletteIndex> pixels, std::span<const PaletteIndex> rows,
+              const Palette& palette, int reserved, std::span<int> shown) {
   const auto w = static_cast<std::size_t>(planner.width());
   const int height = static_cast<int>(pixels.size() / w);
-  std::vector<PaletteIndex> draft(w);
   std::vector<int> row(w);
   for (int y : rowsByGain(pixels, shown, palette, reserved, int(w), height)) {
     const std::size_t at = std::size_t(y) * w;
-    std::copy_n(pixels.begin() + long(at), w, draft.begin());
-    if (lambda > 0) quantize::rateDistortionRow(draft, palette, cost, lambda);
-    for (std::size_t x = 0; x < w; ++x) row[x] = draft[x] + reserved;
+    for (std::size_t x = 0; x < w; ++x) row[x] = rows[at + x] + reserved;
     const std::span<int> rowShown = shown.subspan(at, w);
     planner.row(y, row, rowShown);
     std::copy(row.begin(), row.end(), rowShown.begin());
   }
 }
 
+ProgressivePlan planProgressive(int width, int height, int background, bool fullXy,
+                                std::span<const PaletteIndex> pixels, const Palette& palette, int reserved,
+                                const quantize::RunCost& draftCost) {
+  ProgressivePlan plan;
+  std::vector<int> shown(pixels.size(), background);
+  plan.covers = planCovers(width, height, fullXy, pixels, palette, reserved, shown);
+  plan.drafts.assign(pixels.begin(), pixels.end());
+  const auto w = static_cast<std::size_t>(width);
+  for (std::size_t at = 0; at < plan.drafts.size(); at += w)
+    quantize::rateDistortionRow(std::span<PaletteIndex>(plan.drafts).subspan(at, w), palette, draftCost, kDraftLambda);
+  return plan;
+}
+
 Tek4125RowStats drawProgressive(Tek4125Writer& out, const Tek4125RowLayout& layout,
                                 const Tek4125DriverOptions& options, std::span<const PaletteIndex> pixels,
-                                const Palette& palette, int reserved, const quantize::RunCost& draftCost) {
+                                const Palette& palette, int reserved, const ProgressivePlan& plan) {
   // What each pixel shows (-1: not known, the clear): the background RR's colour, then what each step drew.
   std::vector<int> shown(pixels.size(), layout.background);
   Tek4125RowStats stats;
-  stats.rectangleFills += drawCovers(out, layout, pixels, palette, reserved, shown);
+  sendCovers(out, layout, plan.covers, shown);
+  stats.rectangleFills += plan.covers.size();
   Tek4125DriverOptions rowOptions = options;
   rowOptions.mergeRows = false;  // rows do not come in order: each row's rectangles go at once
   Tek4125RowPlanner planner(out, layout, rowOptions);
-  drawRows(planner, pixels, palette, reserved, shown, draftCost, kDraftLambda);
-  drawRows(planner, pixels, palette, reserved, shown, draftCost, 0);
+  drawRows(planner, pixels, plan.drafts, palette, reserved, shown);
+  drawRows(planner, pixels, pixels, palette, reserved, shown);
   planner.finish();
   const Tek4125RowStats& rows = planner.stats();
   stats.rasterWrites += rows.rasterWrites;

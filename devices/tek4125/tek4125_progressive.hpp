@@ -33,6 +33,7 @@
 // kRunBytes.
 #include <span>
 
+#include "devices/tek4125/tek4125_covers.hpp"
 #include "devices/tek4125/tek4125_rows.hpp"
 #include "quantize/rate_distortion_runs.hpp"
 #include "devices/tek4125/tek4125_writer.hpp"
@@ -47,18 +48,33 @@ inline constexpr double kDraftLambda = 4000.0;
 inline constexpr double kRowHeaderBytes = 10.0;  // ESC RH xy, ESC RL count
 inline constexpr double kRunBytes = 3.0;         // an 8-bit run code of 4 pixels or more
 
+// What a progressive stream sends before the exact rows, worked out once
+// for all of a picture's encodings (the driver tries several).
+struct ProgressivePlan {
+  std::vector<CoverRectangle> covers;
+  std::vector<PaletteIndex> drafts;  // the picture, every row simplified by rate-distortion runs
+};
+
 // pixels: the picture's palette indices, row-major (device index = palette
-// index + reserved); draftCost: the stream's run costs (tek4125_run_cost.hpp).
-// Returns what was drawn (rectangles include the covers).
+// index + reserved); background: the device index painted under the whole
+// picture (-1: none, the page's clear); fullXy: the form set's; draftCost:
+// the stream's run costs (tek4125_run_cost.hpp).
+ProgressivePlan planProgressive(int width, int height, int background, bool fullXy,
+                                std::span<const PaletteIndex> pixels, const Palette& palette, int reserved,
+                                const quantize::RunCost& draftCost);
+
+// Sends the covers, the draft rows and the exact rows of `plan` (made for
+// the layout's picture and background). Returns what was drawn (rectangles
+// include the covers).
 Tek4125RowStats drawProgressive(Tek4125Writer& out, const Tek4125RowLayout& layout,
                                 const Tek4125DriverOptions& options, std::span<const PaletteIndex> pixels,
-                                const Palette& palette, int reserved, const quantize::RunCost& draftCost);
+                                const Palette& palette, int reserved, const ProgressivePlan& plan);
 
-// Draws every row once, in rowsByGain's order: each simplified by
-// rate-distortion runs at `lambda` under `cost` (0: as it is), the runs the
-// screen already shows skipped; `shown` is updated to what was drawn.
-void drawRows(Tek4125RowPlanner& planner, std::span<const PaletteIndex> pixels, const Palette& palette, int reserved,
-              std::span<int> shown, const quantize::RunCost& cost, double lambda);
+// Draws every row of `rows` (the picture's size) once, in rowsByGain's order
+// for `pixels`, the runs the screen already shows skipped; `shown` is
+// updated to what was drawn.
+void drawRows(Tek4125RowPlanner& planner, std::span<const PaletteIndex> pixels, std::span<const PaletteIndex> rows,
+              const Palette& palette, int reserved, std::span<int> shown);
 
 // The image rows in Adam7's interlaced order.
 std::vector<int> progressiveRowOrder(int height);

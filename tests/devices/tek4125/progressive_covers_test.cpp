@@ -32,7 +32,8 @@ struct Covered {
   std::vector<PaletteIndex> screen;  // what the emulator draws from the covers' bytes
 };
 
-// The covers of `pixels` alone, after a Tek-mode select, on a screen the picture's size.
+// The covers of `pixels` alone, planned and then sent after a Tek-mode
+// select, on a screen the picture's size.
 Covered cover(const std::vector<PaletteIndex>& pixels) {
   MemorySink sink;
   const tek4125::Tek4125Forms& forms = tek4125::tek4125Forms("strict");
@@ -43,7 +44,11 @@ Covered cover(const std::vector<PaletteIndex>& pixels) {
   layout.height = kHeight;
   Covered c;
   c.shown.assign(pixels.size(), -1);
-  c.rectangles = tek4125::drawCovers(out, layout, pixels, kPalette, 0, c.shown);
+  const auto covers = tek4125::planCovers(kWidth, kHeight, forms.fullXy, pixels, kPalette, 0, c.shown);
+  c.rectangles = covers.size();
+  std::vector<int> sent(pixels.size(), -1);
+  tek4125::sendCovers(out, layout, covers, sent);
+  CHECK(sent == c.shown);  // sending paints what planning recorded
   out.finish();
   auto decoder = devices::makeDevice("tek4125", {"width=32", "height=16"}).makeEmulator();
   decoder->feed(sink.data());
@@ -138,20 +143,22 @@ TEST_CASE("progressive: draft rows come nearer the picture than the covers, for 
   layout.bits = 8;
   layout.raster = false;
   layout.runLength = true;
+  const tek4125::ProgressivePlan plan =
+      tek4125::planProgressive(kWidth, kHeight, -1, true, pixels, kPalette, 0, cost);
   // Rows drawn over the covers, as drafts and as they are: their bytes and what they leave shown.
-  auto rows = [&](double lambda, std::vector<int>& shown) {
+  auto rows = [&](const std::vector<PaletteIndex>& drawn, std::vector<int>& shown) {
     CountingSink sink;
     tek4125::Tek4125Writer out(tek4125::tek4125Forms("strict"), sink);
     tek4125::Tek4125DriverOptions options;
     options.mergeRows = false;
     tek4125::Tek4125RowPlanner planner(out, layout, options);
-    tek4125::drawRows(planner, pixels, kPalette, 0, shown, cost, lambda);
+    tek4125::drawRows(planner, pixels, drawn, kPalette, 0, shown);
     planner.finish();
     out.finish();
     return sink.bytesWritten();
   };
   std::vector<int> drafted = covered.shown, exact = covered.shown;
-  const std::uint64_t draftBytes = rows(tek4125::kDraftLambda, drafted), exactBytes = rows(0, exact);
+  const std::uint64_t draftBytes = rows(plan.drafts, drafted), exactBytes = rows(pixels, exact);
   INFO("draft " << draftBytes << " B, exact " << exactBytes << " B");
   CHECK(draftBytes < exactBytes);
   CHECK(error(drafted) < error(covered.shown));
