@@ -194,3 +194,11 @@ TEST_CASE("row planner: given what the screen shows, it skips the runs already t
   CHECK(none == 0);  // no run is the background colour
   CHECK(withShown < without);
 }
+
+TEST_CASE("progressive: the device's driver memory counts what the screen shows, the drafts and the covers") {
+  const auto ordinary = devices::makeDevice("tek4125", {}).driverMemory(512, 512);
+  const auto progressive = devices::makeDevice("tek4125", {"progressive=on"}).driverMemory(512, 512);
+  // At least what the progressive driver holds a pixel beyond the frame: an int for what the
+  // screen shows and a byte for the drafts.
+  CHECK(progressive >= ordinary + std::uint64_t(512) * 512 * (sizeof(int) + 1));
+}
