@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The strict Tek 4125 stream's quality on a wire budget, and the progressive
-# stream part-way (docs/tek4125.md "Quality in strict, measured"; docs/wire.md):
+# stream part-way (docs/tek4125.md "Quality in strict on a wire budget, measured";
+# docs/wire.md "A progressive stream"):
 #   bench/strict-quality.sh [--lattice BIN] [--before BIN] [--runs N (3)] [--out FILE]
 # BIN defaults to build/app/lattice; --before names a second binary (a build
 # of the code before a change) measured the same way, the two alternating.
