@@ -46,9 +46,13 @@ devices::Device makeDevice(const std::vector<std::string>& settings) {
   // (tek4125_writer.hpp): two spill buffers, escaped and not. Per column the
   // row planner's runs, ways, open rectangles and the row itself, under
   // 128 bytes. Measured against this bound in docs/memory.md ("Calibration").
-  d.driverMemory = [](int w, int h) {
-    const auto width = static_cast<std::uint64_t>(w);
-    return width * static_cast<std::uint64_t>(h) + 128 * width + 4 * Tek4125Writer::kSpillBytes;
+  // progressive=on adds what the screen shows (an int a pixel), the draft
+  // rows (a byte a pixel) and the covers (at most a rectangle a column of
+  // each 16- and 8-row band, 3/16 of the pixels, 20 bytes each).
+  d.driverMemory = [progressive = profile.progressive](int w, int h) {
+    const auto width = static_cast<std::uint64_t>(w), area = width * static_cast<std::uint64_t>(h);
+    const std::uint64_t plan = progressive ? (sizeof(int) + 1) * area + 20 * 3 * area / 16 : 0;
+    return area + 128 * width + 4 * Tek4125Writer::kSpillBytes + plan;
   };
   // The screen a byte a pixel, and its RGB copy for the PNG.
   d.emulatorMemory = 3 * static_cast<std::uint64_t>(profile.width) * static_cast<std::uint64_t>(profile.height);

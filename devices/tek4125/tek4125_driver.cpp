@@ -7,6 +7,7 @@
 #include "devices/gun_percent.hpp"
 #include "devices/tek4125/tek4125_progressive.hpp"
 #include "devices/tek4125/tek4125_rows.hpp"
+#include "devices/tek4125/tek4125_run_cost.hpp"
 #include "devices/tek4125/tek4125_writer.hpp"
 #include "foundation/error.hpp"
 
@@ -217,7 +218,7 @@ void Tek4125Driver::streamRow(Stream& stream, int y, std::span<const PaletteInde
 void Tek4125Driver::closeStream(Stream& stream, Tek4125StreamStats& stats) const {
   stream.planner.finish();
   const Tek4125RowStats r = profile_.progressive ? drawProgressive(stream.out, stream.layout, stream.options, pixels_,
-                                                                   frame_.palette, profile_.reserved)
+                                                                   frame_.palette, profile_.reserved, progressive_)
                                                  : stream.planner.stats();
   stats = stream.stats;
   stats.rasterWrites = r.rasterWrites;
@@ -252,6 +253,13 @@ void Tek4125Driver::end() {
     stream_.reset();
     sink_.flush();
     return;
+  }
+  if (profile_.progressive) {
+    // Every candidate below keeps options_'s background, so one plan serves them all.
+    const int background = options_.skipBackground ? mostFrequentIndex() : -1;
+    progressive_ = planProgressive(frame_.width, frame_.height, background >= 0 ? background + profile_.reserved : -1,
+                                   profile_.formSet().fullXy, pixels_, frame_.palette, profile_.reserved,
+                                   tek4125RunCost(profile_, static_cast<int>(frame_.palette.size()), background));
   }
   std::vector<Tek4125DriverOptions> candidates{options_};
   if (options_.shortest) {

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "devices/tek4125/tek4125_profile.hpp"
+#include "devices/tek4125/tek4125_progressive.hpp"
 #include "devices/tek4125/tek4125_strategy.hpp"
 #include "devices/tek4125/tek4125_encoding.hpp"
 #include "foundation/byte_sink.hpp"
@@ -102,6 +103,7 @@ class Tek4125Driver final : public IndexedSink, public PaletteCountsSink {
   Tek4125StreamStats stats_;
   FrameInfo frame_;
   std::vector<PaletteIndex> pixels_;  // the frame, unless streaming
+  ProgressivePlan progressive_;       // with progressive=on: covers and drafts, made once for every candidate
   std::unique_ptr<Stream> stream_;    // while streaming
   std::vector<std::uint64_t> counts_;  // from paletteCounts(), for the next begin()
   int nextRow_ = 0;

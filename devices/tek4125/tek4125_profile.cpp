@@ -71,7 +71,7 @@ constexpr Setting<P> kSettings[] = {
      [](const P& p) { return indexIn(strategyNames(), p.strategy); },
      [](P& p, double i) { p.strategy = strategyNames()[static_cast<std::size_t>(i)]; }},
     onOff<&P::progressive>("progressive",
-                           "a blocky whole picture first, then the rows interlaced: the picture early on a slow line"),
+                           "a blocky picture first, then draft rows, then exact ones: the picture early on a slow line"),
     onOff<&P::xyShort>("xy-short",
         "strict: RR and RH xys leave out an unchanged Hi-Y and Hi-X (one source); fewer bytes, on under a wire budget"),
     choice<kRuBits, &P::ruBitsFit>("ru-bits",

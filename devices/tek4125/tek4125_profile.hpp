@@ -27,7 +27,7 @@ struct Tek4125Profile {
   bool xonXoff = true;       // DC1/DC3 flagging, the usual setting at these rates
   std::string forms = "strict";  // the form set the driver may use (tek4125_forms.hpp)
   std::string strategy = "shortest";  // how the driver chooses among those forms (tek4125_strategy.hpp)
-  bool progressive = false;  // progressive=on: coarse covers first, rows interlaced (tek4125_progressive.hpp)
+  bool progressive = false;  // progressive=on: covers, then draft rows, then exact rows (tek4125_progressive.hpp)
   // xy-short=on: in a five-byte-xy form set (strict), an RR or RH xy after
   // another leaves out an unchanged Hi-Y and Hi-X, as OpenVnmrJ's tek_coord0
   // does (one source; off by default, so strict's default bytes stay).

@@ -16,67 +16,72 @@ std::vector<int> progressiveRowOrder(int height) {
   return order;
 }
 
+std::vector<int> rowsByGain(std::span<const PaletteIndex> pixels, std::span<const int> shown, const Palette& palette,
+                            int reserved, int width, int height) {
+  const auto w = static_cast<std::size_t>(width);
+  std::vector<double> gain(static_cast<std::size_t>(height), 0);
+  for (std::size_t y = 0; y < gain.size(); ++y) {
+    double error = 0;
+    int runs = 0;
+    for (std::size_t x = 0; x < w; ++x) {
+      const PaletteIndex p = pixels[y * w + x];
+      error += quantize::colourError(palette[p], colourShown(palette, shown[y * w + x], reserved));
+      if (x == 0 || p != pixels[y * w + x - 1]) ++runs;
+    }
+    gain[y] = error / (kRowHeaderBytes + kRunBytes * runs);
+  }
+  std::vector<int> order = progressiveRowOrder(height);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return gain[std::size_t(a)] > gain[std::size_t(b)]; });
+  return order;
+}
+
+void drawRows(Tek4125RowPlanner& planner, std::span<const PaletteIndex> pixels, std::span<const PaletteIndex> rows,
+              const Palette& palette, int reserved, std::span<int> shown) {
+  const auto w = static_cast<std::size_t>(planner.width());
+  const int height = static_cast<int>(pixels.size() / w);
+  std::vector<int> row(w);
+  for (int y : rowsByGain(pixels, shown, palette, reserved, int(w), height)) {
+    const std::size_t at = std::size_t(y) * w;
+    for (std::size_t x = 0; x < w; ++x) row[x] = rows[at + x] + reserved;
+    const std::span<int> rowShown = shown.subspan(at, w);
+    planner.row(y, row, rowShown);
+    std::copy(row.begin(), row.end(), rowShown.begin());
+  }
+}
+
+ProgressivePlan planProgressive(int width, int height, int background, bool fullXy,
+                                std::span<const PaletteIndex> pixels, const Palette& palette, int reserved,
+                                const quantize::RunCost& draftCost) {
+  ProgressivePlan plan;
+  std::vector<int> shown(pixels.size(), background);
+  plan.covers = planCovers(width, height, fullXy, pixels, palette, reserved, shown);
+  plan.drafts.assign(pixels.begin(), pixels.end());
+  const auto w = static_cast<std::size_t>(width);
+  for (std::size_t at = 0; at < plan.drafts.size(); at += w)
+    quantize::rateDistortionRow(std::span<PaletteIndex>(plan.drafts).subspan(at, w), palette, draftCost, kDraftLambda);
+  return plan;
+}
+
 Tek4125RowStats drawProgressive(Tek4125Writer& out, const Tek4125RowLayout& layout,
                                 const Tek4125DriverOptions& options, std::span<const PaletteIndex> pixels,
-                                const Palette& palette, int reserved) {
-  const int width = layout.width, height = layout.height;
-  const auto w = static_cast<std::size_t>(width);
-  const int background = layout.background;  // device index, -1 when nothing is skipped
-  auto screenRow = [&](int y) { return layout.bottom + height - 1 - y; };
-  // What each pixel shows once the covers are drawn (-1: not known, the clear).
-  std::vector<int> shown(w * static_cast<std::size_t>(height), background);
+                                const Palette& palette, int reserved, const ProgressivePlan& plan) {
+  // What each pixel shows (-1: not known, the clear): the background RR's colour, then what each step drew.
+  std::vector<int> shown(pixels.size(), layout.background);
   Tek4125RowStats stats;
-
-  const quantize::RunCost coverCost = [&](int, int index) {
-    return index + reserved == background ? 0.0 : kRectangleBytes;
-  };
-  std::vector<PaletteIndex> cover(w);
-  for (int y0 = 0; y0 < height; y0 += kBandRows) {
-    const int y1 = std::min(height, y0 + kBandRows) - 1;
-    const auto middle = static_cast<std::size_t>((y0 + y1) / 2);
-    std::copy_n(pixels.begin() + static_cast<long>(middle * w), width, cover.begin());
-    quantize::rateDistortionRow(cover, palette, coverCost, kCoverLambda);
-    for (int x = 0; x < width;) {
-      int end = x + 1;
-      while (end < width && cover[std::size_t(end)] == cover[std::size_t(x)]) ++end;
-      const int index = cover[std::size_t(x)] + reserved;
-      if (index != background) {
-        out.command("RR");  // corners in screen pixels, lower-left then upper-right
-        out.xy(layout.left + x, screenRow(y1));
-        out.xy(layout.left + end - 1, screenRow(y0));
-        out.integer(index);
-        ++stats.rectangleFills;
-        for (int y = y0; y <= y1; ++y)
-          std::fill_n(shown.begin() + static_cast<long>(std::size_t(y) * w + std::size_t(x)), end - x, index);
-      }
-      x = end;
-    }
-  }
-
+  sendCovers(out, layout, plan.covers, shown);
+  stats.rectangleFills += plan.covers.size();
   Tek4125DriverOptions rowOptions = options;
   rowOptions.mergeRows = false;  // rows do not come in order: each row's rectangles go at once
-  Tek4125RowLayout plainLayout = layout;
-  plainLayout.background = -1;
-  Tek4125DriverOptions plainOptions = rowOptions;
-  plainOptions.skipBackground = false;
-  Tek4125RowPlanner skipping(out, layout, rowOptions), plain(out, plainLayout, plainOptions);
-  std::vector<int> row(w);
-  for (int y : progressiveRowOrder(height)) {
-    bool skip = background >= 0 && options.skipBackground;
-    for (std::size_t x = 0; x < w; ++x) {
-      row[x] = pixels[std::size_t(y) * w + x] + reserved;
-      if (row[x] == background && shown[std::size_t(y) * w + x] != background) skip = false;
-    }
-    (skip ? skipping : plain).row(y, row);
-  }
-  skipping.finish();
-  plain.finish();
-  for (const Tek4125RowPlanner* p : {&skipping, &plain}) {
-    stats.rasterWrites += p->stats().rasterWrites;
-    stats.runLengthWrites += p->stats().runLengthWrites;
-    stats.rectangleFills += p->stats().rectangleFills;
-    stats.skippedPixels += p->stats().skippedPixels;
-  }
+  Tek4125RowPlanner planner(out, layout, rowOptions);
+  drawRows(planner, pixels, plan.drafts, palette, reserved, shown);
+  drawRows(planner, pixels, pixels, palette, reserved, shown);
+  planner.finish();
+  const Tek4125RowStats& rows = planner.stats();
+  stats.rasterWrites += rows.rasterWrites;
+  stats.runLengthWrites += rows.runLengthWrites;
+  stats.rectangleFills += rows.rectangleFills;
+  stats.skippedPixels += rows.skippedPixels;
   return stats;
 }
 

@@ -53,7 +53,8 @@ double Tek4125RowPlanner::runCodeBytes(const Run& r) const {
 }
 
 std::vector<Tek4125RowPlanner::Way> Tek4125RowPlanner::chooseWays(const std::vector<Run>& runs,
-                                                                  const std::vector<int>& continuing) const {
+                                                                  const std::vector<int>& continuing,
+                                                                  const std::vector<bool>& skippable) const {
   const HeaderCosts h = headerCosts(out_.forms());
   const double bitsCost = layout_.bits / 6.0;
   const std::size_t n = runs.size();
@@ -71,7 +72,7 @@ std::vector<Tek4125RowPlanner::Way> Tek4125RowPlanner::chooseWays(const std::vec
     const Run& r = runs[k];
     const auto& c = cost[k];
     double leave = kInf;
-    if (options_.skipBackground && r.index == layout_.background) leave = 0;
+    if (skippable[k]) leave = 0;
     else if (options_.rectangles) leave = continuing[k] >= 0 ? 0 : h.rectangle + tek4125::intLength(r.index);
     for (int s = 0; s < 3; ++s) relax(k, Out, s, c[static_cast<std::size_t>(s)] + leave);
     if (layout_.raster) {
@@ -90,16 +91,15 @@ std::vector<Tek4125RowPlanner::Way> Tek4125RowPlanner::chooseWays(const std::vec
   std::vector<Way> ways(n);
   int state = static_cast<int>(std::min_element(cost[n].begin(), cost[n].end()) - cost[n].begin());
   for (std::size_t k = n; k-- > 0;) {
-    const Run& r = runs[k];
     if (state == InRaster) ways[k] = Way::Raster;
     else if (state == InRuns) ways[k] = Way::Runs;
-    else ways[k] = (options_.skipBackground && r.index == layout_.background) ? Way::Skip : Way::Rectangle;
+    else ways[k] = skippable[k] ? Way::Skip : Way::Rectangle;
     state = from[k + 1][static_cast<std::size_t>(state)];
   }
   return ways;
 }
 
-void Tek4125RowPlanner::row(int y, std::span<const int> indices) {
+void Tek4125RowPlanner::row(int y, std::span<const int> indices, std::span<const int> shown) {
   std::vector<Run> runs;
   for (int x = 0; x < layout_.width;) {
     const int index = indices[static_cast<std::size_t>(x)];
@@ -116,7 +116,15 @@ void Tek4125RowPlanner::row(int y, std::span<const int> indices) {
         open_[static_cast<std::size_t>(o)].run.index == runs[k].index)
       continuing[k] = o;
   }
-  const std::vector<Way> ways = chooseWays(runs, continuing);
+  std::vector<bool> skippable(runs.size(), false);
+  if (options_.skipBackground)
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+      const Run& r = runs[k];
+      skippable[k] = shown.empty() ? r.index == layout_.background
+                                   : std::all_of(shown.begin() + r.start, shown.begin() + r.start + r.length,
+                                                 [&](int s) { return s == r.index; });
+    }
+  const std::vector<Way> ways = chooseWays(runs, continuing, skippable);
   std::vector<OpenRectangle> next;
   bool afterSpan = false;  // the previous run was drawn by RP or RL, so the beam is right after it
   for (std::size_t k = 0; k < runs.size();) {

@@ -1,8 +1,10 @@
 #pragma once
 // Method: per image row, a dynamic programme over the row's runs of equal
 // colour chooses how each run is drawn: skipped (the background colour,
-// already painted), an RR rectangle (held open while the rows below repeat
-// the same run, so one RR covers them all), inside an RP raster span, or
+// already painted, or, when the caller says what the screen shows, any run
+// already there: the progressive stream's covers and drafts), an RR
+// rectangle (held open while the rows below repeat the same run, so one RR
+// covers them all), inside an RP raster span, or
 // inside an RL run-length span. After each run the beam is in one of three
 // states (outside a span, in RP, in RL); starting or switching a span costs
 // its header, which the form set decides (an RH before each span when the
@@ -35,11 +37,15 @@ struct Tek4125RowStats {
 class Tek4125RowPlanner {
  public:
   Tek4125RowPlanner(Tek4125Writer& out, const Tek4125RowLayout& layout, const Tek4125DriverOptions& options);
-  // Image row y (0 = top) of device colour indices.
-  void row(int y, std::span<const int> indices);
+  // Image row y (0 = top) of device colour indices. With `shown` (what
+  // each pixel of the row shows already, device indices), a run is skipped
+  // where it shows already, whatever its colour; without, where it is the
+  // layout's background colour (painted once under the whole picture).
+  void row(int y, std::span<const int> indices, std::span<const int> shown = {});
   // Sends the rectangles still open.
   void finish();
   const Tek4125RowStats& stats() const { return stats_; }
+  int width() const { return layout_.width; }
 
  private:
   struct Run {
@@ -52,7 +58,8 @@ class Tek4125RowPlanner {
   };
   enum class Way : std::uint8_t { Skip, Rectangle, Raster, Runs };
 
-  std::vector<Way> chooseWays(const std::vector<Run>& runs, const std::vector<int>& continuing) const;
+  std::vector<Way> chooseWays(const std::vector<Run>& runs, const std::vector<int>& continuing,
+                              const std::vector<bool>& skippable) const;
   double runCodeBytes(const Run& r) const;
   void emitRaster(std::span<const Run> runs, int screenRow, bool positioned);
   void emitRuns(std::span<const Run> runs, int screenRow, bool positioned);

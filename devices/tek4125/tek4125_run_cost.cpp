@@ -7,13 +7,16 @@
 namespace lattice::tek4125 {
 
 quantize::RunCost tek4125RunCost(const Tek4125Profile& profile, const IndexedImage& picture) {
+  return tek4125RunCost(profile, static_cast<int>(picture.colormap.size()), quantize::mostFrequentIndex(picture));
+}
+
+quantize::RunCost tek4125RunCost(const Tek4125Profile& profile, int colours, int background) {
   const Tek4125Forms& forms = profile.formSet();
   const int reserved = profile.reserved;
   // The driver's choices (tek4125_driver.cpp): 4 bits when the colours fit.
-  const int bits = profile.pixelBitsFor(static_cast<int>(picture.colormap.size()));
+  const int bits = profile.pixelBitsFor(colours);
   const bool raster = bits == 4 || !forms.rasterOnlyAtFourBits;
   const bool runLength = forms.runLength;
-  const int background = quantize::mostFrequentIndex(picture);
   const int maxRun = std::max(1, (forms.maxRunCode + 1) / (1 << bits) - 1);
   const double perCode = forms.runCodeBytesPerRl > 0 ? 1.0 + 5.0 / forms.runCodeBytesPerRl : 1.0;
   // Skipping a background run inside a row means a new span after it: an

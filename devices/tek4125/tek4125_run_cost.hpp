@@ -16,5 +16,8 @@
 namespace lattice::tek4125 {
 
 quantize::RunCost tek4125RunCost(const Tek4125Profile& profile, const IndexedImage& picture);
+// The same for a picture of `colours` palette entries whose most frequent
+// entry is `background` (-1: none skipped).
+quantize::RunCost tek4125RunCost(const Tek4125Profile& profile, int colours, int background);
 
 }  // namespace lattice::tek4125
