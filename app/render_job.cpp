@@ -53,22 +53,22 @@ RenderSettings renderSettings(const RenderJob& job, const SceneDesc& scene, int 
   return s;
 }
 
-// Returns the seconds the trace took (what bench/peers.sh compares with a
-// peer's own trace timer: no set-up, no PNG).
+// The trace (what bench/peers.sh compares with a peer's own trace timer: no
+// set-up, no PNG), then the PNG.
 template <typename T>
-double renderTruecolour(Renderer<T>& renderer, const RenderJob& job) {
+void renderTruecolour(Renderer<T>& renderer, const RenderJob& job, RenderPhases& phases) {
   RgbImage image;
-  double seconds = 0;
   {
     Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
     progress.setEnabled(progress.enabled() && !job.quiet);
     const auto start = std::chrono::steady_clock::now();
     image = renderImage(renderer, &progress);
-    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    phases.trace = secondsSince(start);
     progress.finish();
   }
-  io::writePng(job.picture, image);
-  return seconds;
+  const auto start = std::chrono::steady_clock::now();
+  io::writePng(job.picture, image, renderer.threads());
+  phases.output = secondsSince(start);
 }
 
 // The transport the job names, and where it goes in words; none when only
@@ -99,8 +99,10 @@ std::unique_ptr<ByteSink> openTransport(const RenderJob& job, const devices::Dev
 
 // Renders into the device's driver row by row; the bytes go to the transport
 // and, when a picture is asked for, through the emulator on their way.
+// The source's time goes to phases.quantize, the emulator's picture to phases.output.
 devices::DriverStats renderToDevice(const std::function<void(IndexedSink&)>& source, const RenderJob& job,
-                                    const devices::Device& device, std::string& where) {
+                                    const devices::Device& device, std::string& where, RenderPhases& phases) {
+  const auto start = std::chrono::steady_clock::now();
   int replyFd = -1;
   std::unique_ptr<ByteSink> transport = openTransport(job, device, where, replyFd);
   std::unique_ptr<StreamDecoder> emulator;
@@ -120,44 +122,53 @@ devices::DriverStats renderToDevice(const std::function<void(IndexedSink&)>& sou
   } else {
     source(driver->sink());
   }
+  phases.quantize += secondsSince(start);
+  const auto outputStart = std::chrono::steady_clock::now();
   tee.close();  // renames the stream file into place, or drains the serial line
   const devices::DriverStats stats = driver->stats();
   raise(job.events, StreamSent{device.name, device.title,
                                 device.line ? std::optional<int>(device.line->baud) : std::nullopt, where, stats});
   if (emulator) {
     emulator->finish();
-    io::writePng(job.picture, emulator->image());
+    io::writePng(job.picture, emulator->image(), static_cast<unsigned>(job.threads));
     const DecodeReport& report = emulator->report();
     if (report.unknownCommands + report.malformed > 0)
       throw Error(ErrorKind::Internal,
                   fmt::format("the emulator found {} unknown and {} malformed commands in our own stream:\n{}",
                               report.unknownCommands, report.malformed, report.summary()));
   }
+  phases.output = secondsSince(outputStart);
   return stats;
 }
 
 // The truecolour picture once, then the search of app/wire_budget.hpp.
 template <typename T>
 WireSearch renderWithinWireBudget(Renderer<T>& renderer, const RenderJob& job, const devices::Device& device,
-                                  const quantize::PipelineOptions& pipeline, const std::vector<std::string>& added) {
+                                  const quantize::PipelineOptions& pipeline, const std::vector<std::string>& added,
+                                  RenderPhases& phases) {
   RgbImage truecolour;
   {
     Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
     progress.setEnabled(progress.enabled() && !job.quiet);
+    const auto start = std::chrono::steady_clock::now();
     truecolour = renderImage(renderer, &progress);
+    phases.trace = secondsSince(start);
     progress.finish();
   }
+  const auto start = std::chrono::steady_clock::now();
   WireSearch search = searchWireBudget(truecolour, device, *job.wire, pipeline.quantize, !job.quiet);
   search.settings = added;
+  phases.quantize = secondsSince(start);
   raise(job.events, WireChosen{describeWireChoice(search)});
   return search;
 }
 
 // Takes the loaded scene: its node tree is released once the renderer holds
 // its own. `room`: the budget its lattices are rasterized under (null: none).
+// `start`: when the scene began loading (set-up runs until the renderer is built).
 template <typename T>
-RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, const std::shared_ptr<RasterRoom>& room) {
-  const auto start = std::chrono::steady_clock::now();
+RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, const std::shared_ptr<RasterRoom>& room,
+                        std::chrono::steady_clock::time_point start) {
   quantize::PipelineOptions pipeline = job.pipeline;
   std::optional<devices::Device> device;
   std::vector<std::string> wireAdded;  // profile settings the wire budget turned on
@@ -205,18 +216,21 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
   }
 
   RenderResult result;
+  result.phases.setup = secondsSince(start);
   if (device && job.wire) {
-    WireSearch search = renderWithinWireBudget(renderer, job, *device, pipeline, wireAdded);
+    WireSearch search = renderWithinWireBudget(renderer, job, *device, pipeline, wireAdded, result.phases);
     result.stream = renderToDevice([&](IndexedSink& s) { sendPicture(search.picture, s); }, job, *device,
-                                   result.destination);
+                                   result.destination, result.phases);
     search.picture = {};
     result.wire = std::move(search);
   } else if (device) {
-    result.stream = renderToDevice([&](IndexedSink& s) { quantize::runPipeline(renderer, s, pipeline); }, job,
-                                   *device, result.destination);
+    TimedRowSource rows(renderer, result.phases.trace);
+    result.stream = renderToDevice([&](IndexedSink& s) { quantize::runPipeline(rows, s, pipeline); }, job, *device,
+                                   result.destination, result.phases);
+    result.phases.quantize -= result.phases.trace;  // the pipeline's time less the waits for rows
   } else
-    result.traceSeconds = renderTruecolour(renderer, job);
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    renderTruecolour(renderer, job, result.phases);
+  result.seconds = secondsSince(start);
   result.width = renderer.width();
   result.height = renderer.height();
   result.rays = renderer.raysTraced();
@@ -269,6 +283,7 @@ void checkRenderJob(const RenderJob& job) {
 }
 
 RenderResult renderScene(const RenderJob& job) {
+  const auto start = std::chrono::steady_clock::now();
   checkRenderJob(job);
   if (job.memoryBudget) shareOneAllocatorArena();  // before the rasterizer's threads
   // Scenes may hold [[lattices]]; their tables are built when the renderer
@@ -291,7 +306,7 @@ RenderResult renderScene(const RenderJob& job) {
   }
   lht::SceneWithLattices loaded = lht::loadSceneWithLattices(job.scene, tables);
   RenderResult result = withArithmetic(job.arithmetic, [&](auto type) {
-    return renderWith<typename decltype(type)::type>(std::move(loaded), job, room);
+    return renderWith<typename decltype(type)::type>(std::move(loaded), job, room, start);
   });
   if (tables.stats) raise(job.events, LookupsCounted{tables.stats->summaries()});
   return result;
