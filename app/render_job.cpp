@@ -61,14 +61,14 @@ void renderTruecolour(Renderer<T>& renderer, const RenderJob& job, RenderPhases&
   {
     Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
     progress.setEnabled(progress.enabled() && !job.quiet);
-    const auto start = std::chrono::steady_clock::now();
+    const PhaseTimer trace;
     image = renderImage(renderer, &progress);
-    phases.trace = secondsSince(start);
+    trace.addTo(phases.trace);
     progress.finish();
   }
-  const auto start = std::chrono::steady_clock::now();
+  const PhaseTimer output;
   io::writePng(job.picture, image, renderer.threads());
-  phases.output = secondsSince(start);
+  output.addTo(phases.output);
 }
 
 // The transport the job names, and where it goes in words; none when only
@@ -102,7 +102,7 @@ std::unique_ptr<ByteSink> openTransport(const RenderJob& job, const devices::Dev
 // The source's time goes to phases.quantize, the emulator's picture to phases.output.
 devices::DriverStats renderToDevice(const std::function<void(IndexedSink&)>& source, const RenderJob& job,
                                     const devices::Device& device, std::string& where, RenderPhases& phases) {
-  const auto start = std::chrono::steady_clock::now();
+  const PhaseTimer pipeline;
   int replyFd = -1;
   std::unique_ptr<ByteSink> transport = openTransport(job, device, where, replyFd);
   std::unique_ptr<StreamDecoder> emulator;
@@ -122,8 +122,8 @@ devices::DriverStats renderToDevice(const std::function<void(IndexedSink&)>& sou
   } else {
     source(driver->sink());
   }
-  phases.quantize += secondsSince(start);
-  const auto outputStart = std::chrono::steady_clock::now();
+  pipeline.addTo(phases.quantize);
+  const PhaseTimer output;
   tee.close();  // renames the stream file into place, or drains the serial line
   const devices::DriverStats stats = driver->stats();
   raise(job.events, StreamSent{device.name, device.title,
@@ -137,7 +137,7 @@ devices::DriverStats renderToDevice(const std::function<void(IndexedSink&)>& sou
                   fmt::format("the emulator found {} unknown and {} malformed commands in our own stream:\n{}",
                               report.unknownCommands, report.malformed, report.summary()));
   }
-  phases.output = secondsSince(outputStart);
+  output.addTo(phases.output);
   return stats;
 }
 
@@ -150,25 +150,25 @@ WireSearch renderWithinWireBudget(Renderer<T>& renderer, const RenderJob& job, c
   {
     Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
     progress.setEnabled(progress.enabled() && !job.quiet);
-    const auto start = std::chrono::steady_clock::now();
+    const PhaseTimer trace;
     truecolour = renderImage(renderer, &progress);
-    phases.trace = secondsSince(start);
+    trace.addTo(phases.trace);
     progress.finish();
   }
-  const auto start = std::chrono::steady_clock::now();
+  const PhaseTimer searching;
   WireSearch search = searchWireBudget(truecolour, device, *job.wire, pipeline.quantize, !job.quiet);
   search.settings = added;
-  phases.quantize = secondsSince(start);
+  searching.addTo(phases.quantize);
   raise(job.events, WireChosen{describeWireChoice(search)});
   return search;
 }
 
 // Takes the loaded scene: its node tree is released once the renderer holds
 // its own. `room`: the budget its lattices are rasterized under (null: none).
-// `start`: when the scene began loading (set-up runs until the renderer is built).
+// `start`: started when the scene began loading (set-up runs until the renderer is built).
 template <typename T>
 RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, const std::shared_ptr<RasterRoom>& room,
-                        std::chrono::steady_clock::time_point start) {
+                        const PhaseTimer& start) {
   quantize::PipelineOptions pipeline = job.pipeline;
   std::optional<devices::Device> device;
   std::vector<std::string> wireAdded;  // profile settings the wire budget turned on
@@ -216,7 +216,7 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
   }
 
   RenderResult result;
-  result.phases.setup = secondsSince(start);
+  start.addTo(result.phases.setup);
   if (device && job.wire) {
     WireSearch search = renderWithinWireBudget(renderer, job, *device, pipeline, wireAdded, result.phases);
     result.stream = renderToDevice([&](IndexedSink& s) { sendPicture(search.picture, s); }, job, *device,
@@ -227,10 +227,13 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
     TimedRowSource rows(renderer, result.phases.trace);
     result.stream = renderToDevice([&](IndexedSink& s) { quantize::runPipeline(rows, s, pipeline); }, job, *device,
                                    result.destination, result.phases);
-    result.phases.quantize -= result.phases.trace;  // the pipeline's time less the waits for rows
+    result.phases.quantize.wall -= result.phases.trace.wall;  // the pipeline's time less the waits for rows
+    result.phases.quantize.cpu -= result.phases.trace.cpu;
   } else
     renderTruecolour(renderer, job, result.phases);
-  result.seconds = secondsSince(start);
+  PhaseSeconds whole;
+  start.addTo(whole);
+  result.seconds = whole.wall;
   result.width = renderer.width();
   result.height = renderer.height();
   result.rays = renderer.raysTraced();
@@ -283,7 +286,7 @@ void checkRenderJob(const RenderJob& job) {
 }
 
 RenderResult renderScene(const RenderJob& job) {
-  const auto start = std::chrono::steady_clock::now();
+  const PhaseTimer start;
   checkRenderJob(job);
   if (job.memoryBudget) shareOneAllocatorArena();  // before the rasterizer's threads
   // Scenes may hold [[lattices]]; their tables are built when the renderer

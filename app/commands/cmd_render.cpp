@@ -212,11 +212,17 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
 }
 
 // What the render says on stderr as it goes (app/render_events.hpp).
-// Each phase in parentheses of its own, so a script greps one, e.g.
-// "(trace S s)" (bench/peers.sh, bench/scaling.sh); quantize only for a device.
+// Each phase's wall time in parentheses of its own, so a script greps one,
+// e.g. "(trace S s)" (bench/peers.sh, bench/scaling.sh), then their CPU
+// times and the process's since it started; quantize only for a device.
 std::string phaseTimes(const RenderPhases& p) {
-  return fmt::format(" (set-up {:.4f} s) (trace {:.4f} s){} (output {:.4f} s)", p.setup, p.trace,
-                     p.quantize > 0 ? fmt::format(" (quantize {:.4f} s)", p.quantize) : std::string(), p.output);
+  const bool device = p.quantize.wall > 0;
+  return fmt::format(" (set-up {:.4f} s) (trace {:.4f} s){} (output {:.4f} s) (CPU set-up {:.4f} s, trace {:.4f} s{}, "
+                     "output {:.4f} s, process {:.4f} s)",
+                     p.setup.wall, p.trace.wall,
+                     device ? fmt::format(" (quantize {:.4f} s)", p.quantize.wall) : std::string(), p.output.wall,
+                     p.setup.cpu, p.trace.cpu, device ? fmt::format(", quantize {:.4f} s", p.quantize.cpu) : std::string(),
+                     p.output.cpu, PhaseTimer::cpuNow());
 }
 
 void sayRenderEvent(const RenderEvent& event) {
