@@ -167,7 +167,11 @@ int main(int argc, char** argv) try {
         all.push_back({fmt::format("ours level {}{}, {}, 1 thread", level, rle ? " RLE" : "", name),
                        [&img, level, rle, filter = filter] { return ours(img, level, rle, filter, 1); }});
   const lattice::io::PngEncoding chosen;
-  all.push_back({fmt::format("ours as written (level {}{}, Up), 2 threads", chosen.level, chosen.runLength ? " RLE" : ""),
+  const char* chosenFilter = "";
+  for (auto [name, filter] : filters)
+    if (filter == chosen.filter) chosenFilter = name;
+  all.push_back({fmt::format("ours as written (level {}{}, {}), 2 threads", chosen.level, chosen.runLength ? " RLE" : "",
+                             chosenFilter),
                  [&] { return ours(img, chosen.level, chosen.runLength, chosen.filter, 2); }});
 
   for (Contender& c : all) {  // the untimed run, and the pixel check

@@ -30,8 +30,7 @@ void writePng(const std::filesystem::path& path, const IndexedImage& img, unsign
   std::vector<std::uint8_t> pixels(img.pixels.begin(), img.pixels.end());
   for (auto& p : pixels)
     if (p >= img.colormap.size()) p = 0;
-  PngEncoding encoding;
-  encoding.filter = PngFilter::None;  // W3C PNG 12.8: palette pictures rarely gain from a filter
+  PngEncoding encoding;  // no filter, as W3C PNG 12.8 advises for palette pictures
   encoding.threads = threads;
   writeFileAtomically(path, encodePng({img.width, img.height, pixels, img.colormap}, encoding));
 }

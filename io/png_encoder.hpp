@@ -18,7 +18,7 @@
 // (png_image_write_to_memory) compresses the whole picture twice, once only
 // to learn the size; at 2048 x 2048 that was most of everything a render
 // does besides tracing. bench/png-encoder.sh measures the level, strategy
-// and filter chosen below against libpng and libspng.
+// and filter chosen below against the others and against libpng and libspng.
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -30,11 +30,14 @@ namespace lattice::io {
 
 enum class PngFilter : std::uint8_t { None = 0, Sub = 1, Up = 2, Paeth = 4 };  // the filter-type byte
 
+// The defaults won bench/png-encoder.sh on Plate 7, Plate 6 and torus-floor
+// at 2048 x 2048: the least CPU time of the settings measured, with files
+// about the size libpng's defaults write (bench/results/2026-12-04-tail.md).
 struct PngEncoding {
-  int level = 1;             // zlib's level, 0..9
-  bool runLength = true;     // zlib's Z_RLE strategy: matches at distance one only, fast on filtered rows
-  PngFilter filter = PngFilter::Up;
-  unsigned threads = 0;      // 0: every core; the bytes do not depend on it
+  int level = 1;           // zlib's level, 0..9
+  bool runLength = false;  // zlib's Z_RLE strategy: matches at distance one only
+  PngFilter filter = PngFilter::None;  // a render's flat runs repeat whole pixels, which filtering breaks up
+  unsigned threads = 0;    // 0: every core; the bytes do not depend on it
 };
 
 // A picture as PNG wants it: rows of 8-bit samples, 3 a pixel (RGB) or 1 (an
