@@ -17,6 +17,7 @@
 #include "foundation/system/atomic_file.hpp"
 #include "foundation/error.hpp"
 #include "foundation/progress.hpp"
+#include "foundation/threads.hpp"
 #include "io/png.hpp"
 #include "io/serial_sink.hpp"
 #include "io/stdout_sink.hpp"
@@ -192,7 +193,7 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
     // one picks them, so a picture never depends on the machine's memory.
     budget = renderBudgetRequest(room->budget, settings.width, settings.height, pipeline,
                                  job.modeChosenByUser || !room->chosen, device ? &*device : nullptr,
-                                 !job.picture.empty());
+                                 job.picture.empty() ? 0u : job.threads > 0 ? unsigned(job.threads) : hardwareThreads());
     budget->histogramChosenByUser = job.histogramChosenByUser || !room->chosen;
     room->leastOutput = leastOutputBytes(*budget);  // before the renderer rasterizes the lattices
   }

@@ -9,13 +9,22 @@
 #include "io/png_encoder.hpp"
 
 namespace lattice::io {
+namespace {
+
+void writeEncoded(const std::filesystem::path& path, const PngPixels& pixels, const PngEncoding& encoding) {
+  AtomicFile file(path);
+  encodePng(pixels, encoding, file);
+  file.close();
+}
+
+}  // namespace
 
 void writePng(const std::filesystem::path& path, const RgbImage& img, unsigned threads) {
   if (img.width <= 0 || img.height <= 0)
     throw Error(ErrorKind::Output, fmt::format("{}: cannot write an empty image", path.string()));
   PngEncoding encoding;
   encoding.threads = threads;
-  writeFileAtomically(path, encodePng({img.width, img.height, img.rgb, {}}, encoding));
+  writeEncoded(path, {img.width, img.height, img.rgb, {}}, encoding);
 }
 
 void writePng(const std::filesystem::path& path, const IndexedImage& img, unsigned threads) {
@@ -32,7 +41,7 @@ void writePng(const std::filesystem::path& path, const IndexedImage& img, unsign
     if (p >= img.colormap.size()) p = 0;
   PngEncoding encoding;  // no filter, as W3C PNG 12.8 advises for palette pictures
   encoding.threads = threads;
-  writeFileAtomically(path, encodePng({img.width, img.height, pixels, img.colormap}, encoding));
+  writeEncoded(path, {img.width, img.height, pixels, img.colormap}, encoding);
 }
 
 }  // namespace lattice::io

@@ -50,18 +50,23 @@ void appendBigEndian(std::vector<std::uint8_t>& out, std::uint32_t v) {
   out.insert(out.end(), {std::uint8_t(v >> 24), std::uint8_t(v >> 16), std::uint8_t(v >> 8), std::uint8_t(v)});
 }
 
-// A chunk (W3C PNG 5.3): length, type, data, CRC-32 of type and data.
-void appendChunk(std::vector<std::uint8_t>& out, const char* type, std::span<const std::uint8_t> head,
-                 std::span<const std::uint8_t> data = {}, std::span<const std::uint8_t> tail = {}) {
-  appendBigEndian(out, static_cast<std::uint32_t>(head.size() + data.size() + tail.size()));
-  const std::size_t start = out.size();
-  out.insert(out.end(), type, type + 4);
-  out.insert(out.end(), head.begin(), head.end());
-  out.insert(out.end(), data.begin(), data.end());
-  out.insert(out.end(), tail.begin(), tail.end());
-  uLong crc = crc32(0, nullptr, 0);
-  crc = crc32_z(crc, out.data() + start, out.size() - start);
-  appendBigEndian(out, static_cast<std::uint32_t>(crc));
+// A chunk (W3C PNG 5.3): length, type, data (in up to three pieces), CRC-32
+// of type and data; written piece by piece so no copy of the data is made.
+void writeChunk(ByteSink& out, const char* type, std::span<const std::uint8_t> head,
+                std::span<const std::uint8_t> data = {}, std::span<const std::uint8_t> tail = {}) {
+  std::vector<std::uint8_t> frame;
+  appendBigEndian(frame, static_cast<std::uint32_t>(head.size() + data.size() + tail.size()));
+  frame.insert(frame.end(), type, type + 4);
+  uLong crc = crc32_z(crc32(0, nullptr, 0), frame.data() + 4, 4);
+  out.write(frame);
+  for (std::span<const std::uint8_t> piece : {head, data, tail}) {
+    if (piece.empty()) continue;  // crc32_z with no buffer returns the initial value, not crc
+    crc = crc32_z(crc, piece.data(), piece.size());
+    out.write(piece);
+  }
+  frame.clear();
+  appendBigEndian(frame, static_cast<std::uint32_t>(crc));
+  out.write(frame);
 }
 
 struct Band {
@@ -74,47 +79,87 @@ struct Layout {
   std::size_t bpp, rowBytes, rowsPerBand, bands, rowsBefore;  // rowsBefore: rows that fill the dictionary
 };
 
-// Filters rows [first - rowsBefore, last) of the picture into `scratch` and
-// deflates the band's own rows, primed with what precedes them.
-void deflateBand(const PngPixels& px, const PngEncoding& encoding, const Layout& layout, std::size_t band,
-                 std::vector<std::uint8_t>& scratch, Band& out) {
-  const std::size_t first = band * layout.rowsPerBand;
-  const std::size_t last = std::min<std::size_t>(first + layout.rowsPerBand, std::size_t(px.height));
-  const std::size_t from = first - std::min(first, layout.rowsBefore);
-  const std::size_t stride = layout.rowBytes + 1;
-  scratch.resize((last - from) * stride);
-  for (std::size_t y = from; y < last; ++y) {
-    const std::uint8_t* row = px.samples.data() + y * layout.rowBytes;
-    filterRow(encoding.filter, layout.bpp, row, y > 0 ? row - layout.rowBytes : nullptr, layout.rowBytes,
-              scratch.data() + (y - from) * stride);
+// One worker's deflate stream, reset for each band (deflateReset keeps the
+// level, strategy and the memory zlib allocated), and its row buffers.
+class BandDeflater {
+ public:
+  explicit BandDeflater(const PngEncoding& encoding) {
+    if (deflateInit2(&z_, encoding.level, Z_DEFLATED, -15, 8, encoding.runLength ? Z_RLE : Z_DEFAULT_STRATEGY) != Z_OK)
+      throw Error(ErrorKind::Internal, "PNG encoding: zlib's deflateInit2 failed");
   }
-  const std::size_t ownStart = (first - from) * stride;
-  const std::size_t own = scratch.size() - ownStart;
-  const std::size_t dictionary = std::min(ownStart, kWindowBytes);
+  ~BandDeflater() { deflateEnd(&z_); }
+  BandDeflater(const BandDeflater&) = delete;
+  BandDeflater& operator=(const BandDeflater&) = delete;
 
-  z_stream z{};
-  if (deflateInit2(&z, encoding.level, Z_DEFLATED, -15, 8, encoding.runLength ? Z_RLE : Z_DEFAULT_STRATEGY) != Z_OK)
-    throw Error(ErrorKind::Internal, "PNG encoding: zlib's deflateInit2 failed");
-  if (dictionary > 0)
-    deflateSetDictionary(&z, scratch.data() + ownStart - dictionary, static_cast<uInt>(dictionary));
-  out.deflated.resize(deflateBound(&z, own) + 16);  // + the sync flush's empty stored block
-  z.next_in = scratch.data() + ownStart;
-  z.avail_in = static_cast<uInt>(own);
-  z.next_out = out.deflated.data();
-  z.avail_out = static_cast<uInt>(out.deflated.size());
-  const bool lastBand = last == std::size_t(px.height);
-  const int status = deflate(&z, lastBand ? Z_FINISH : Z_SYNC_FLUSH);
-  const bool complete = lastBand ? status == Z_STREAM_END : (status == Z_OK && z.avail_in == 0 && z.avail_out > 0);
-  out.deflated.resize(out.deflated.size() - z.avail_out);
-  deflateEnd(&z);
-  if (!complete) throw Error(ErrorKind::Internal, fmt::format("PNG encoding: zlib's deflate stopped ({})", status));
-  out.adler = adler32_z(adler32(0, nullptr, 0), scratch.data() + ownStart, own);
-  out.filteredBytes = own;
-}
+  // Filters the rows before the band that fill the dictionary, then deflates
+  // the band's own rows one at a time, sync-flushed (the last band: finished).
+  void run(const PngPixels& px, const PngEncoding& encoding, const Layout& layout, std::size_t band, Band& out) {
+    const std::size_t first = band * layout.rowsPerBand;
+    const std::size_t last = std::min<std::size_t>(first + layout.rowsPerBand, std::size_t(px.height));
+    const std::size_t stride = layout.rowBytes + 1;
+    auto filtered = [&](std::size_t y, std::uint8_t* to) {
+      const std::uint8_t* row = px.samples.data() + y * layout.rowBytes;
+      filterRow(encoding.filter, layout.bpp, row, y > 0 ? row - layout.rowBytes : nullptr, layout.rowBytes, to);
+    };
+    deflateReset(&z_);
+    const std::size_t from = first - std::min(first, layout.rowsBefore);
+    if (from < first) {
+      dictionary_.resize((first - from) * stride);
+      for (std::size_t y = from; y < first; ++y) filtered(y, dictionary_.data() + (y - from) * stride);
+      const std::size_t reach = std::min(dictionary_.size(), kWindowBytes);
+      deflateSetDictionary(&z_, dictionary_.data() + dictionary_.size() - reach, static_cast<uInt>(reach));
+    }
+    row_.resize(stride);
+    out.deflated.clear();
+    used_ = 0;
+    out.adler = adler32(0, nullptr, 0);
+    for (std::size_t y = first; y < last; ++y) {
+      filtered(y, row_.data());
+      out.adler = adler32_z(out.adler, row_.data(), stride);
+      const bool lastRow = y + 1 == last;
+      deflateRow(out.deflated, lastRow ? (last == std::size_t(px.height) ? Z_FINISH : Z_SYNC_FLUSH) : Z_NO_FLUSH);
+    }
+    out.deflated.resize(used_);
+    out.deflated.shrink_to_fit();
+    out.filteredBytes = (last - first) * stride;
+  }
+
+ private:
+  // Deflates row_ onto `to`, whose first used_ bytes are output so far (the
+  // rest is room, grown by doubling so each row does not touch the allocator).
+  void deflateRow(std::vector<std::uint8_t>& to, int flush) {
+    z_.next_in = row_.data();
+    z_.avail_in = static_cast<uInt>(row_.size());
+    for (;;) {
+      if (to.size() - used_ < 4096) to.resize(std::max<std::size_t>(2 * to.size(), 65536));
+      z_.next_out = to.data() + used_;
+      z_.avail_out = static_cast<uInt>(to.size() - used_);
+      const int status = deflate(&z_, flush);
+      used_ = to.size() - z_.avail_out;
+      if (status == Z_STREAM_END) return;
+      if (status != Z_OK && status != Z_BUF_ERROR)
+        throw Error(ErrorKind::Internal, fmt::format("PNG encoding: zlib's deflate stopped ({})", status));
+      if (z_.avail_in == 0 && z_.avail_out > 0 && flush != Z_FINISH) return;  // all taken, flush complete
+    }
+  }
+
+  std::size_t used_ = 0;
+
+  z_stream z_{};
+  std::vector<std::uint8_t> dictionary_, row_;
+};
 
 }  // namespace
 
-std::vector<std::uint8_t> encodePng(const PngPixels& px, const PngEncoding& encoding) {
+std::size_t pngEncoderWorkerBytes(int width, bool indexed) {
+  const std::size_t stride = std::size_t(std::max(width, 0)) * (indexed ? 1 : 3) + 1;
+  // zlib's deflate state at windowBits 15, memLevel 8 (zlib.h's deflateInit2:
+  // (1 << (windowBits + 2)) + (1 << (memLevel + 9)) bytes), the dictionary's
+  // rows and one row.
+  return (std::size_t(1) << 17) + (std::size_t(1) << 17) + kWindowBytes + 3 * stride;
+}
+
+void encodePng(const PngPixels& px, const PngEncoding& encoding, ByteSink& out) {
   const bool indexed = !px.palette.empty();
   Layout layout{};
   layout.bpp = indexed ? 1 : 3;
@@ -130,23 +175,24 @@ std::vector<std::uint8_t> encodePng(const PngPixels& px, const PngEncoding& enco
   runWorkers(
       workers,
       [&](unsigned) {
-        std::vector<std::uint8_t> scratch;
-        for (std::size_t b; (b = next.fetch_add(1)) < layout.bands;) deflateBand(px, encoding, layout, b, scratch, bands[b]);
+        BandDeflater deflater(encoding);
+        for (std::size_t b; (b = next.fetch_add(1)) < layout.bands;) deflater.run(px, encoding, layout, b, bands[b]);
       },
       [&] { next = layout.bands; });
 
-  std::vector<std::uint8_t> file = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  static constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  out.write(kSignature);
   std::vector<std::uint8_t> header;
   appendBigEndian(header, static_cast<std::uint32_t>(px.width));
   appendBigEndian(header, static_cast<std::uint32_t>(px.height));
   header.insert(header.end(), {8, std::uint8_t(indexed ? 3 : 2), 0, 0, 0});  // depth, colour type, methods
-  appendChunk(file, "IHDR", header);
+  writeChunk(out, "IHDR", header);
   const std::uint8_t perceptual = 0;  // what libpng's simplified API wrote, so viewers show the same
-  appendChunk(file, "sRGB", std::span(&perceptual, 1));
+  writeChunk(out, "sRGB", std::span(&perceptual, 1));
   if (indexed) {
     std::vector<std::uint8_t> plte;
     for (const Rgb8& c : px.palette) plte.insert(plte.end(), {c.r, c.g, c.b});
-    appendChunk(file, "PLTE", plte);
+    writeChunk(out, "PLTE", plte);
   }
   // The zlib wrapper (RFC 1950): CMF 0x78 (deflate, 32 KiB window), FLG with
   // the level class and the check bits making CMF * 256 + FLG a multiple of 31.
@@ -157,12 +203,19 @@ std::vector<std::uint8_t> encodePng(const PngPixels& px, const PngEncoding& enco
   for (const Band& band : bands) adler = adler32_combine(adler, band.adler, static_cast<z_off_t>(band.filteredBytes));
   std::vector<std::uint8_t> trailer;
   appendBigEndian(trailer, static_cast<std::uint32_t>(adler));
-  for (std::size_t b = 0; b < bands.size(); ++b)
-    appendChunk(file, "IDAT", b == 0 ? std::span<const std::uint8_t>(zlibHeader) : std::span<const std::uint8_t>(),
-                bands[b].deflated, b + 1 == bands.size() ? std::span<const std::uint8_t>(trailer)
-                                                           : std::span<const std::uint8_t>());
-  appendChunk(file, "IEND", {});
-  return file;
+  for (std::size_t b = 0; b < bands.size(); ++b) {
+    writeChunk(out, "IDAT", b == 0 ? std::span<const std::uint8_t>(zlibHeader) : std::span<const std::uint8_t>(),
+               bands[b].deflated,
+               b + 1 == bands.size() ? std::span<const std::uint8_t>(trailer) : std::span<const std::uint8_t>());
+    bands[b].deflated = {};  // written: its memory goes back at once
+  }
+  writeChunk(out, "IEND", {});
+}
+
+std::vector<std::uint8_t> encodePng(const PngPixels& pixels, const PngEncoding& encoding) {
+  MemorySink file;
+  encodePng(pixels, encoding, file);
+  return file.data();
 }
 
 }  // namespace lattice::io

@@ -1,6 +1,6 @@
 #pragma once
 // A PNG encoder that compresses bands of rows on every thread (what
-// io/png.cpp writes with), in memory.
+// io/png.cpp writes with).
 //
 // Method: each row is filtered with one fixed PNG filter (W3C PNG, section 9:
 // None, Sub, Up or Paeth); the filtered rows are cut into bands of a fixed
@@ -8,11 +8,12 @@
 // are the same on any number of threads) and each band is deflated on its
 // own by zlib as raw deflate, primed with the 32 KiB of filtered data before
 // it (deflateSetDictionary) so the ratio hardly suffers, and ended with a
-// sync flush (the last band: finish). Raw deflate streams ended so join into
+// sync flush (the last band: finish), a row at a time, so a worker holds its
+// deflate state and a few rows. Raw deflate streams ended so join into
 // one (RFC 1951: a sync flush ends on a byte boundary with no final block),
 // and the zlib wrapper's Adler-32 of the whole is combined from the bands'
 // (adler32_combine); this is how pigz compresses in parallel. The bands go
-// out as IDAT chunks, each with its CRC-32.
+// out as IDAT chunks, each with its CRC-32, straight to the file.
 //
 // Why: libpng compresses on one thread, and its simplified API
 // (png_image_write_to_memory) compresses the whole picture twice, once only
@@ -24,6 +25,7 @@
 #include <span>
 #include <vector>
 
+#include "foundation/byte_sink.hpp"
 #include "foundation/scanline.hpp"
 
 namespace lattice::io {
@@ -52,8 +54,15 @@ struct PngPixels {
 // Raw filtered rows are deflated in bands of about this many bytes.
 inline constexpr std::size_t kPngBandBytes = std::size_t(256) << 10;
 
-// The whole PNG file. Throws Error(Internal) if zlib fails (it cannot on
-// memory it was given, short of running out).
+// The whole PNG file onto `out` (not closed), each band's deflated bytes
+// freed once written. Throws Error(Internal) if zlib fails (it cannot on
+// memory it was given, short of running out), and what `out` throws.
+void encodePng(const PngPixels& pixels, const PngEncoding& encoding, ByteSink& out);
+// The same into memory.
 std::vector<std::uint8_t> encodePng(const PngPixels& pixels, const PngEncoding& encoding);
+
+// What one worker holds besides the bands' deflated bytes: zlib's state, the
+// rows that prime a band's dictionary, a row (what a memory plan counts).
+std::size_t pngEncoderWorkerBytes(int width, bool indexed);
 
 }  // namespace lattice::io
