@@ -108,7 +108,7 @@ for size in sorted({k[0] for k in data}):
     one = data[(size, 1)]
     t1 = med(one, 0)
     wall_share = statistics.median((r[0] - r[2]) / r[0] for r in one)
-    cpu_share = statistics.median((r[5] - r[7]) / r[5] for r in one)
+    cpu_share = statistics.median((r[5] - r[7]) / r[5] if r[5] > 0 else 0.0 for r in one)  # 0: no CPU report
     for n in counts:
         if n == 1: continue
         tn = med(data[(size, n)], 0)
