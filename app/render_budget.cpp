@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "foundation/error.hpp"
+#include "io/png_encoder.hpp"
 #include "lht/grid/lattice_box.hpp"
 #include "lht/table/entry_codec.hpp"
 
@@ -126,7 +127,8 @@ void shareOneAllocatorArena() {
 }
 
 MemoryPlanRequest renderBudgetRequest(std::uint64_t budget, int width, int height, const quantize::PipelineOptions& pipeline,
-                                      bool modeChosenByUser, const devices::Device* device, bool writesPng) {
+                                      bool modeChosenByUser, const devices::Device* device, unsigned pngWorkers) {
+  const bool writesPng = pngWorkers > 0;
   MemoryPlanRequest request;
   request.budget = budget;
   request.width = width;
@@ -140,11 +142,18 @@ MemoryPlanRequest renderBudgetRequest(std::uint64_t budget, int width, int heigh
       request.deviceItems.push_back({fmt::format("{} driver", device->title), driver});
     if (writesPng) request.deviceItems.push_back({"emulator screen", device->emulatorMemory});
   }
-  // libpng's zlib deflate state (two 128 KiB windows at the default levels)
-  // and its row buffers: measured 200-310 KiB beyond the picture itself;
-  // 384 KiB left fuzzy-sphere-1000's truecolour render 20 KiB above its
-  // prediction on 2026-12-02 (bench/memory-calibration.sh), hence 448.
-  if (writesPng) request.deviceItems.push_back({"PNG encoder", 448 * 1024});
+  // One deflate stream's state (two 128 KiB tables at the default memLevel),
+  // its row buffers and the deflated bytes: libpng's encoder measured 200-310
+  // KiB beyond the picture itself; 384 KiB left fuzzy-sphere-1000's
+  // truecolour render 20 KiB above its prediction on 2026-12-02
+  // (bench/memory-calibration.sh), hence 448. Ours (io/png_encoder.hpp)
+  // holds as much on one worker, and each further worker its own state and
+  // rows.
+  if (writesPng) {
+    const int widest = device ? std::max(width, device->width) : width;  // an emulator saves its whole screen
+    request.deviceItems.push_back(
+        {"PNG encoder", 448 * 1024 + (pngWorkers - 1) * io::pngEncoderWorkerBytes(widest, device != nullptr)});
+  }
   return request;
 }
 

@@ -46,9 +46,10 @@ void shareOneAllocatorArena();
 
 // The request for a width x height picture, before anything is measured.
 // `device` is the device table's entry (its driver's and emulator's memory),
-// or nullptr for a truecolour picture; `writesPng`: a picture is saved (-o).
+// or nullptr for a truecolour picture; `pngWorkers`: the threads a saved
+// picture (-o) is deflated on, 0 when none is saved.
 MemoryPlanRequest renderBudgetRequest(std::uint64_t budget, int width, int height, const quantize::PipelineOptions& pipeline,
-                                      bool modeChosenByUser, const devices::Device* device, bool writesPng);
+                                      bool modeChosenByUser, const devices::Device* device, unsigned pngWorkers);
 
 // The packing of lattices rasterized in this run: the form the budget can
 // hold, decided when their entry count is known (chooseTablePacking); a

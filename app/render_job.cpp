@@ -17,6 +17,7 @@
 #include "foundation/system/atomic_file.hpp"
 #include "foundation/error.hpp"
 #include "foundation/progress.hpp"
+#include "foundation/threads.hpp"
 #include "io/png.hpp"
 #include "io/serial_sink.hpp"
 #include "io/stdout_sink.hpp"
@@ -53,22 +54,22 @@ RenderSettings renderSettings(const RenderJob& job, const SceneDesc& scene, int 
   return s;
 }
 
-// Returns the seconds the trace took (what bench/peers.sh compares with a
-// peer's own trace timer: no set-up, no PNG).
+// The trace (what bench/peers.sh compares with a peer's own trace timer: no
+// set-up, no PNG), then the PNG.
 template <typename T>
-double renderTruecolour(Renderer<T>& renderer, const RenderJob& job) {
+void renderTruecolour(Renderer<T>& renderer, const RenderJob& job, RenderPhases& phases) {
   RgbImage image;
-  double seconds = 0;
   {
     Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
     progress.setEnabled(progress.enabled() && !job.quiet);
-    const auto start = std::chrono::steady_clock::now();
+    const PhaseTimer trace;
     image = renderImage(renderer, &progress);
-    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    trace.addTo(phases.trace);
     progress.finish();
   }
-  io::writePng(job.picture, image);
-  return seconds;
+  const PhaseTimer output;
+  io::writePng(job.picture, image, renderer.threads());
+  output.addTo(phases.output);
 }
 
 // The transport the job names, and where it goes in words; none when only
@@ -99,8 +100,10 @@ std::unique_ptr<ByteSink> openTransport(const RenderJob& job, const devices::Dev
 
 // Renders into the device's driver row by row; the bytes go to the transport
 // and, when a picture is asked for, through the emulator on their way.
+// The source's time goes to phases.quantize, the emulator's picture to phases.output.
 devices::DriverStats renderToDevice(const std::function<void(IndexedSink&)>& source, const RenderJob& job,
-                                    const devices::Device& device, std::string& where) {
+                                    const devices::Device& device, std::string& where, RenderPhases& phases) {
+  const PhaseTimer pipeline;
   int replyFd = -1;
   std::unique_ptr<ByteSink> transport = openTransport(job, device, where, replyFd);
   std::unique_ptr<StreamDecoder> emulator;
@@ -120,44 +123,53 @@ devices::DriverStats renderToDevice(const std::function<void(IndexedSink&)>& sou
   } else {
     source(driver->sink());
   }
+  pipeline.addTo(phases.quantize);
+  const PhaseTimer output;
   tee.close();  // renames the stream file into place, or drains the serial line
   const devices::DriverStats stats = driver->stats();
   raise(job.events, StreamSent{device.name, device.title,
                                 device.line ? std::optional<int>(device.line->baud) : std::nullopt, where, stats});
   if (emulator) {
     emulator->finish();
-    io::writePng(job.picture, emulator->image());
+    io::writePng(job.picture, emulator->image(), static_cast<unsigned>(job.threads));
     const DecodeReport& report = emulator->report();
     if (report.unknownCommands + report.malformed > 0)
       throw Error(ErrorKind::Internal,
                   fmt::format("the emulator found {} unknown and {} malformed commands in our own stream:\n{}",
                               report.unknownCommands, report.malformed, report.summary()));
   }
+  output.addTo(phases.output);
   return stats;
 }
 
 // The truecolour picture once, then the search of app/wire_budget.hpp.
 template <typename T>
 WireSearch renderWithinWireBudget(Renderer<T>& renderer, const RenderJob& job, const devices::Device& device,
-                                  const quantize::PipelineOptions& pipeline, const std::vector<std::string>& added) {
+                                  const quantize::PipelineOptions& pipeline, const std::vector<std::string>& added,
+                                  RenderPhases& phases) {
   RgbImage truecolour;
   {
     Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
     progress.setEnabled(progress.enabled() && !job.quiet);
+    const PhaseTimer trace;
     truecolour = renderImage(renderer, &progress);
+    trace.addTo(phases.trace);
     progress.finish();
   }
+  const PhaseTimer searching;
   WireSearch search = searchWireBudget(truecolour, device, *job.wire, pipeline.quantize, !job.quiet);
   search.settings = added;
+  searching.addTo(phases.quantize);
   raise(job.events, WireChosen{describeWireChoice(search)});
   return search;
 }
 
 // Takes the loaded scene: its node tree is released once the renderer holds
 // its own. `room`: the budget its lattices are rasterized under (null: none).
+// `start`: started when the scene began loading (set-up runs until the renderer is built).
 template <typename T>
-RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, const std::shared_ptr<RasterRoom>& room) {
-  const auto start = std::chrono::steady_clock::now();
+RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, const std::shared_ptr<RasterRoom>& room,
+                        const PhaseTimer& start) {
   quantize::PipelineOptions pipeline = job.pipeline;
   std::optional<devices::Device> device;
   std::vector<std::string> wireAdded;  // profile settings the wire budget turned on
@@ -181,7 +193,7 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
     // one picks them, so a picture never depends on the machine's memory.
     budget = renderBudgetRequest(room->budget, settings.width, settings.height, pipeline,
                                  job.modeChosenByUser || !room->chosen, device ? &*device : nullptr,
-                                 !job.picture.empty());
+                                 job.picture.empty() ? 0u : job.threads > 0 ? unsigned(job.threads) : hardwareThreads());
     budget->histogramChosenByUser = job.histogramChosenByUser || !room->chosen;
     room->leastOutput = leastOutputBytes(*budget);  // before the renderer rasterizes the lattices
   }
@@ -205,18 +217,24 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
   }
 
   RenderResult result;
+  start.addTo(result.phases.setup);
   if (device && job.wire) {
-    WireSearch search = renderWithinWireBudget(renderer, job, *device, pipeline, wireAdded);
+    WireSearch search = renderWithinWireBudget(renderer, job, *device, pipeline, wireAdded, result.phases);
     result.stream = renderToDevice([&](IndexedSink& s) { sendPicture(search.picture, s); }, job, *device,
-                                   result.destination);
+                                   result.destination, result.phases);
     search.picture = {};
     result.wire = std::move(search);
   } else if (device) {
-    result.stream = renderToDevice([&](IndexedSink& s) { quantize::runPipeline(renderer, s, pipeline); }, job,
-                                   *device, result.destination);
+    TimedRowSource rows(renderer, result.phases.trace);
+    result.stream = renderToDevice([&](IndexedSink& s) { quantize::runPipeline(rows, s, pipeline); }, job, *device,
+                                   result.destination, result.phases);
+    result.phases.quantize.wall -= result.phases.trace.wall;  // the pipeline's time less the waits for rows
+    result.phases.quantize.cpu -= result.phases.trace.cpu;
   } else
-    result.traceSeconds = renderTruecolour(renderer, job);
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    renderTruecolour(renderer, job, result.phases);
+  PhaseSeconds whole;
+  start.addTo(whole);
+  result.seconds = whole.wall;
   result.width = renderer.width();
   result.height = renderer.height();
   result.rays = renderer.raysTraced();
@@ -269,6 +287,7 @@ void checkRenderJob(const RenderJob& job) {
 }
 
 RenderResult renderScene(const RenderJob& job) {
+  const PhaseTimer start;
   checkRenderJob(job);
   if (job.memoryBudget) shareOneAllocatorArena();  // before the rasterizer's threads
   // Scenes may hold [[lattices]]; their tables are built when the renderer
@@ -291,7 +310,7 @@ RenderResult renderScene(const RenderJob& job) {
   }
   lht::SceneWithLattices loaded = lht::loadSceneWithLattices(job.scene, tables);
   RenderResult result = withArithmetic(job.arithmetic, [&](auto type) {
-    return renderWith<typename decltype(type)::type>(std::move(loaded), job, room);
+    return renderWith<typename decltype(type)::type>(std::move(loaded), job, room, start);
   });
   if (tables.stats) raise(job.events, LookupsCounted{tables.stats->summaries()});
   return result;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "app/render_events.hpp"
+#include "app/render_phases.hpp"
 #include "app/wire_budget.hpp"
 #include "devices/device.hpp"
 #include "io/serial_options.hpp"
@@ -59,8 +60,8 @@ struct RenderJob {
 struct RenderResult {
   int width = 0;
   int height = 0;
-  double seconds = 0;       // scene set-up (tree, lattice tables), trace, output
-  double traceSeconds = 0;  // a truecolour render's trace alone (every pixel's rays); 0 for a device
+  double seconds = 0;    // scene set-up (tree, lattice tables), trace, output
+  RenderPhases phases;  // those seconds phase by phase (app/render_phases.hpp)
   std::uint64_t rays = 0;
   unsigned threads = 0;
   std::optional<devices::DriverStats> stream;  // a device's stream

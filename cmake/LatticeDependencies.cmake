@@ -53,6 +53,7 @@ target_compile_definitions(lattice_toml_headers INTERFACE TOML_HEADER_ONLY=0)
 
 add_library(lattice_fmt INTERFACE)
 add_library(lattice_toml INTERFACE)
+# lattice_png carries zlib too: io/png_encoder.cpp deflates with it directly.
 add_library(lattice_png INTERFACE)
 target_link_libraries(lattice_fmt INTERFACE lattice_fmt_runtime)
 target_link_libraries(lattice_toml INTERFACE lattice_toml_runtime)

@@ -1,64 +1,47 @@
+// Writing PNG files: a picture handed to the banded encoder, the file
+// written atomically.
 #include "io/png.hpp"
 
 #include <fmt/format.h>
-#include <png.h>
-
-#include <cstring>
 
 #include "foundation/system/atomic_file.hpp"
 #include "foundation/error.hpp"
+#include "io/png_encoder.hpp"
 
 namespace lattice::io {
 namespace {
 
-void encodeAndWrite(const std::filesystem::path& path, png_image& image, const void* pixels,
-                    const void* colormap) {
-  png_alloc_size_t size = 0;
-  if (!png_image_write_to_memory(&image, nullptr, &size, 0, pixels, 0, colormap))
-    throw Error(ErrorKind::Output, fmt::format("{}: PNG encoding failed: {}", path.string(), image.message));
-  std::vector<std::uint8_t> buffer(size);
-  if (!png_image_write_to_memory(&image, buffer.data(), &size, 0, pixels, 0, colormap))
-    throw Error(ErrorKind::Output, fmt::format("{}: PNG encoding failed: {}", path.string(), image.message));
-  buffer.resize(size);
-  writeFileAtomically(path, buffer);
+void writeEncoded(const std::filesystem::path& path, const PngPixels& pixels, const PngEncoding& encoding) {
+  AtomicFile file(path);
+  encodePng(pixels, encoding, file);
+  file.close();
 }
 
 }  // namespace
 
-void writePng(const std::filesystem::path& path, const RgbImage& img) {
+void writePng(const std::filesystem::path& path, const RgbImage& img, unsigned threads) {
   if (img.width <= 0 || img.height <= 0)
     throw Error(ErrorKind::Output, fmt::format("{}: cannot write an empty image", path.string()));
-  png_image image;
-  std::memset(&image, 0, sizeof image);
-  image.version = PNG_IMAGE_VERSION;
-  image.width = static_cast<png_uint_32>(img.width);
-  image.height = static_cast<png_uint_32>(img.height);
-  image.format = PNG_FORMAT_RGB;
-  encodeAndWrite(path, image, img.rgb.data(), nullptr);
+  PngEncoding encoding;
+  encoding.threads = threads;
+  writeEncoded(path, {img.width, img.height, img.rgb, {}}, encoding);
 }
 
-void writePng(const std::filesystem::path& path, const IndexedImage& img) {
+void writePng(const std::filesystem::path& path, const IndexedImage& img, unsigned threads) {
   if (img.width <= 0 || img.height <= 0)
     throw Error(ErrorKind::Output, fmt::format("{}: cannot write an empty image", path.string()));
   if (img.colormap.empty() || img.colormap.size() > 256) {
-    writePng(path, toRgbImage(img));
+    writePng(path, toRgbImage(img), threads);
     return;
   }
-  png_image image;
-  std::memset(&image, 0, sizeof image);
-  image.version = PNG_IMAGE_VERSION;
-  image.width = static_cast<png_uint_32>(img.width);
-  image.height = static_cast<png_uint_32>(img.height);
-  image.format = PNG_FORMAT_RGB_COLORMAP;
-  image.colormap_entries = static_cast<png_uint_32>(img.colormap.size());
-  std::vector<std::uint8_t> cmap;
-  for (const Rgb8& c : img.colormap) cmap.insert(cmap.end(), {c.r, c.g, c.b});
-  // Indices beyond the map would make libpng fail; clamp them to entry 0 (a
-  // decoder's framebuffer may hold an index the stream never defined).
+  // Indices beyond the map would make a PNG no decoder accepts; clamp them to
+  // entry 0 (a decoder's framebuffer may hold an index the stream never defined).
   std::vector<std::uint8_t> pixels(img.pixels.begin(), img.pixels.end());
   for (auto& p : pixels)
     if (p >= img.colormap.size()) p = 0;
-  encodeAndWrite(path, image, pixels.data(), cmap.data());
+  PngEncoding encoding;  // no filter, as W3C PNG 12.8 advises for palette pictures
+  encoding.threads = threads;
+  writeEncoded(path, {img.width, img.height, pixels, img.colormap}, encoding);
 }
 
 }  // namespace lattice::io

@@ -1,8 +1,10 @@
 #pragma once
-// PNG files through libpng. Writes (simplified API) are atomic (see
-// atomic_file.hpp). Reads (io/png_reader.cpp) stream the file, check the
-// signature and the header's size against kMaxPngPixels before allocating,
-// and return the samples as written: no gamma, sRGB or ICC conversion.
+// PNG files. Writes go through io/png_encoder.hpp (bands of rows deflated on
+// `threads` threads, 0: every core; the bytes do not depend on the count) and
+// are atomic (see atomic_file.hpp). Reads (io/png_reader.cpp, libpng) stream
+// the file, check the signature and the header's size against kMaxPngPixels
+// before allocating, and return the samples as written: no gamma, sRGB or
+// ICC conversion.
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -15,9 +17,9 @@
 
 namespace lattice::io {
 
-void writePng(const std::filesystem::path& path, const RgbImage& image);
+void writePng(const std::filesystem::path& path, const RgbImage& image, unsigned threads = 0);
 // Writes a palette PNG (colour type 3) when the map has <= 256 entries.
-void writePng(const std::filesystem::path& path, const IndexedImage& image);
+void writePng(const std::filesystem::path& path, const IndexedImage& image, unsigned threads = 0);
 // The largest picture a PNG read accepts (docs/limits.md): 2^26 pixels,
 // e.g. 8192 x 8192, 192 MiB as 8-bit RGB. Larger headers are refused (exit 3)
 // before any pixel memory is allocated.

@@ -9,7 +9,10 @@
 # adds the peers the benchmarks compare against (POV-Ray,
 # Embree, pngquant, GNU time, and libsixel-dev: libsixel's headers and library,
 # for bench/sixel_encoder_bench, which times libsixel's sixel_encode beside our
-# sixel encoder in one process; without it that benchmark is not built);
+# sixel encoder in one process; without it that benchmark is not built; and
+# libspng-dev: libspng, a contender of bench/png_encoder_bench, which chose
+# the PNG encoder io/png_encoder.hpp builds on zlib; without it that
+# benchmark compares libpng and ours only);
 # `--fuzz` adds clang 14, its runtime libraries
 # (libFuzzer, ASan, UBSan: libclang-rt-14-dev) and llvm-14 (llvm-symbolizer),
 # for scripts/fuzz.sh and the sanitizer build (scripts/test.sh asks for it);
@@ -22,12 +25,12 @@
 # empty cache; docs/testing.md).
 set -euo pipefail
 
-packages=(cmake ninja-build g++ make pkg-config git catch2 libglm-dev libpng-dev libusb-1.0-0-dev
+packages=(cmake ninja-build g++ make pkg-config git catch2 libglm-dev libpng-dev zlib1g-dev libusb-1.0-0-dev
           libtomlplusplus-dev libcli11-dev libfmt-dev gnuplot-nox)
 for option in "$@"; do
   case $option in
     --terminals) packages+=(libsixel-bin xterm xvfb x11-apps) ;;
-    --bench) packages+=(povray libembree-dev pngquant time python3 libsixel-dev) ;;
+    --bench) packages+=(povray libembree-dev pngquant time python3 libsixel-dev libspng-dev) ;;
     --fuzz) packages+=(clang-14 libclang-rt-14-dev llvm-14) ;;
     --firmware) packages+=(gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm ccache) ;;
     *) echo "setup.sh: unknown option $option (known: --terminals, --bench, --fuzz, --firmware)" >&2; exit 2 ;;

@@ -213,6 +213,19 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
 }
 
 // What the render says on stderr as it goes (app/render_events.hpp).
+// Each phase's wall time in parentheses of its own, so a script greps one,
+// e.g. "(trace S s)" (bench/peers.sh, bench/scaling.sh), then their CPU
+// times and the process's since it started; quantize only for a device.
+std::string phaseTimes(const RenderPhases& p) {
+  const bool device = p.quantize.wall > 0;
+  return fmt::format(" (set-up {:.4f} s) (trace {:.4f} s){} (output {:.4f} s) (CPU set-up {:.4f} s, trace {:.4f} s{}, "
+                     "output {:.4f} s, process {:.4f} s)",
+                     p.setup.wall, p.trace.wall,
+                     device ? fmt::format(" (quantize {:.4f} s)", p.quantize.wall) : std::string(), p.output.wall,
+                     p.setup.cpu, p.trace.cpu, device ? fmt::format(", quantize {:.4f} s", p.quantize.cpu) : std::string(),
+                     p.output.cpu, PhaseTimer::cpuNow());
+}
+
 void sayRenderEvent(const RenderEvent& event) {
   std::visit(
       [](const auto& e) {
@@ -270,10 +283,8 @@ void addRender(CLI::App& root) {
     job.events = sayRenderEvent;
     const RenderResult r = renderScene(job);
     fmt::print(stderr, "lattice render: {}: {}x{}, {:.2f} s{}, {} rays ({} arithmetic, {} thread{}){}\n", job.scene,
-               r.width, r.height, r.seconds,
-               r.traceSeconds > 0 ? fmt::format(" (trace {:.4f} s)", r.traceSeconds) : std::string(), r.rays,
-               job.arithmetic, r.threads, r.threads == 1 ? "" : "s",
-               job.picture.empty() ? "" : fmt::format(", picture {}", job.picture));
+               r.width, r.height, r.seconds, phaseTimes(r.phases), r.rays, job.arithmetic, r.threads,
+               r.threads == 1 ? "" : "s", job.picture.empty() ? "" : fmt::format(", picture {}", job.picture));
   });
 }
 

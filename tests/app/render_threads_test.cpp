@@ -5,7 +5,8 @@
 // its own order (passes: twice from the top; sample: every Nth row first),
 // on a plain scene, a lattice scene and a scatter traced in full (instance
 // nodes), in double and float. The PNG of the emulated screen is compared
-// too.
+// too, and a truecolour PNG (io/png_encoder.hpp deflates its bands on every
+// thread) must be the same file whatever the count.
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
@@ -72,4 +73,30 @@ TEST_CASE("render threads: the device stream is the same for 1 to 4 threads in e
       }
     }
   }
+}
+
+TEST_CASE("render threads: a truecolour PNG is the same file for 1 to 4 threads, and its phases are timed") {
+  testing::TempDir dir("render-threads-png");
+  app::RenderJob job;
+  job.scene = testing::sourcePath("scenes/sphere-hole.toml").string();
+  job.width = 300;
+  job.height = 701;  // 900 bytes a row: three bands of the PNG encoder, the last one short
+  job.quiet = true;
+  std::string first;
+  for (int threads : {1, 2, 3, 4}) {
+    INFO(threads << " threads");
+    job.threads = threads;
+    job.picture = dir / fmt::format("t{}.png", threads);
+    const app::RenderResult r = app::renderScene(job);
+    CHECK(r.phases.setup.wall > 0);
+    CHECK(r.phases.trace.wall > 0);
+    CHECK(r.phases.trace.cpu > 0);
+    CHECK(r.phases.quantize.wall == 0);  // no quantizer on the truecolour path
+    CHECK(r.phases.output.wall > 0);
+    CHECK(r.phases.setup.wall + r.phases.trace.wall + r.phases.output.wall <= r.seconds);
+    const std::string picture = slurp(job.picture);
+    if (first.empty()) first = picture;
+    CHECK(picture == first);
+  }
+  REQUIRE(first.size() > 1000);
 }
