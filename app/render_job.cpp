@@ -12,6 +12,7 @@
 
 #include "app/output_check.hpp"
 #include "app/render_budget.hpp"
+#include "app/wire_size.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/arithmetics.hpp"
 #include "foundation/system/atomic_file.hpp"
@@ -136,19 +137,39 @@ devices::DriverStats renderToDevice(const std::function<void(IndexedSink&)>& sou
   return stats;
 }
 
-// The truecolour picture once, then the search of app/wire_budget.hpp.
+// The truecolour picture once, then the search of app/wire_budget.hpp; with
+// the size free (no --width/--height), the size search of
+// app/wire_size.hpp, which renders each size it tries from `scene`.
 template <typename T>
-WireSearch renderWithinWireBudget(Renderer<T>& renderer, const RenderJob& job, const devices::Device& device,
+WireSearch renderWithinWireBudget(Renderer<T>& renderer, const SceneDesc& scene, const RenderSettings& settings,
+                                  const RenderJob& job, const devices::Device& device,
                                   const quantize::PipelineOptions& pipeline, const std::vector<std::string>& added) {
-  RgbImage truecolour;
-  {
-    Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
-    progress.setEnabled(progress.enabled() && !job.quiet);
-    truecolour = renderImage(renderer, &progress);
-    progress.finish();
+  WireSearch search;
+  if (job.width == 0 && job.height == 0) {
+    const SizeArea area = sizeAreaFor(scene.options.width, scene.options.height, device.width, device.height);
+    const RenderAt renderAt = [&](int width, int height) {
+      if (width == renderer.width() && height == renderer.height()) return renderImage(renderer);
+      RenderSettings at = settings;
+      at.width = width, at.height = height;
+      Renderer<T> sized(scene, at);
+      return renderImage(sized);
+    };
+    WireSizeSearch sized = searchWireSize(renderAt, area, job.wire->quality, device, *job.wire, pipeline.quantize,
+                                          !job.quiet);
+    search = std::move(sized.search);
+    search.settings = added;
+    raise(job.events, WireChosen{describeWireSize(sized, area)});
+  } else {
+    RgbImage truecolour;
+    {
+      Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
+      progress.setEnabled(progress.enabled() && !job.quiet);
+      truecolour = renderImage(renderer, &progress);
+      progress.finish();
+    }
+    search = searchWireBudget(truecolour, device, *job.wire, pipeline.quantize, !job.quiet);
+    search.settings = added;
   }
-  WireSearch search = searchWireBudget(truecolour, device, *job.wire, pipeline.quantize, !job.quiet);
-  search.settings = added;
   raise(job.events, WireChosen{describeWireChoice(search)});
   return search;
 }
@@ -193,9 +214,13 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
   Renderer<T> renderer(bound ? bound->scene : loaded.scene, settings);
   // The renderer holds its own tree now; the scene's node descriptions (a
   // scatter's are 262 B an instance, and a budget's copy doubles them) go
-  // before the output's buffers come (docs/memory.md).
-  loaded.scene.root = NodeDesc{};
-  if (bound) bound->scene.root = NodeDesc{};
+  // before the output's buffers come (docs/memory.md), unless a wire
+  // budget's size search renders the scene again at other sizes.
+  const bool sizeSearch = device && job.wire && job.width == 0 && job.height == 0;
+  if (!sizeSearch) {
+    loaded.scene.root = NodeDesc{};
+    if (bound) bound->scene.root = NodeDesc{};
+  }
   if (job.memoryBudget) {
     const MemoryPlan plan = planBuiltRender(*budget, job.events);
     pipeline.mode = plan.mode;
@@ -206,7 +231,8 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
 
   RenderResult result;
   if (device && job.wire) {
-    WireSearch search = renderWithinWireBudget(renderer, job, *device, pipeline, wireAdded);
+    WireSearch search = renderWithinWireBudget(renderer, bound ? bound->scene : loaded.scene, settings, job, *device,
+                                               pipeline, wireAdded);
     result.stream = renderToDevice([&](IndexedSink& s) { sendPicture(search.picture, s); }, job, *device,
                                    result.destination);
     search.picture = {};
@@ -217,8 +243,8 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
   } else
     result.traceSeconds = renderTruecolour(renderer, job);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.width = renderer.width();
-  result.height = renderer.height();
+  result.width = result.wire ? result.wire->choice.width : renderer.width();
+  result.height = result.wire ? result.wire->choice.height : renderer.height();
   result.rays = renderer.raysTraced();
   result.threads = renderer.threads();
   if (job.memoryBudget) checkPeakAgainst(budget->budget, job.events);
