@@ -297,6 +297,10 @@ void addRender(CLI::App& root) {
       "  lattice render scenes/torus-floor.toml -o torus.png\n"
       "  lattice render scenes/fuzzy-sphere-1000.toml --device tek4125 --stream fuzzy.tek -o fuzzy-tek.png\n"
       "  lattice render scenes/sphere-hole.toml --device tek4027 --port auto --baud 4800\n"
+      "  lattice render scenes/fuzzy-sphere-1000.toml --device tek4125 --port virtual:tek4125 --baud 9600 "
+      "--wire-seconds 60 -o screen.png\n"
+      "    (the best picture a minute at 9600 baud allows, its size chosen; the stream recorded in "
+      "screen.tek4125)\n"
       "  lattice render scenes/thistle.toml --device apollo --set profile=dn660-4 -o thistle.png\n"
       "  lattice render scenes/fuzzy-sphere-1000.toml --device sixel --set registers=256   (in xterm -ti vt340)");
   auto flags = std::make_shared<RenderFlags>();
