@@ -47,7 +47,8 @@ RenderSettings renderSettings(const RenderJob& job, const SceneDesc& scene, int 
                               s.width, s.height, deviceWidth, deviceHeight));
     const double scale = std::min(double(deviceWidth) / s.width, double(deviceHeight) / s.height);
     const int w = std::max(1, int(s.width * scale)), h = std::max(1, int(s.height * scale));
-    raise(job.events, SizeFitted{s.width, s.height, deviceWidth, deviceHeight, w, h});
+    // A wire budget's size search says the size it chose instead (app/wire_size.hpp).
+    if (!job.wire) raise(job.events, SizeFitted{s.width, s.height, deviceWidth, deviceHeight, w, h});
     s.width = w;
     s.height = h;
   }

@@ -91,6 +91,12 @@ WireSizeSearch searchWireSize(const RenderAt& renderAt, const SizeArea& area, do
   // kSizeStep x kSizeStep a probe, until one side of the floor is found.
   while (!(good && bad) && !(good && *good >= 1.0) && !(bad && *bad <= smallest)) {
     const double from = good ? *good : *bad;
+    // A first size that reaches the floor: the whole area next, which a
+    // loose budget reaches at once and a tight one brackets.
+    if (good && probes.size() == 1) {
+      record(1.0);
+      continue;
+    }
     double next = aim().value_or(good ? from * kSizeStep : from / kSizeStep);
     next = good ? std::clamp(next, from * kMinStep, from * kSizeStep * kSizeStep)
                 : std::clamp(next, from / kSizeStep / kSizeStep, from / kMinStep);

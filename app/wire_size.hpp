@@ -10,7 +10,8 @@
 // the best PSNR within a fixed budget falls as the picture grows, close to
 // linearly in the logarithm of the scale (Plate 6 and sphere-hole). So the
 // search aims each size at the floor along the line through the two sizes
-// tried nearest it (a secant; kSizeStep before there are two), first to
+// tried nearest it (a secant; kSizeStep before there are two, and the
+// whole area right after a first size that reaches the floor), first to
 // bracket the largest size that reaches the floor, then inside the bracket
 // (its geometric middle when the aim falls outside) until the bracket's ends
 // are within kSizeTolerance of each other. Each size tried is rendered at that size

@@ -38,7 +38,7 @@ SizeRun searchSizes(const char* scene, int areaWidth, int areaHeight, std::uint6
 
 }  // namespace
 
-TEST_CASE("wire size: the area is the largest picture at the scene's aspect; the scene's own size is tried first") {
+TEST_CASE("wire size: the area is the largest picture at the scene's aspect, and the scene's own size is tried first") {
   const app::SizeArea wide = app::sizeAreaFor(640, 480, 1280, 1024);
   CHECK(wide.maxWidth == 1280);
   CHECK(wide.maxHeight == 960);
