@@ -308,7 +308,9 @@ WireSearch searchWireBudget(const RgbImage& truecolour, const devices::Device& d
   std::uint64_t limit = budget.bytes.value_or(UINT64_MAX);
   if (budget.seconds)
     limit = std::min(limit, static_cast<std::uint64_t>(*budget.seconds * line.baud / line.bitsPerCharacter()));
-  Progress bar("wire budget", kPaletteSizes.size() * kDithers.size() * 6, "encodings");  // an estimate
+  // An estimate of the encodings: about six settings on the proxy and three whole, five each.
+  const std::uint64_t expected = budget.exhaustive ? kPaletteSizes.size() * kDithers.size() * 5 : 45;
+  Progress bar("wire budget", expected, "encodings");
   bar.setEnabled(bar.enabled() && progress);
   const auto start = std::chrono::steady_clock::now();
   Searcher searcher(device, quantizer, limit, line, bar, !budget.exhaustive);
