@@ -12,6 +12,7 @@
 
 #include "app/output_check.hpp"
 #include "app/render_budget.hpp"
+#include "app/wire_size.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/arithmetics.hpp"
 #include "foundation/system/atomic_file.hpp"
@@ -47,7 +48,8 @@ RenderSettings renderSettings(const RenderJob& job, const SceneDesc& scene, int 
                               s.width, s.height, deviceWidth, deviceHeight));
     const double scale = std::min(double(deviceWidth) / s.width, double(deviceHeight) / s.height);
     const int w = std::max(1, int(s.width * scale)), h = std::max(1, int(s.height * scale));
-    raise(job.events, SizeFitted{s.width, s.height, deviceWidth, deviceHeight, w, h});
+    // A wire budget's size search says the size it chose instead (app/wire_size.hpp).
+    if (!job.wire) raise(job.events, SizeFitted{s.width, s.height, deviceWidth, deviceHeight, w, h});
     s.width = w;
     s.height = h;
   }
@@ -142,24 +144,54 @@ devices::DriverStats renderToDevice(const std::function<void(IndexedSink&)>& sou
   return stats;
 }
 
-// The truecolour picture once, then the search of app/wire_budget.hpp.
+// The truecolour picture once, then the search of app/wire_budget.hpp; with
+// the size free (no --width/--height), the size search of
+// app/wire_size.hpp, which renders each size it tries from `scene`.
 template <typename T>
-WireSearch renderWithinWireBudget(Renderer<T>& renderer, const RenderJob& job, const devices::Device& device,
+WireSearch renderWithinWireBudget(Renderer<T>& renderer, const SceneDesc& scene, const RenderSettings& settings,
+                                  const RenderJob& job, const devices::Device& device,
                                   const quantize::PipelineOptions& pipeline, const std::vector<std::string>& added,
                                   RenderPhases& phases) {
-  RgbImage truecolour;
-  {
-    Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
-    progress.setEnabled(progress.enabled() && !job.quiet);
-    const PhaseTimer trace;
-    truecolour = renderImage(renderer, &progress);
-    trace.addTo(phases.trace);
-    progress.finish();
+  WireSearch search;
+  const PhaseTimer whole;
+  if (job.width == 0 && job.height == 0) {
+    const SizeArea area = sizeAreaFor(scene.options.width, scene.options.height, device.width, device.height);
+    const RenderAt renderAt = [&](int width, int height) {
+      const PhaseTimer trace;  // each size's render is trace; the rest of the search, quantize
+      RgbImage image;
+      if (width == renderer.width() && height == renderer.height()) {
+        image = renderImage(renderer);
+      } else {
+        RenderSettings at = settings;
+        at.width = width, at.height = height;
+        Renderer<T> sized(scene, at);
+        image = renderImage(sized);
+      }
+      trace.addTo(phases.trace);
+      return image;
+    };
+    WireSizeSearch sized = searchWireSize(renderAt, area, job.wire->quality, device, *job.wire, pipeline.quantize,
+                                          !job.quiet);
+    search = std::move(sized.search);
+    search.settings = added;
+    raise(job.events, WireChosen{describeWireSize(sized, area)});
+  } else {
+    RgbImage truecolour;
+    {
+      Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
+      progress.setEnabled(progress.enabled() && !job.quiet);
+      const PhaseTimer trace;
+      truecolour = renderImage(renderer, &progress);
+      trace.addTo(phases.trace);
+      progress.finish();
+    }
+    search = searchWireBudget(truecolour, device, *job.wire, pipeline.quantize, !job.quiet);
+    search.settings = added;
   }
-  const PhaseTimer searching;
-  WireSearch search = searchWireBudget(truecolour, device, *job.wire, pipeline.quantize, !job.quiet);
-  search.settings = added;
-  searching.addTo(phases.quantize);
+  PhaseSeconds searching;  // the whole, less the renders
+  whole.addTo(searching);
+  phases.quantize.wall += searching.wall - phases.trace.wall;
+  phases.quantize.cpu += searching.cpu - phases.trace.cpu;
   raise(job.events, WireChosen{describeWireChoice(search)});
   return search;
 }
@@ -205,9 +237,13 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
   Renderer<T> renderer(bound ? bound->scene : loaded.scene, settings);
   // The renderer holds its own tree now; the scene's node descriptions (a
   // scatter's are 262 B an instance, and a budget's copy doubles them) go
-  // before the output's buffers come (docs/memory.md).
-  loaded.scene.root = NodeDesc{};
-  if (bound) bound->scene.root = NodeDesc{};
+  // before the output's buffers come (docs/memory.md), unless a wire
+  // budget's size search renders the scene again at other sizes.
+  const bool sizeSearch = device && job.wire && job.width == 0 && job.height == 0;
+  if (!sizeSearch) {
+    loaded.scene.root = NodeDesc{};
+    if (bound) bound->scene.root = NodeDesc{};
+  }
   if (job.memoryBudget) {
     const MemoryPlan plan = planBuiltRender(*budget, job.events);
     pipeline.mode = plan.mode;
@@ -219,7 +255,8 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
   RenderResult result;
   start.addTo(result.phases.setup);
   if (device && job.wire) {
-    WireSearch search = renderWithinWireBudget(renderer, job, *device, pipeline, wireAdded, result.phases);
+    WireSearch search = renderWithinWireBudget(renderer, bound ? bound->scene : loaded.scene, settings, job, *device,
+                                               pipeline, wireAdded, result.phases);
     result.stream = renderToDevice([&](IndexedSink& s) { sendPicture(search.picture, s); }, job, *device,
                                    result.destination, result.phases);
     search.picture = {};
@@ -235,8 +272,8 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
   PhaseSeconds whole;
   start.addTo(whole);
   result.seconds = whole.wall;
-  result.width = renderer.width();
-  result.height = renderer.height();
+  result.width = result.wire ? result.wire->choice.width : renderer.width();
+  result.height = result.wire ? result.wire->choice.height : renderer.height();
   result.rays = renderer.raysTraced();
   result.threads = renderer.threads();
   if (job.memoryBudget) checkPeakAgainst(budget->budget, job.events);

@@ -1,10 +1,13 @@
 #include "app/wire_budget.hpp"
 
+#include "app/wire_lambda.hpp"
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <unordered_map>
 #include <vector>
@@ -23,11 +26,10 @@ namespace {
 
 constexpr std::array<int, 12> kPaletteSizes = {256, 128, 64, 48, 32, 24, 16, 12, 8, 6, 4, 2};
 constexpr std::array<quantize::Dither, 2> kDithers = {quantize::Dither::None, quantize::Dither::FloydSteinberg};
-constexpr int kLadderSteps = 16;  // lambda = 50 * 2^k, k = 0..15: up to 1.6M squared error a byte
-constexpr int kRefineSteps = 3;   // then bisection between rungs to 2^(1/8) (9 %) of lambda
 constexpr int kShrinkSteps = 8;
-
-double ladderLambda(double k) { return 50.0 * std::exp2(k); }
+constexpr int kProxyRowStep = 4;        // the proxy: every 4th row, a quarter of the work
+constexpr int kWalkStartColours = 64;   // where the walk over palette sizes starts
+constexpr std::size_t kFullSettings = 3;  // settings searched at full size, best proxy scores first
 
 // The --dither spelling, so the settings printed can be typed back.
 std::string_view ditherName(quantize::Dither d) { return nameOfValue(quantize::kDitherNames, d, "?"); }
@@ -51,34 +53,89 @@ RgbImage shrink(const RgbImage& in, int width, int height) {
   return out;
 }
 
+// Every step-th row of a picture (`channels` bytes a pixel): the proxy a
+// setting is ranked on.
+std::vector<std::uint8_t> everyNthRow(const std::vector<std::uint8_t>& in, int width, int height, int step,
+                                      std::size_t channels) {
+  const std::size_t row = std::size_t(width) * channels;
+  std::vector<std::uint8_t> out;
+  for (int y = 0; y < height; y += step)
+    out.insert(out.end(), in.begin() + long(std::size_t(y) * row), in.begin() + long(std::size_t(y + 1) * row));
+  return out;
+}
+int proxyHeight(int height) { return (height + kProxyRowStep - 1) / kProxyRowStep; }
+
+// One palette size and dithering, quantized, with what is known of it.
+struct Setting {
+  int colors = 0;
+  quantize::Dither dither = quantize::Dither::None;
+  IndexedImage lossless;
+  std::uint64_t losslessBytes = 0;
+  double losslessPsnr = 0;
+  double score = -1e300;  // the proxy's PSNR at the budget (higher is better); below 0: nothing fitted
+  double lambda = 0;      // the proxy's fitting lambda: where the full search starts
+};
+
 class Searcher {
  public:
   Searcher(const devices::Device& device, const quantize::QuantizeOptions& quantizer, std::uint64_t limit,
-           LineFormat line, Progress& progress, bool prune)
-      : device_(device), quantizer_(quantizer), limit_(limit), line_(line), progress_(progress), prune_(prune) {
+           LineFormat line, Progress& progress, bool coarseToFine)
+      : device_(device), quantizer_(quantizer), limit_(limit), line_(line), progress_(progress),
+        coarseToFine_(coarseToFine) {
     CountingSink none;
     maxColors_ = device_.makeDriver(none)->sink().maxColors();
+    for (int colors : kPaletteSizes)
+      if (colors <= maxColors_) sizes_.push_back(colors);
   }
 
-  int encodings = 0;
+  int encodings = 0, proxyEncodings = 0;
 
   // Searches one picture size; the best fitting choice so far is kept across calls.
   void search(const RgbImage& reference) {
-    for (int colors : kPaletteSizes) {
-      if (colors > maxColors_) continue;
+    if (!coarseToFine_) {
+      for (int colors : sizes_)
+        for (quantize::Dither dither : kDithers) {
+          Setting s = prepare(reference, colors, dither);
+          evaluate(reference, s, lastLambda_);
+        }
+      return;
+    }
+    // Coarse: rank settings on the proxy, walking palette sizes from the
+    // middle towards the better neighbour while the score rises.
+    std::vector<Setting> ranked;
+    auto proxied = [&](std::size_t i) {
+      double score = -1e300;
       for (quantize::Dither dither : kDithers) {
-        IndexedImage lossless = quantize(reference, colors, dither);
-        // No picture in this palette, dithered or smoothed by runs, comes nearer
-        // the truecolour one than the bound: if that is no better than a fitting
-        // choice already found, nothing of this setting can win.
-        if (prune_ && fits() && paletteBound(reference, lossless.colormap) <= best_->psnr) continue;
-        const double psnr = io::compareRgb(reference, toRgbImage(lossless)).psnr;
-        const std::uint64_t bytes = encode(lossless);
-        WireChoice c{colors, dither, 0, reference.width, reference.height, bytes, 0, psnr, 0, bytes <= limit_};
-        consider(c, lossless, reference);
-        if (c.fits || !device_.runCost) continue;
-        searchLambda(lossless, reference, c);
+        Setting s = prepare(reference, sizes_[i], dither);
+        rankOnProxy(reference, s);
+        score = std::max(score, s.score);
+        ranked.push_back(std::move(s));
       }
+      return score;
+    };
+    std::size_t start = 0;
+    while (start + 1 < sizes_.size() && sizes_[start] > kWalkStartColours) ++start;
+    const double here = proxied(start);
+    const double up = start > 0 ? proxied(start - 1) : -1e300;
+    const double down = start + 1 < sizes_.size() ? proxied(start + 1) : -1e300;
+    if (up > here || down > here) {
+      const bool more = up >= down;  // towards more colours
+      double best = std::max(up, down);
+      for (std::size_t i = more ? start - 1 : start + 1; more ? i > 0 : i + 1 < sizes_.size();) {
+        i = more ? i - 1 : i + 1;
+        const double score = proxied(i);
+        if (score <= best) break;
+        best = score;
+      }
+    }
+    // Fine: the best few settings at full size, each starting at its proxy's lambda.
+    std::stable_sort(ranked.begin(), ranked.end(), [](const Setting& a, const Setting& b) { return a.score > b.score; });
+    for (std::size_t i = 0; i < ranked.size() && i < kFullSettings; ++i) {
+      Setting& s = ranked[i];
+      // No picture in this palette comes nearer the truecolour one than each
+      // pixel at its nearest entry: no better than a fitting choice, skip it.
+      if (fits() && paletteBound(reference, s.lossless.colormap) <= best_->psnr) continue;
+      evaluate(reference, s, s.lambda > 0 ? s.lambda : lastLambda_);
     }
   }
 
@@ -95,10 +152,69 @@ class Searcher {
     s.limit = limit;
     s.baud = line_.baud;
     s.encodings = encodings;
+    s.proxyEncodings = proxyEncodings;
     return s;
   }
 
  private:
+  Setting prepare(const RgbImage& reference, int colors, quantize::Dither dither) {
+    Setting s;
+    s.colors = colors;
+    s.dither = dither;
+    s.lossless = quantize(reference, colors, dither);
+    s.losslessBytes = encode(s.lossless);
+    s.losslessPsnr = io::compareRgb(reference, toRgbImage(s.lossless)).psnr;
+    return s;
+  }
+
+  // The setting's score on every kProxyRowStep-th row, against the limit
+  // scaled by the lossless streams' ratio (whole picture to proxy).
+  void rankOnProxy(const RgbImage& reference, Setting& s) {
+    if (s.losslessBytes <= limit_ || !device_.runCost) {  // exact without a proxy
+      s.score = s.losslessBytes <= limit_ ? s.losslessPsnr : -double(s.losslessBytes);
+      return;
+    }
+    IndexedImage lossless(s.lossless.width, proxyHeight(s.lossless.height), 0);
+    lossless.colormap = s.lossless.colormap;
+    lossless.pixels = everyNthRow(s.lossless.pixels, s.lossless.width, s.lossless.height, kProxyRowStep, 1);
+    RgbImage truth(reference.width, proxyHeight(reference.height));
+    truth.rgb = everyNthRow(reference.rgb, reference.width, reference.height, kProxyRowStep, 3);
+    const double ratio = double(s.losslessBytes) / double(std::max<std::uint64_t>(encode(lossless, true), 1));
+    const quantize::RunCost cost = device_.runCost(s.lossless);
+    const LambdaFit fit = fitLambda(
+        [&](double lambda, IndexedImage& out) {
+          out = lossless;
+          quantize::rateDistortionImage(out, cost, lambda, truth);
+          return encode(out, true);
+        },
+        std::uint64_t(double(limit_) / ratio), lastLambda_);
+    s.lambda = fit.lambda;
+    s.score = fit.fits ? io::compareRgb(truth, toRgbImage(fit.picture)).psnr : -double(fit.bytes) * ratio;
+    if (fit.fits) lastLambda_ = fit.lambda;
+  }
+
+  // The setting at full size: lossless if it fits, else the smallest fitting lambda.
+  void evaluate(const RgbImage& reference, const Setting& s, double startLambda) {
+    WireChoice c{s.colors, s.dither, 0, reference.width, reference.height, s.losslessBytes, 0, s.losslessPsnr, 0,
+                 s.losslessBytes <= limit_};
+    consider(c, s.lossless, reference);
+    if (c.fits || !device_.runCost) return;
+    const quantize::RunCost cost = device_.runCost(s.lossless);
+    LambdaFit fit = fitLambda(
+        [&](double lambda, IndexedImage& out) {
+          out = s.lossless;
+          quantize::rateDistortionImage(out, cost, lambda, reference);
+          return encode(out);
+        },
+        limit_, startLambda);
+    if (fit.fits) lastLambda_ = fit.lambda;
+    c.lambda = fit.lambda;
+    c.bytes = fit.bytes;
+    c.psnr = io::compareRgb(reference, toRgbImage(fit.picture)).psnr;
+    c.fits = fit.fits;
+    consider(c, fit.picture, reference);
+  }
+
   IndexedImage quantize(const RgbImage& reference, int colors, quantize::Dither dither) {
     RgbImageSource source(reference);
     IndexedImageSink sink(maxColors_);
@@ -113,10 +229,8 @@ class Searcher {
   }
 
   // The PSNR of the palette's best picture, each pixel at its nearest entry
-  // (squared 8-bit RGB error, as the PSNR is measured). Settings that differ
-  // only in dithering share a palette, so the last one is kept.
+  // (squared 8-bit RGB error, as the PSNR is measured).
   double paletteBound(const RgbImage& reference, const Palette& palette) {
-    if (palette == boundPalette_ && reference.width == boundWidth_ && reference.height == boundHeight_) return bound_;
     std::unordered_map<std::uint32_t, Rgb8> nearest;
     RgbImage best(reference.width, reference.height);
     for (std::size_t i = 0; i < reference.rgb.size(); i += 3) {
@@ -132,62 +246,16 @@ class Searcher {
       }
       best.rgb[i] = found->second.r, best.rgb[i + 1] = found->second.g, best.rgb[i + 2] = found->second.b;
     }
-    boundPalette_ = palette, boundWidth_ = reference.width, boundHeight_ = reference.height;
-    bound_ = io::compareRgb(reference, best).psnr;
-    return bound_;
+    return io::compareRgb(reference, best).psnr;
   }
 
-  std::uint64_t encode(const IndexedImage& picture) {
+  std::uint64_t encode(const IndexedImage& picture, bool proxy = false) {
     CountingSink counter;
     auto driver = device_.makeDriver(counter);
     sendPicture(picture, driver->sink());
-    ++encodings;
+    ++(proxy ? proxyEncodings : encodings);
     progress_.advance();
     return counter.bytesWritten();
-  }
-
-  // The smallest lambda of the ladder whose stream fits, by bisection.
-  void searchLambda(const IndexedImage& lossless, const RgbImage& reference, const WireChoice& base) {
-    const quantize::RunCost cost = device_.runCost(lossless);
-    auto attempt = [&](double k, IndexedImage& out) {
-      out = lossless;
-      quantize::rateDistortionImage(out, cost, ladderLambda(k), reference);
-      return encode(out);
-    };
-    IndexedImage top;
-    const std::uint64_t topBytes = attempt(kLadderSteps - 1, top);
-    if (topBytes > limit_) {  // even the coarsest does not fit: keep it only as the smallest stream
-      WireChoice c = base;
-      c.lambda = ladderLambda(kLadderSteps - 1);
-      c.bytes = topBytes;
-      c.psnr = io::compareRgb(reference, toRgbImage(top)).psnr;
-      c.fits = false;
-      consider(c, top, reference);
-      return;
-    }
-    int lo = -1, hi = kLadderSteps - 1;  // lo does not fit (lambda 0), hi fits
-    IndexedImage fitting = std::move(top), trial;
-    std::uint64_t fittingBytes = topBytes;
-    while (hi - lo > 1) {
-      const int mid = (lo + hi) / 2;
-      const std::uint64_t bytes = attempt(mid, trial);
-      if (bytes <= limit_) hi = mid, fitting = std::move(trial), fittingBytes = bytes;
-      else lo = mid;
-    }
-    // Between the rungs: a doubling of lambda can leave a tenth of the bytes unused.
-    double fitK = hi, overK = lo;
-    for (int step = 0; step < kRefineSteps; ++step) {
-      const double mid = (fitK + overK) / 2;
-      const std::uint64_t bytes = attempt(mid, trial);
-      if (bytes <= limit_) fitK = mid, fitting = std::move(trial), fittingBytes = bytes;
-      else overK = mid;
-    }
-    WireChoice c = base;
-    c.lambda = ladderLambda(fitK);
-    c.bytes = fittingBytes;
-    c.psnr = io::compareRgb(reference, toRgbImage(fitting)).psnr;
-    c.fits = true;
-    consider(c, fitting, reference);
   }
 
   // Fitting beats not fitting; among fitting, higher PSNR, then fewer bytes;
@@ -210,12 +278,11 @@ class Searcher {
   std::uint64_t limit_;
   LineFormat line_;
   Progress& progress_;
-  bool prune_ = true;
+  bool coarseToFine_ = true;
   int maxColors_ = 256;
+  std::vector<int> sizes_;   // the palette sizes the device can show
+  double lastLambda_ = 800;  // the last fitting lambda: where the next setting's search starts
   std::optional<WireChoice> best_;
-  Palette boundPalette_;
-  int boundWidth_ = 0, boundHeight_ = 0;
-  double bound_ = 0;
   IndexedImage bestPicture_;
   RgbImage bestReference_;
 };
@@ -241,9 +308,12 @@ WireSearch searchWireBudget(const RgbImage& truecolour, const devices::Device& d
   std::uint64_t limit = budget.bytes.value_or(UINT64_MAX);
   if (budget.seconds)
     limit = std::min(limit, static_cast<std::uint64_t>(*budget.seconds * line.baud / line.bitsPerCharacter()));
-  Progress bar("wire budget", kPaletteSizes.size() * kDithers.size() * 6, "encodings");  // an estimate
+  // An estimate of the encodings: about six settings on the proxy and three whole, five each.
+  const std::uint64_t expected = budget.exhaustive ? kPaletteSizes.size() * kDithers.size() * 5 : 45;
+  Progress bar("wire budget", expected, "encodings");
   bar.setEnabled(bar.enabled() && progress);
-  Searcher searcher(device, quantizer, limit, line, bar, budget.prune);
+  const auto start = std::chrono::steady_clock::now();
+  Searcher searcher(device, quantizer, limit, line, bar, !budget.exhaustive);
   RgbImage reference = truecolour;
   searcher.search(reference);
   for (int step = 0; step < kShrinkSteps && budget.shrink && !searcher.fits(); ++step) {
@@ -252,7 +322,9 @@ WireSearch searchWireBudget(const RgbImage& truecolour, const devices::Device& d
     searcher.search(reference);
   }
   bar.finish();
-  return searcher.result(limit);
+  WireSearch result = searcher.result(limit);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
 }
 
 std::vector<std::string> wireSettingsToAdd(const devices::Device& device, const std::vector<std::string>& user) {
@@ -267,10 +339,10 @@ std::vector<std::string> wireSettingsToAdd(const devices::Device& device, const 
 std::string describeWireChoice(const WireSearch& s) {
   const WireChoice& c = s.choice;
   return fmt::format("{} colours, dither {}, lambda {:.0f}{}, {}x{}: {} bytes of {} allowed, {:.1f} s at {} baud, "
-                     "PSNR {:.2f} dB, SSIM {:.4f} ({} encodings)",
+                     "PSNR {:.2f} dB, SSIM {:.4f} ({} encodings and {} of a quarter of the rows, {:.2f} s)",
                      c.colors, ditherName(c.dither), c.lambda,
                      s.settings.empty() ? "" : fmt::format(", {}", fmt::join(s.settings, ", ")), c.width, c.height,
-                     c.bytes, s.limit, c.seconds, s.baud, c.psnr, c.ssim, s.encodings);
+                     c.bytes, s.limit, c.seconds, s.baud, c.psnr, c.ssim, s.encodings, s.proxyEncodings, s.seconds);
 }
 
 }  // namespace lattice::app

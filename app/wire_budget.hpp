@@ -2,28 +2,36 @@
 // A time budget on the wire: the most accurate picture whose stream fits
 // (`lattice render --wire-seconds S [--baud B]` or `--wire-bytes N`).
 //
-// Method: the truecolour picture is rendered once and kept; for each palette
-// size (the device's largest down to 2) and dithering (none,
-// Floyd-Steinberg) it is quantized, and the device's real driver encodes it
-// into a byte counter (never a model of the encoder). A picture that does
-// not fit at lambda = 0 is tried with rate-distortion runs
-// (quantize/rate_distortion_runs.hpp, error measured against the truecolour
-// picture) at the smallest lambda of a doubling ladder that fits, found by
-// bisection (bytes fall as lambda grows) and refined between the rungs. Of
-// all fitting pictures the one with the highest PSNR against the truecolour
-// picture wins (fewer bytes break ties). Pruning, sound for dithered and
-// smoothed pictures alike: no picture in a palette is nearer the truecolour
-// one than each pixel at its nearest entry, so once a fitting choice is
-// found, a setting whose palette's bound is no better is not tried. (Before,
-// a setting whose lossless PSNR was below the best was dropped, which missed
-// dithered pictures that runs make more accurate.) The device's
+// Method: the truecolour picture is rendered once and kept. A setting is a
+// palette size (256 down to 2, at most what the device shows) and a
+// dithering (none, Floyd-Steinberg): the picture is quantized, and the
+// device's real driver encodes it into a byte counter (never a model of the
+// encoder). A picture that does not fit at lambda = 0 gets rate-distortion
+// runs (quantize/rate_distortion_runs.hpp, error measured against the
+// truecolour picture) at the smallest lambda that fits (app/wire_lambda.hpp).
+// Of all fitting pictures the one with the highest PSNR against the
+// truecolour picture wins (fewer bytes break ties).
+//
+// Coarse to fine, because each lambda tried is a dynamic programme over the
+// whole picture and searching all 24 settings so took 8-20 s for Plate 6:
+// settings are first ranked on a proxy, every kProxyRowStep-th row of the
+// picture (the programme works row by row, so a quarter of the rows is a
+// quarter of the work) against the limit scaled by the ratio of the two
+// lossless streams, walking palette sizes from 64 towards the better
+// neighbour while the score rises; then the best kFullSettings settings are
+// searched on the whole picture, each from its proxy's lambda. Pruning,
+// sound: no picture in a palette is nearer the truecolour one than each
+// pixel at its nearest entry, so a setting whose bound is no better than a
+// fitting choice is not searched. `exhaustive` searches every setting on
+// the whole picture instead, to measure what the proxy loses
+// (tests/app/wire_budget_test.cpp, bench/wire-search.sh). The device's
 // wireSettings (forms that draw the same screen in fewer bytes, off by
 // default) are the caller's to turn on (wireSettingsToAdd). With `shrink`,
 // when nothing fits, the picture is made smaller (each side x0.8,
 // area-averaged) and the search runs again.
 //
-// Tunables: kLadderSteps (50 x 2^k squared-error units a byte), kRefineSteps
-// (bisections between rungs), the palette sizes tried, kShrinkSteps.
+// Tunables (wire_budget.cpp): the palette sizes, kProxyRowStep,
+// kWalkStartColours, kFullSettings, kShrinkSteps.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -41,7 +49,8 @@ struct WireBudget {
   std::optional<double> seconds;       // --wire-seconds, at `baud`
   int baud = 0;                        // 0: the device profile's line rate
   bool shrink = false;                 // --wire-shrink: smaller pictures when nothing fits
-  bool prune = true;                   // false: every setting searched (tests check the pruning loses nothing)
+  double quality = 30;                 // --wire-quality: the PSNR floor of the size search (app/wire_size.hpp)
+  bool exhaustive = false;             // every setting searched at full size: what the coarse-to-fine search is measured against
 };
 
 struct WireChoice {
@@ -62,7 +71,9 @@ struct WireSearch {
   WireChoice choice;     // the winner, or (nothing fits) the smallest stream
   std::uint64_t limit = 0;
   int baud = 0;
-  int encodings = 0;  // real encodes counted
+  int encodings = 0;       // real encodings of whole pictures
+  int proxyEncodings = 0;  // and of the proxy's rows (app/wire_budget.cpp)
+  double seconds = 0;  // the search's wall time
   std::vector<std::string> settings;  // profile settings the budget turned on (Device::wireSettings)
 };
 

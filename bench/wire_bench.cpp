@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "app/wire_budget.hpp"
+#include "bench/bench_main.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/byte_sink.hpp"
 #include "foundation/error.hpp"
@@ -160,13 +161,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const lattice::Error& e) {
-    std::fprintf(stderr, "wire_bench: %s\n", e.what());
-    return e.exitCode();
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "wire_bench: %s\n", e.what());
-    return 70;
-  }
+  return lattice::bench::runBenchMain("wire_bench", [&] { return run(argc, argv); });
 }

@@ -79,9 +79,9 @@ class PaletteErrors {
 // same PSNR within 0.01 dB as trying every run colour, a third of the time).
 class TruecolourErrors {
  public:
-  TruecolourErrors(const Palette& palette, InverseColorMap& nearest, std::span<const std::uint8_t> rgb,
-                   const std::vector<Run>& runs)
-      : palette_(palette), nearest_(nearest), sums_(runs.size() + 1) {
+  TruecolourErrors(const Palette& palette, InverseColorMap& nearest, const std::vector<double>& inverse,
+                   std::span<const std::uint8_t> rgb, const std::vector<Run>& runs)
+      : palette_(palette), nearest_(nearest), inverse_(inverse), sums_(runs.size() + 1) {
     for (std::size_t i = 0; i < runs.size(); ++i) {
       Sums s = sums_[i];
       for (int x = runs[i].start; x < runs[i].start + runs[i].length; ++x) {
@@ -118,21 +118,50 @@ class TruecolourErrors {
     const std::int64_t norm = std::int64_t(c.r) * c.r + std::int64_t(c.g) * c.g + std::int64_t(c.b) * c.b;
     return double(s.squares - 2 * dot + s.pixels * norm);
   }
-  static Color18 meanColour(const Sums& s) {
-    auto channel = [&](std::int64_t sum) { return reduce8to6(unsigned((sum + s.pixels / 2) / s.pixels)); };
+  // The rounded mean, (sum + n/2) / n, by a multiplication and a one-step
+  // correction instead of three divisions (the same quotient exactly).
+  Color18 meanColour(const Sums& s) const {
+    const std::int64_t n = s.pixels;
+    const double inverse = inverse_[std::size_t(n)];
+    auto channel = [&](std::int64_t sum) {
+      const std::int64_t dividend = sum + n / 2;
+      auto q = static_cast<std::int64_t>(double(dividend) * inverse);
+      if (q * n > dividend) --q;
+      else if ((q + 1) * n <= dividend) ++q;
+      return reduce8to6(unsigned(q));
+    };
     return packColor18(channel(s.r), channel(s.g), channel(s.b));
   }
 
   const Palette& palette_;
   InverseColorMap& nearest_;
+  const std::vector<double>& inverse_;  // inverse_[n] = 1 / n, n up to the row's width
   std::vector<Sums> sums_;  // sums_[i]: over runs [0, i)
   std::vector<Candidate> candidates_;
 };
 
+// A device's run costs for every index and length of one picture, read from
+// a table: the programme asks for millions a picture, the table holds
+// (indices x width) values.
+class CostTable {
+ public:
+  CostTable(const RunCost& cost, std::size_t indices, int width)
+      : stride_(std::size_t(width) + 1), table_(indices * stride_) {
+    for (std::size_t i = 0; i < indices; ++i)
+      for (int length = 1; length <= width; ++length)
+        table_[i * stride_ + std::size_t(length)] = cost(length, int(i));
+  }
+  double operator()(int length, int index) const { return table_[std::size_t(index) * stride_ + std::size_t(length)]; }
+
+ private:
+  std::size_t stride_;
+  std::vector<double> table_;
+};
+
 // The programme over one row's runs, whichever way errors are measured.
-template <typename Errors, typename Extend>
+template <typename Errors, typename Extend, typename Cost>
 void smoothRuns(std::span<PaletteIndex> row, const std::vector<Run>& runs, Errors& errors, Extend extend,
-                const RunCost& cost, double lambda, int window) {
+                const Cost& cost, double lambda, int window) {
   const std::size_t n = runs.size();
   if (n < 2) return;
   constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -187,15 +216,20 @@ void rateDistortionImage(IndexedImage& picture, const RunCost& cost, double lamb
   if (truecolour.width != picture.width || truecolour.height != picture.height)
     throw Error(ErrorKind::Internal, fmt::format("rate-distortion runs: a {}x{} truecolour picture for a {}x{} frame",
                                                  truecolour.width, truecolour.height, picture.width, picture.height));
+  if (picture.pixels.empty()) return;
   InverseColorMap nearest(picture.colormap);
   const auto width = static_cast<std::size_t>(picture.width);
+  const PaletteIndex top = *std::max_element(picture.pixels.begin(), picture.pixels.end());
+  const CostTable costs(cost, std::max<std::size_t>(picture.colormap.size(), std::size_t(top) + 1), picture.width);
+  std::vector<double> inverse(width + 1, 0.0);
+  for (std::size_t n = 1; n <= width; ++n) inverse[n] = 1.0 / double(n);
   for (int y = 0; y < picture.height; ++y) {
     const auto row = std::span<PaletteIndex>(picture.pixels).subspan(std::size_t(y) * width, width);
     const std::vector<Run> runs = runsOf(row);
-    TruecolourErrors errors(picture.colormap, nearest,
+    TruecolourErrors errors(picture.colormap, nearest, inverse,
                             std::span<const std::uint8_t>(truecolour.rgb).subspan(std::size_t(y) * width * 3, width * 3),
                             runs);
-    smoothRuns(row, runs, errors, [&](std::size_t j, std::size_t k) { errors.extend(j, k, runs[j].index); }, cost,
+    smoothRuns(row, runs, errors, [&](std::size_t j, std::size_t k) { errors.extend(j, k, runs[j].index); }, costs,
                lambda, kTruecolourWindowRuns);
   }
 }

@@ -24,6 +24,13 @@ void addWireOptions(CLI::App* cmd, WireArgs& args) {
       ->group(group);
   cmd->add_option("--wire-bytes", args.bytes, "Devices: as --wire-seconds, a budget of N bytes (57600, 56K)")
       ->group(group);
+  cmd->add_option("--wire-quality", args.quality,
+                  "With a wire budget and no --width/--height: send the largest picture (up to the device's "
+                  "drawable area, at the scene's aspect) whose stream fits with at least this PSNR in dB against "
+                  "the truecolour render at that size (docs/wire.md)")
+      ->check(numberIn({1.0, 99.0}))
+      ->capture_default_str()
+      ->group(group);
   cmd->add_flag("--wire-shrink", args.shrink,
                 "With a wire budget: when nothing fits, send a smaller picture (each side x0.8 until it fits)")
       ->group(group);
@@ -34,6 +41,13 @@ void applyWireArgs(const WireArgs& args, const CLI::App& cmd, int baud, RenderJo
   const bool seconds = cmd.count("--wire-seconds") > 0, bytes = cmd.count("--wire-bytes") > 0;
   if (args.shrink && !seconds && !bytes)
     throw Error(ErrorKind::Usage, "--wire-shrink applies to a wire budget: add --wire-seconds S or --wire-bytes N");
+  const bool quality = cmd.count("--wire-quality") > 0;
+  if (quality && !seconds && !bytes)
+    throw Error(ErrorKind::Usage, "--wire-quality is the floor of a wire budget's size search: add --wire-seconds S "
+                                  "or --wire-bytes N");
+  if (quality && (cmd.count("--width") > 0 || cmd.count("--height") > 0))
+    throw Error(ErrorKind::Usage, "--wire-quality chooses the picture's size, and --width/--height fix it: drop one "
+                                  "or the other");
   if (!seconds && !bytes) return;
   if (seconds && bytes)
     throw Error(ErrorKind::Usage, "--wire-seconds and --wire-bytes are two budgets for one stream; give one (at 8N1 "
@@ -43,6 +57,7 @@ void applyWireArgs(const WireArgs& args, const CLI::App& cmd, int baud, RenderJo
   if (bytes) budget.bytes = parseByteCount(args.bytes, "--wire-bytes");
   if (cmd.count("--baud") > 0) budget.baud = baud;
   budget.shrink = args.shrink;
+  budget.quality = args.quality;
   job.wire = budget;
 }
 

@@ -1,9 +1,10 @@
 #pragma once
 // The flags of `lattice render` that shape a device's stream for the wire:
 // --rd-lambda (rate-distortion runs), --wire-seconds / --wire-bytes (a
-// budget the search of app/wire_budget.hpp fits) and --wire-shrink. The
-// budget's baud is --baud when given (the serial flags' own), else the
-// device profile's.
+// budget the search of app/wire_budget.hpp fits), --wire-shrink and
+// --wire-quality (the floor of the size search, app/wire_size.hpp, which a
+// budget runs unless --width/--height fix the size). The budget's baud is
+// --baud when given (the serial flags' own), else the device profile's.
 
 #include <string>
 
@@ -17,6 +18,7 @@ struct WireArgs {
   double seconds = 0;
   std::string bytes;  // as typed: 57600, 56K
   bool shrink = false;
+  double quality = 30;  // dB, the size search's floor
 };
 
 void addWireOptions(CLI::App* cmd, WireArgs& args);

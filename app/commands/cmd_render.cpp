@@ -7,7 +7,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
-
+#include <filesystem>
 #include <initializer_list>
 #include <memory>
 #include <string>
@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "app/commands/commands.hpp"
+#include "app/commands/send_file.hpp"
 #include "app/cli/number_flags.hpp"
 #include "app/cli/pipeline_args.hpp"
 #include "app/render_job.hpp"
@@ -25,6 +26,7 @@
 #include "devices/device_table.hpp"
 #include "foundation/arithmetics.hpp"
 #include "foundation/error.hpp"
+#include "foundation/system/output_transaction.hpp"
 #include "foundation/system/resident_memory.hpp"
 #include "lht/leaf/lookup_mode.hpp"
 #include "lht/table/lht_form.hpp"
@@ -60,6 +62,40 @@ std::string profileBaudText() {
     if (device.line) rates.push_back(fmt::format("{} {}", entry.name, device.line->baud));
   }
   return fmt::format("the device profile's rate: {}", fmt::join(rates, ", "));
+}
+
+bool isVirtualPort(const std::string& port) { return port.rfind("virtual:", 0) == 0; }
+
+// Where `render --port` records the stream without --stream: beside the
+// picture (-o), else the scene's name in the current folder, with the
+// device's name as the extension (fuzzy.png -> fuzzy.tek4125).
+std::string recordingPath(const RenderJob& job, const std::string& device) {
+  std::filesystem::path path = job.picture.empty() ? std::filesystem::path(job.scene).filename() : std::filesystem::path(job.picture);
+  path.replace_extension(device);
+  return path.string();
+}
+
+// After the render: the recorded stream to the port (app/commands/send_file.hpp).
+void sendRecording(const RenderFlags& f, const CLI::App& cmd, const RenderJob& job, const RenderResult& result) {
+  SendArgs send;
+  send.stream = job.stream;
+  send.device = f.device;
+  send.settings = job.settings;
+  if (result.wire) send.settings.insert(send.settings.end(), result.wire->settings.begin(), result.wire->settings.end());
+  send.serial = f.serial;
+  send.baudGiven = cmd.count("--baud") > 0;
+  if (!send.baudGiven && !isVirtualPort(f.serial.port)) {
+    // One rate: a real line runs at the profile's rate unless --baud says otherwise.
+    if (const devices::Device device = devices::makeDevice(f.device, send.settings); device.line)
+      send.serial.baud = device.line->baud, send.baudGiven = true;
+  }
+  send.screen = f.job.picture;
+  send.screenGiven = isVirtualPort(f.serial.port) && !f.job.picture.empty();
+  send.force = true;  // -o was checked with render's flags
+  send.who = "lattice render";
+  OutputTransaction::commitOpen();  // the recording lands before a byte goes out
+  fmt::print(stderr, "lattice render: the stream is recorded in {}; sending it to {}\n", job.stream, f.serial.port);
+  runSend(send);
 }
 
 // A flag that would do nothing in this combination is refused with the reason.
@@ -182,14 +218,15 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
   job.histogramChosenByUser = cmd.count("--histogram") > 0;
   job.pipeline = toPipelineOptions(f.pipeline, cmd);
   job.quiet = f.pipeline.quiet;
+  // With --port the stream is recorded (--stream, or a file beside the
+  // picture) and then sent from the file, so a send that stops resumes.
   if (cmd.count("--port") > 0) {
-    if (f.serial.port.rfind("virtual:", 0) == 0)
-      throw Error(ErrorKind::Usage,
-                  fmt::format("--port {}: a virtual terminal is `lattice send`'s; write the stream with --stream "
-                              "FILE, then run lattice send FILE --port {}",
-                              f.serial.port, f.serial.port));
-    job.port = f.serial;
-    job.baudFromProfile = cmd.count("--baud") == 0;
+    if (job.stream == "-")
+      throw Error(ErrorKind::Usage, "--stream - and --port: the stream sent to --port is recorded in a file; give "
+                                    "--stream FILE, or drop --stream for a file beside the picture");
+    if (job.stream.empty()) job.stream = recordingPath(job, f.device);
+    // A virtual terminal's screen is the -o picture; render's own emulator is not needed.
+    if (isVirtualPort(f.serial.port)) job.picture.clear();
   }
   // One baud: --baud becomes the profile's rate too, so the wire budget, the
   // timing line and the port all count at it. A device without a serial line
@@ -274,6 +311,10 @@ void addRender(CLI::App& root) {
       "  lattice render scenes/torus-floor.toml -o torus.png\n"
       "  lattice render scenes/fuzzy-sphere-1000.toml --device tek4125 --stream fuzzy.tek -o fuzzy-tek.png\n"
       "  lattice render scenes/sphere-hole.toml --device tek4027 --port auto --baud 4800\n"
+      "  lattice render scenes/fuzzy-sphere-1000.toml --device tek4125 --port virtual:tek4125 --baud 9600 "
+      "--wire-seconds 60 -o screen.png\n"
+      "    (the best picture a minute at 9600 baud allows, its size chosen; the stream recorded in "
+      "screen.tek4125)\n"
       "  lattice render scenes/thistle.toml --device apollo --set profile=dn660-4 -o thistle.png\n"
       "  lattice render scenes/fuzzy-sphere-1000.toml --device sixel --set registers=256   (in xterm -ti vt340)");
   auto flags = std::make_shared<RenderFlags>();
@@ -285,6 +326,7 @@ void addRender(CLI::App& root) {
     fmt::print(stderr, "lattice render: {}: {}x{}, {:.2f} s{}, {} rays ({} arithmetic, {} thread{}){}\n", job.scene,
                r.width, r.height, r.seconds, phaseTimes(r.phases), r.rays, job.arithmetic, r.threads,
                r.threads == 1 ? "" : "s", job.picture.empty() ? "" : fmt::format(", picture {}", job.picture));
+    if (cmd->count("--port") > 0) sendRecording(*flags, *cmd, job, r);
   });
 }
 

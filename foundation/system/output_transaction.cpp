@@ -78,4 +78,13 @@ void OutputTransaction::commit() {
   if (!failed.empty()) throw Error(ErrorKind::Output, failed);
 }
 
+void OutputTransaction::commitOpen() {
+  OutputTransaction* open = nullptr;
+  {
+    const std::lock_guard lock(gLock);
+    open = gOpen;
+  }
+  if (open) open->commit();
+}
+
 }  // namespace lattice

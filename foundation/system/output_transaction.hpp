@@ -29,6 +29,11 @@ class OutputTransaction {
   // Renames every kept file into place; Error(Output) if one cannot be
   // (the rest are still renamed: each file is whole either way).
   void commit();
+  // Commits the open transaction now, if there is one: for a command whose
+  // first half's outputs must land before its second half starts
+  // (`render --port` records the stream, then sends the file, so a send that
+  // stops can be resumed from it).
+  static void commitOpen();
   std::size_t pending() const;  // kept and not yet renamed
   // The targets kept so far, in order: what a failed command says it did not write.
   std::vector<std::filesystem::path> pendingTargets() const;

@@ -133,3 +133,36 @@ TEST_CASE("a signal during send prints the bytes sent and the --resume command, 
                                                    : signal == SIGTERM ? "stopped by SIGTERM" : "stopped by SIGHUP"));
   CHECK_FALSE(std::filesystem::exists(screen));  // no screen of a stream that did not finish
 }
+
+// `render --port` records the stream before it sends it, so Ctrl-C during
+// its send leaves the recording in place and prints the `lattice send`
+// command that continues from it.
+TEST_CASE("Ctrl-C during render --port leaves the recording and prints the send --resume command", "[send]") {
+  const lattice::testing::TempDir scratch("render-port-interrupt");
+  const std::string screen = scratch / "hole.png", recording = scratch / "hole.tek4125";
+  const std::string errPath = scratch / "stderr.txt";
+  const pid_t pid = startLattice({"render", lattice::testing::sourcePath("scenes/sphere-hole.toml").string(),
+                                  "--width", "96", "--height", "72", "--device", "tek4125", "--port",
+                                  "virtual:tek4125", "--baud", "1200", "-o", screen, "-q"},
+                                 errPath);
+  REQUIRE(pid > 0);
+  const Clock::time_point started = Clock::now();
+  while (readText(errPath).find("a virtual Tektronix 4125") == std::string::npos &&
+         Clock::now() < started + std::chrono::seconds(60))
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  std::this_thread::sleep_for(std::chrono::seconds(1));
+  ::kill(pid, SIGINT);
+  const std::optional<int> status = waitUntil(pid, Clock::now() + std::chrono::seconds(20));
+  const std::string err = readText(errPath);
+  INFO(err);
+  REQUIRE(status.has_value());
+  REQUIRE(WIFSIGNALED(*status));
+  CHECK(WTERMSIG(*status) == SIGINT);
+  REQUIRE(std::filesystem::exists(recording));  // landed before the first byte went out
+  std::smatch counts;
+  REQUIRE(std::regex_search(err, counts, std::regex(R"(lattice: (\d+) of (\d+) bytes went out)")));
+  CHECK(std::stoull(counts[2].str()) == std::filesystem::file_size(recording));
+  CHECK_THAT(err, Catch::Contains(fmt::format("lattice send {} --port virtual:tek4125 --baud 1200", recording)) &&
+                      Catch::Contains(fmt::format("--resume {}", counts[1].str())));
+  CHECK_FALSE(std::filesystem::exists(screen));  // no screen of a stream that did not finish
+}

@@ -62,21 +62,27 @@ TEST_CASE("wire budget: the chosen picture's real stream fits, and a looser budg
   }
 }
 
-TEST_CASE("wire budget: the palette-bound pruning loses nothing against searching every setting") {
+// The coarse-to-fine search ranks settings on a quarter of the rows and
+// searches only the best few whole: it may pick another setting than
+// searching every one, but must come close, with fewer whole encodings.
+TEST_CASE("wire budget: the coarse-to-fine search comes within a quarter dB of searching every setting") {
   const RgbImage reference = truecolour("torus-floor.toml", 96, 72);
   const devices::Device d = devices::makeDevice("tek4125", {});
   for (std::uint64_t limit : {std::uint64_t(3000), std::uint64_t(6000)}) {
     app::WireBudget budget;
     budget.bytes = limit;
-    const app::WireSearch pruned = app::searchWireBudget(reference, d, budget, {}, false);
-    budget.prune = false;
+    const app::WireSearch fast = app::searchWireBudget(reference, d, budget, {}, false);
+    budget.exhaustive = true;
     const app::WireSearch every = app::searchWireBudget(reference, d, budget, {}, false);
-    INFO(limit << " bytes: pruned " << app::describeWireChoice(pruned) << "; every setting "
+    INFO(limit << " bytes: coarse to fine " << app::describeWireChoice(fast) << "; every setting "
                 << app::describeWireChoice(every));
     REQUIRE(every.choice.fits);
-    CHECK(pruned.choice.psnr == every.choice.psnr);
-    CHECK(pruned.choice.bytes == every.choice.bytes);
-    CHECK(pruned.encodings < every.encodings);
+    REQUIRE(fast.choice.fits);
+    CHECK(fast.choice.bytes <= limit);
+    CHECK(encodedBytes(d, fast.picture) == fast.choice.bytes);
+    CHECK(fast.choice.psnr >= every.choice.psnr - 0.25);
+    CHECK(fast.encodings < every.encodings / 2);
+    CHECK(every.proxyEncodings == 0);
   }
 }
 
@@ -120,7 +126,7 @@ TEST_CASE("wire budget on sixel: a byte count below the lossless stream is met, 
   CHECK(lastPsnr < all.choice.psnr);
 }
 
-TEST_CASE("wire budget: nothing fits, the smallest stream is reported, --wire-shrink makes it fit") {
+TEST_CASE("wire budget: nothing fits, the smallest stream is reported, and --wire-shrink makes it fit") {
   const RgbImage reference = truecolour("sphere-hole.toml", 64, 64);
   const devices::Device d = devices::makeDevice("tek4125", {});
   app::WireBudget budget;
@@ -186,7 +192,7 @@ TEST_CASE("lattice render --wire-bytes and lattice emulate --at, end to end") {
   CHECK(empty.rgb != whole.rgb);
 }
 
-TEST_CASE("one baud: --baud feeds the budget and the timing line, two budgets are refused", "[wire]") {
+TEST_CASE("one baud: --baud feeds the budget and the timing line, and two budgets are refused", "[wire]") {
   const testing::TempDir dir("one-baud");
   const std::string scene = fmt::format("{}/scenes/torus-floor.toml", LATTICE_SOURCE_DIR);
   const auto stream = dir.path() / "b.tek";
@@ -212,4 +218,15 @@ TEST_CASE("one baud: --baud feeds the budget and the timing line, two budgets ar
       stream.string()));
   CHECK(shrunk.exitCode == 8);
   CHECK_THAT(shrunk.stderrText, Catch::Contains("already made the picture as small") && !Catch::Contains("add --wire-shrink"));
+
+  // --wire-quality is the size search's floor: refused where there is no size to search.
+  const testing::CommandRun fixed = testing::runLattice(fmt::format(
+      "render {} --device tek4125 --width 48 --height 48 --wire-seconds 5 --wire-quality 35 --stream {}", scene,
+      stream.string()));
+  CHECK(fixed.exitCode == 2);
+  CHECK_THAT(fixed.stderrText, Catch::Contains("--wire-quality chooses the picture's size, and --width/--height fix it"));
+  const testing::CommandRun alone = testing::runLattice(
+      fmt::format("render {} --device tek4125 --wire-quality 35 --stream {}", scene, stream.string()));
+  CHECK(alone.exitCode == 2);
+  CHECK_THAT(alone.stderrText, Catch::Contains("--wire-quality is the floor of a wire budget's size search"));
 }

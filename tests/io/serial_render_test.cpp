@@ -225,5 +225,8 @@ TEST_CASE("serial render: lattice render --port into a pty equals --stream", "[s
   INFO("the CLI's -o is " << fromCli.width << "x" << fromCli.height << ", the pty terminal's screen "
                           << drawn.width << "x" << drawn.height);
   CHECK(d.differingPixels == 0);
-  for (const auto& p : {streamFile, streamPng, portPng}) std::filesystem::remove(p);
+  // --port recorded the stream beside the picture (cli-port.tek4125), and it is what went out.
+  const auto recording = tempPath("cli-port.tek4125");
+  CHECK(readWholeFile(recording) == fromFile);
+  for (const auto& p : {streamFile, streamPng, portPng, recording}) std::filesystem::remove(p);
 }

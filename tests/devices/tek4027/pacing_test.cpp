@@ -165,8 +165,11 @@ TEST_CASE("lattice render --port waits for each answer and sends the bytes --str
   PtyPair pty;
   testing::PtyPeer peer(pty);
   testing::CommandRun toPort;
+  // render --port records the stream before sending it: into the temporary folder, not the working one.
+  const auto recording = std::filesystem::temp_directory_path() / fmt::format("paced-port-{}.t27", ::getpid());
   std::thread sender([&] {
-    toPort = testing::runLattice(fmt::format("{} --port {} --baud 38400 --stall-timeout 10", common, pty.slavePath()));
+    toPort = testing::runLattice(fmt::format("{} --port {} --baud 38400 --stall-timeout 10 --stream '{}'", common,
+                                             pty.slavePath(), recording.string()));
   });
   std::size_t overran = 0;
   for (std::size_t end : ends) {
@@ -182,4 +185,5 @@ TEST_CASE("lattice render --port waits for each answer and sends the bytes --str
   CHECK(overran == 0);
   const auto got = peer.data();
   CHECK(std::string(got.begin(), got.end()) == expected);
+  std::filesystem::remove(recording);
 }
