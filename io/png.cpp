@@ -12,7 +12,7 @@ namespace lattice::io {
 namespace {
 
 void encodeAndWrite(const std::filesystem::path& path, png_image& image, const void* pixels,
-                    const void* colormap) {
+                    const void* colormap, AtomicFile::Landing landing) {
   png_alloc_size_t size = 0;
   if (!png_image_write_to_memory(&image, nullptr, &size, 0, pixels, 0, colormap))
     throw Error(ErrorKind::Output, fmt::format("{}: PNG encoding failed: {}", path.string(), image.message));
@@ -20,12 +20,12 @@ void encodeAndWrite(const std::filesystem::path& path, png_image& image, const v
   if (!png_image_write_to_memory(&image, buffer.data(), &size, 0, pixels, 0, colormap))
     throw Error(ErrorKind::Output, fmt::format("{}: PNG encoding failed: {}", path.string(), image.message));
   buffer.resize(size);
-  writeFileAtomically(path, buffer);
+  writeFileAtomically(path, buffer, landing);
 }
 
 }  // namespace
 
-void writePng(const std::filesystem::path& path, const RgbImage& img) {
+void writePng(const std::filesystem::path& path, const RgbImage& img, AtomicFile::Landing landing) {
   if (img.width <= 0 || img.height <= 0)
     throw Error(ErrorKind::Output, fmt::format("{}: cannot write an empty image", path.string()));
   png_image image;
@@ -34,14 +34,14 @@ void writePng(const std::filesystem::path& path, const RgbImage& img) {
   image.width = static_cast<png_uint_32>(img.width);
   image.height = static_cast<png_uint_32>(img.height);
   image.format = PNG_FORMAT_RGB;
-  encodeAndWrite(path, image, img.rgb.data(), nullptr);
+  encodeAndWrite(path, image, img.rgb.data(), nullptr, landing);
 }
 
-void writePng(const std::filesystem::path& path, const IndexedImage& img) {
+void writePng(const std::filesystem::path& path, const IndexedImage& img, AtomicFile::Landing landing) {
   if (img.width <= 0 || img.height <= 0)
     throw Error(ErrorKind::Output, fmt::format("{}: cannot write an empty image", path.string()));
   if (img.colormap.empty() || img.colormap.size() > 256) {
-    writePng(path, toRgbImage(img));
+    writePng(path, toRgbImage(img), landing);
     return;
   }
   png_image image;
@@ -58,7 +58,7 @@ void writePng(const std::filesystem::path& path, const IndexedImage& img) {
   std::vector<std::uint8_t> pixels(img.pixels.begin(), img.pixels.end());
   for (auto& p : pixels)
     if (p >= img.colormap.size()) p = 0;
-  encodeAndWrite(path, image, pixels.data(), cmap.data());
+  encodeAndWrite(path, image, pixels.data(), cmap.data(), landing);
 }
 
 }  // namespace lattice::io

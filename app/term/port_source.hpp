@@ -1,0 +1,25 @@
+#pragma once
+// The terminal on a serial line: a USB adapter, the firmware's UART, a SimH
+// console on a pty. The port is opened and set up by the project's own
+// serial code (io/serial_port.hpp: exclusive, raw, the line's baud, format
+// and flow control), so XON/XOFF toward the host is the kernel's. The line
+// ends when it hangs up: poll's POLLHUP, or a read that returns end of file
+// or EIO (a pty whose far side closed; a modem line whose carrier dropped).
+#include "app/term/term_source.hpp"
+#include "io/serial_port.hpp"
+
+namespace lattice::app {
+
+class PortSource final : public TermSource {
+ public:
+  explicit PortSource(const io::SerialOptions& line);
+  int fd() const override { return port_.fd(); }
+  bool read(std::vector<std::uint8_t>& out) override;
+  void write(std::span<const std::uint8_t> bytes) override;
+  std::string endReason() const override;
+
+ private:
+  io::SerialPort port_;
+};
+
+}  // namespace lattice::app
