@@ -48,8 +48,10 @@ class Display {
     writeText(1, "\x1b[?25l\x1b[2J");  // hide the text cursor, clear
   }
   ~Display() {
-    // Below the picture, the cursor back on: the shell's prompt comes next.
-    writeText(1, fmt::format("\x1b[{};1H\x1b[?25h\r\n", host_.rows));
+    // The status line cleared and the cursor back on there, below the
+    // picture: what is said next (and the shell's prompt) goes on that line
+    // and scrolls the picture up only then.
+    writeText(1, fmt::format("\x1b[{};1H\x1b[2K\x1b[?25h", host_.rows));
   }
   void draw(const TermScreen& screen) {
     writeText(1, view_.update(screen.image()));
