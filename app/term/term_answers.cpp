@@ -8,26 +8,44 @@ constexpr std::uint8_t kSub = 0x1a;
 }  // namespace
 
 TermAnswers::TermAnswers(const devices::Device& device)
-    : replies_(device.replies), gin_(device.name != "tek4027") {}
+    : replies_(device.replies), gin4010_(device.name != "tek4027"), gin4100_(device.name == "tek4125") {}
 
-std::vector<std::uint8_t> ginReport(std::uint8_t key, int x, int y) {
-  return {key,
-          static_cast<std::uint8_t>(0x20 | ((y >> 5) & 0x1f)),
-          static_cast<std::uint8_t>(0x60 | (y & 0x1f)),
-          static_cast<std::uint8_t>(0x20 | ((x >> 5) & 0x1f)),
-          static_cast<std::uint8_t>(0x40 | (x & 0x1f)),
-          '\r'};
+std::vector<std::uint8_t> ginReport4010(std::uint8_t key, int x, int y) {
+  auto five = [](int v) { return static_cast<std::uint8_t>(0x20 | (v & 0x1f)); };
+  return {key, five(x >> 5), five(x), five(y >> 5), five(y), '\r'};
+}
+
+std::vector<std::uint8_t> ginReport4100(std::uint8_t key, int x, int y) {
+  auto five = [](int v) { return static_cast<std::uint8_t>(0x20 | (v & 0x1f)); };
+  return {key, five(y >> 7), five(((y & 3) << 2) | (x & 3)), five(y >> 2), five(x >> 7), five(x >> 2), '\r'};
 }
 
 std::vector<std::uint8_t> TermAnswers::answer(std::span<const std::uint8_t> received) {
   std::vector<std::uint8_t> out;
+  auto send = [&](const std::vector<std::uint8_t>& report) {
+    out.insert(out.end(), report.begin(), report.end());
+    ++answered_;
+  };
   for (std::uint8_t c : received) {
-    if (gin_ && escape_ && c == kSub) {
-      const std::vector<std::uint8_t> report = ginReport(' ', 512, 390);  // the middle of the 4010's screen
-      out.insert(out.end(), report.begin(), report.end());
-      ++answered_;
+    // A 4100 integer ends with its low byte, 0x20..0x3F; its high bytes are 0x40..0x7F.
+    const bool intEnds = c >= 0x20 && c < 0x40;
+    const bool afterEsc = enableGin_ == 1;
+    switch (enableGin_) {
+      case 1: enableGin_ = c == 'I' ? 2 : 0; break;
+      case 2: enableGin_ = c == 'E' ? 3 : 0; break;
+      case 3: enableGin_ = intEnds ? 4 : (c >= 0x40 && c < 0x80 ? 3 : 0); break;
+      case 4:
+        if (intEnds) {
+          if (gin4100_) send(ginReport4100(' ', 2048, 1536));  // the middle of the 4096 x 3072 space
+          enableGin_ = 0;
+        } else if (!(c >= 0x40 && c < 0x80)) {
+          enableGin_ = 0;
+        }
+        break;
+      default: break;
     }
-    escape_ = c == kEsc;
+    if (gin4010_ && afterEsc && c == kSub) send(ginReport4010(' ', 512, 390));  // the middle of the 4010's screen
+    if (c == kEsc) enableGin_ = 1;  // an ESC starts over, even inside a command
   }
   if (!replies_) return out;
   pending_.insert(pending_.end(), received.begin(), received.end());

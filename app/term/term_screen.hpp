@@ -26,6 +26,7 @@ class TermScreen {
   void finish();
   const IndexedImage& image() const { return emulator_->image(); }
   const DecodeReport& report() const { return emulator_->report(); }
+  const std::string& dialogText() const { return emulator_->dialogText(); }
   std::uint64_t bytes() const { return bytes_; }
   std::uint64_t answers() const { return answers_.answered(); }
 

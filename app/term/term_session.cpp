@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 
+#include "app/term/dialog_lines.hpp"
 #include "app/term/host_graphics.hpp"
 #include "app/term/host_terminal.hpp"
 #include "app/term/term_keys.hpp"
@@ -55,6 +56,15 @@ class Display {
   }
   void draw(const TermScreen& screen) {
     writeText(1, view_.update(screen.image()));
+    // The dialog area's last lines, on the rows between the picture and the status line.
+    const std::vector<std::string> lines =
+        lastDialogLines(screen.dialogText(), kTextRowsBelow - 1, static_cast<std::size_t>(host_.columns));
+    if (lines != dialog_) {
+      for (int i = 0; i < kTextRowsBelow - 1; ++i)
+        writeText(1, fmt::format("\x1b[{};1H\x1b[2K{}", host_.rows - (kTextRowsBelow - 1) + i,
+                                 static_cast<std::size_t>(i) < lines.size() ? lines[static_cast<std::size_t>(i)] : ""));
+      dialog_ = lines;
+    }
     writeText(1, fmt::format("\x1b[{};1H\x1b[2K{} | {} bytes | Ctrl-] quits, Ctrl-\\ writes a PNG", host_.rows,
                              title_, screen.bytes()));
   }
@@ -64,6 +74,7 @@ class Display {
  private:
   HostGraphics host_;
   SixelView view_;
+  std::vector<std::string> dialog_;  // the dialog lines shown
   std::string title_;
 };
 

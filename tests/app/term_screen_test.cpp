@@ -105,11 +105,24 @@ TEST_CASE("term: the 4027's report requests are answered, one CR each", "[term]"
   CHECK(screen.answers() == requests);
 }
 
-TEST_CASE("term: a 4010 GIN request is answered with a key, the cursor's address and CR", "[term]") {
-  const lattice::devices::Device device = lattice::devices::makeDevice("tek4014");
-  lattice::app::TermScreen screen(device, nullptr);
-  const std::string request = "\x1b\x1a";
-  const std::vector<std::uint8_t> got = screen.receive(std::span(reinterpret_cast<const std::uint8_t*>(request.data()), 2));
-  // x = 512, y = 390: high y 0x20|12, low y 0x60|6, high x 0x20|16, low x 0x40|0.
-  CHECK(got == std::vector<std::uint8_t>{' ', 0x2c, 0x66, 0x30, 0x40, '\r'});
+TEST_CASE("term: GIN requests are answered with a key, the cursor's address and CR", "[term]") {
+  auto bytesOf = [](const std::string& text) {
+    return std::vector<std::uint8_t>(text.begin(), text.end());
+  };
+  // The 4010's ESC SUB: key, Hi-X, Lo-X, Hi-Y, Lo-Y (x = 512, y = 390), as RAL GKS's GK0TCS reads it.
+  lattice::app::TermScreen tek4014(lattice::devices::makeDevice("tek4014"), nullptr);
+  CHECK(tek4014.receive(bytesOf("\x1b\x1a")) == bytesOf(" 0 ,&\r"));
+  // The 4100's ENABLE-GIN, ESC I E 0 1, cut in two: key, Hi-Y, Extra, Lo-Y, Hi-X, Lo-X
+  // (x = 2048, y = 1536), as GK1TCS reads it from a 4107.
+  lattice::app::TermScreen tek4125(lattice::devices::makeDevice("tek4125"), nullptr);
+  CHECK(tek4125.receive(bytesOf("\x1bIE0")).empty());
+  const std::vector<std::uint8_t> report = tek4125.receive(bytesOf("1"));
+  REQUIRE(report.size() == 7);
+  auto five = [&](std::size_t i) { return report[i] - 32; };
+  CHECK(five(4) * 128 + five(5) * 4 + (five(2) & 3) == 2048);
+  CHECK(five(1) * 128 + five(3) * 4 + ((five(2) >> 2) & 3) == 1536);
+  CHECK(report.back() == '\r');
+  // The 4027 has neither.
+  lattice::app::TermScreen tek4027(lattice::devices::makeDevice("tek4027"), nullptr);
+  CHECK(tek4027.receive(bytesOf("\x1b\x1a\x1bIE01")).empty());
 }
