@@ -67,6 +67,8 @@ void addTerm(CLI::App& root) {
       ->check(CLI::ExistingFile);
   cmd->add_flag("--unpaced", o->unpaced, "With --stream: play it as fast as the terminal decodes, not at a line rate");
   addSerialOptions(cmd, o->line, false, "the device profile's");
+  // A terminal receives: the sender's stall time-out and pacing are not its business.
+  for (const char* sendOnly : {"--stall-timeout", "--pace"}) cmd->remove_option(cmd->get_option(sendOnly));
   cmd->add_option("--snapshot", o->snapshot,
                   "PNG of the screen, rewritten (atomically) at each refresh and at the end");
   cmd->add_option("--record", o->record, "Save every byte received, as received: a stream for lattice emulate");

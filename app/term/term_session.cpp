@@ -85,6 +85,9 @@ TermResult runTerm(const TermOptions& options, const TermSay& say) {
   std::optional<AtomicFile> record;
   if (!options.record.empty()) record.emplace(options.record);
   TermScreen screen(device, record ? &*record : nullptr);
+  // Opened first: a program that cannot run, a port that cannot be opened or
+  // a stream that cannot be read is an error before the host terminal is touched.
+  std::unique_ptr<TermSource> source = openTermSource(options, device.line ? device.line->baud : 0);
   TermResult result;
 
   io::SendSignals signals;  // SIGINT, SIGTERM, SIGHUP end the session in order
@@ -102,10 +105,6 @@ TermResult runTerm(const TermOptions& options, const TermSay& say) {
                         "(--snapshot keeps the screen)", graphics.why));
     }
   }
-
-  // Opened once the host is set up: a line's bytes wait in its queue
-  // meanwhile, and a program starts with the display ready.
-  std::unique_ptr<TermSource> source = openTermSource(options, device.line ? device.line->baud : 0);
 
   const auto interval = std::chrono::duration<double>(1.0 / options.refreshPerSecond);
   Clock::time_point lastRefresh = Clock::now() - std::chrono::hours(1);
