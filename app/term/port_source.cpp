@@ -33,12 +33,13 @@ bool PortSource::read(std::vector<std::uint8_t>& out) {
       continue;
     }
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0 && errno == EAGAIN) {
-      // Nothing to read: a line whose far side has gone says so only through poll.
+    if (n == 0 || (n < 0 && errno == EAGAIN)) {
+      // Nothing to read (the line is raw with VMIN 0, so an empty read is not
+      // the end of a file): a line whose far side has gone says so through poll.
       pollfd p{port_.fd(), 0, 0};
       return !(::poll(&p, 1, 0) == 1 && (p.revents & (POLLHUP | POLLERR)));
     }
-    return false;  // end of file or EIO: hung up
+    return false;  // EIO: the line hung up (a pty whose far side closed, an adapter unplugged)
   }
 }
 

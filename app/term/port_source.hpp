@@ -3,8 +3,10 @@
 // console on a pty. The port is opened and set up by the project's own
 // serial code (io/serial_port.hpp: exclusive, raw, the line's baud, format
 // and flow control), so XON/XOFF toward the host is the kernel's. The line
-// ends when it hangs up: poll's POLLHUP, or a read that returns end of file
-// or EIO (a pty whose far side closed; a modem line whose carrier dropped).
+// ends when it hangs up: poll's POLLHUP or POLLERR, or a read that fails with
+// EIO (a pty whose far side closed, a USB adapter unplugged). A read of
+// nothing is not an end: the line is raw with VMIN 0, where an empty read
+// only means no byte is waiting.
 #include "app/term/term_source.hpp"
 #include "io/serial_port.hpp"
 

@@ -9,15 +9,18 @@
 
 #include <fmt/format.h>
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <string>
 #include <thread>
 
+#include "devices/device_table.hpp"
 #include "foundation/system/atomic_file.hpp"
 #include "io/png.hpp"
 #include "io/pty.hpp"
@@ -74,7 +77,7 @@ TEST_CASE("term --stream plays at the line rate", "[term]") {
   CHECK(seconds >= 1.9);  // a lower bound only: the pacing, not a speed target
 }
 
-TEST_CASE("term runs gnuplot's tek410x and tek40xx terminals; the screen is emulate of the recording", "[term]") {
+TEST_CASE("term runs gnuplot's tek410x and tek40xx terminals, the screen emulate of the recording", "[term]") {
   if (!onPath("gnuplot")) {
     WARN("gnuplot is not installed: skipped (scripts/setup.sh installs gnuplot-nox)");
     return;
@@ -166,10 +169,16 @@ TEST_CASE("term --port: a line that hangs up ends the session with the recording
   termios mode{};
   for (int i = 0; i < 400 && ::tcgetattr(queue, &mode) == 0 && (mode.c_lflag & ICANON); ++i) host.pump(0.025);
   REQUIRE(!(mode.c_lflag & ICANON));
+  // And has asked the host for sixels (in vain, a second): its loop is reading the line.
+  for (int i = 0; i < 100 && host.output().find("no display") == std::string::npos; ++i) host.pump(0.05);
   const std::vector<std::uint8_t> bytes = lattice::readWholeFile(kPlate);
   std::atomic<bool> written{false};
   std::thread writer([&] {
-    (void)!::write(line.masterFd(), bytes.data(), bytes.size());
+    // In two halves with a pause between: a quiet line is not a hung-up one.
+    const std::size_t half = bytes.size() / 2;
+    (void)!::write(line.masterFd(), bytes.data(), half);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    (void)!::write(line.masterFd(), bytes.data() + half, bytes.size() - half);
     written = true;
   });
   // Until every byte has been taken off the line: a hang-up throws away what is still queued.
@@ -229,4 +238,52 @@ TEST_CASE("term: usage errors name the fix", "[term][cli]") {
   CHECK(run.exitCode == 2);
   run = runLattice(fmt::format("term --stream '{}' --refresh 0", kPlate));
   CHECK(run.exitCode == 2);
+}
+
+TEST_CASE("term --device tek4027 answers lattice send's report requests across a line", "[term][serial]") {
+  // Two pseudo-terminals bridged by this test, master to master, as a null-modem cable joins
+  // two serial ports: `lattice send` on one, `lattice term --port` on the other. send stops at
+  // every `!REP 00` of the 4027's strict stream until the terminal's CR comes back.
+  const lattice::testing::TempDir scratch("term-4027");
+  const std::string stream = scratch / "hole.t27";
+  auto run = runLattice(fmt::format("render '{}/scenes/sphere-hole.toml' --width 96 --height 72 --device tek4027 "
+                                    "--stream '{}' -q", LATTICE_SOURCE_DIR, stream));
+  REQUIRE(run.exitCode == 0);
+  const std::vector<std::uint8_t> bytes = lattice::readWholeFile(stream);
+  const std::size_t requests = lattice::devices::makeDevice("tek4027").replies->points(bytes).size();
+  REQUIRE(requests > 1);
+
+  lattice::io::PtyPair sender, terminal;  // each keeps its own slave open: no EIO while a side is closed
+  std::atomic<bool> stop{false};
+  std::thread cable([&] {
+    const int a = sender.masterFd(), b = terminal.masterFd();
+    char buffer[4096];
+    while (!stop) {
+      pollfd p[2] = {{a, POLLIN, 0}, {b, POLLIN, 0}};
+      ::poll(p, 2, 20);
+      ssize_t n;
+      if ((p[0].revents & POLLIN) && (n = ::read(a, buffer, sizeof buffer)) > 0) (void)!::write(b, buffer, static_cast<std::size_t>(n));
+      if ((p[1].revents & POLLIN) && (n = ::read(b, buffer, sizeof buffer)) > 0) (void)!::write(a, buffer, static_cast<std::size_t>(n));
+    }
+  });
+  lattice::testing::CommandRun term;
+  std::thread termThread([&] {
+    term = runLattice(fmt::format("term --device tek4027 --port '{}' --baud 9600 --record '{}' --snapshot '{}'",
+                                  terminal.slavePath(), scratch / "r.tek", scratch / "s.png"));
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // the terminal opens its line
+  run = runLattice(fmt::format("send '{}' --device tek4027 --port '{}' --baud 9600 --stall-timeout 20", stream,
+                               sender.slavePath()));
+  INFO(run.stderrText);
+  CHECK(run.exitCode == 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // the last bytes cross
+  stop = true;  // the cable is unplugged before its descriptor closes (a closed number is soon reused)
+  cable.join();
+  terminal.closeMaster();  // the line hangs up: the session ends
+  termThread.join();
+  INFO("term exit " << term.exitCode << ": " << term.stderrText);
+  REQUIRE(term.exitCode == 0);
+  CHECK_THAT(term.stderrText, Catch::Contains(fmt::format("{} bytes received, {} answers sent", bytes.size(), requests)));
+  CHECK(lattice::readWholeFile(scratch / "r.tek") == bytes);
+  requireSnapshotIsRecording(scratch, "tek4027");
 }
