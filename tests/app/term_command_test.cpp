@@ -131,19 +131,22 @@ TEST_CASE("term: a program that is killed leaves the terminal restored, the reco
   requireSnapshotIsRecording(scratch, "tek4125");
 }
 
-TEST_CASE("term: SIGTERM and the quit key end the session like the program's end", "[term]") {
+TEST_CASE("term: SIGTERM and the quit key end the session like the program's end, the PNG key writes the screen", "[term]") {
   for (const bool quitKey : {false, true}) {
     const lattice::testing::TempDir scratch("term-signal");
     lattice::testing::PtyHost host(24, 80, 0, 0, false);
-    host.start({"term", "--snapshot", scratch / "s.png", "--record", scratch / "r.tek", "--", "sh", "-c",
-                fmt::format("cat '{}'; sleep 60", kPlate)});
+    host.start({"term", "--snapshot", scratch / "s.png", "--record", scratch / "r.tek", "--png-prefix",
+                scratch / "key", "--", "sh", "-c", fmt::format("cat '{}'; sleep 60", kPlate)});
     // Until the whole stream has arrived and been drawn (the snapshot's last rewrite).
     for (int i = 0; i < 100 && !(std::filesystem::exists(scratch / "s.png") && host.sawRaw()); ++i) host.pump(0.1);
     host.pump(0.5);
-    if (quitKey)
+    if (quitKey) {
+      host.type("\x1c");  // the PNG key first
+      host.pump(0.5);
       host.type("\x1d");
-    else
+    } else {
       host.signal(SIGTERM);
+    }
     CHECK(host.wait(20) == 0);
     INFO(host.output());
     CHECK_THAT(host.output(), Catch::Contains(quitKey ? "the quit key" : "stopped by SIGTERM"));
@@ -151,6 +154,10 @@ TEST_CASE("term: SIGTERM and the quit key end the session like the program's end
     CHECK(host.restored());
     CHECK(lattice::readWholeFile(scratch / "r.tek") == lattice::readWholeFile(kPlate));
     requireSnapshotIsRecording(scratch, "tek4125");
+    if (quitKey) {
+      CHECK_THAT(host.output(), Catch::Contains("wrote " + scratch / "key-1.png"));
+      CHECK(lattice::io::readPng(scratch / "key-1.png").rgb == lattice::io::readPng(scratch / "s.png").rgb);
+    }
   }
 }
 
