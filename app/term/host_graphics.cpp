@@ -53,6 +53,17 @@ bool readHostAnswers(const std::string& text, HostGraphics& host) {
   return true;
 }
 
+bool readWindowSize(int fd, HostGraphics& host) {
+  winsize size{};
+  if (::ioctl(fd, TIOCGWINSZ, &size) != 0 || size.ws_col == 0 || size.ws_row == 0) return false;
+  const int cellWidth = host.cellWidth(), cellHeight = host.cellHeight();
+  host.columns = size.ws_col;
+  host.rows = size.ws_row;
+  host.pixelWidth = size.ws_xpixel > 0 ? size.ws_xpixel : cellWidth * host.columns;
+  host.pixelHeight = size.ws_ypixel > 0 ? size.ws_ypixel : cellHeight * host.rows;
+  return true;
+}
+
 HostGraphics askHost(int in, int out) {
   HostGraphics host;
   winsize size{};

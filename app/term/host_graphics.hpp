@@ -39,4 +39,9 @@ bool readHostAnswers(const std::string& text, HostGraphics& host);
 // Asks the terminal on `in` / `out` (raw mode) and reads its window size.
 HostGraphics askHost(int in, int out);
 
+// Reads the window's size again (after SIGWINCH) into `host`; where the
+// terminal gives no pixel size, the text cells keep the size they had.
+// False when the size cannot be read.
+bool readWindowSize(int fd, HostGraphics& host);
+
 }  // namespace lattice::app

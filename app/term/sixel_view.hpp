@@ -56,6 +56,8 @@ class SixelView {
   int width() const { return width_; }
   int height() const { return height_; }
   int textRows() const { return bands_; }  // text rows the picture covers
+  int screenWidth() const { return screenWidth_; }
+  int screenHeight() const { return screenHeight_; }
   const ViewStats& stats() const { return stats_; }
   // The view as last drawn: what a capture of the host should show.
   IndexedImage shown() const;

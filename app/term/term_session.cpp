@@ -16,6 +16,7 @@
 #include "app/term/term_screen.hpp"
 #include "app/term/term_source.hpp"
 #include "app/term/term_write.hpp"
+#include "app/term/window_resizes.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/system/atomic_file.hpp"
 #include "io/png.hpp"
@@ -38,13 +39,16 @@ std::string nextPngPath(const std::string& prefix) {
   }
 }
 
+ViewGeometry geometryOf(const HostGraphics& host) {
+  return {host.columns, host.rows, host.cellWidth(), host.cellHeight(), host.registers};
+}
+
 // The display in the user's terminal, when it shows sixels.
 class Display {
  public:
   Display(const HostGraphics& host, const devices::Device& device)
       : host_(host),
-        view_(ViewGeometry{host.columns, host.rows, host.cellWidth(), host.cellHeight(), host.registers}, device.width,
-              device.height),
+        view_(geometryOf(host), device.width, device.height),
         title_(device.title) {
     writeText(1, "\x1b[?25l\x1b[2J");  // hide the text cursor, clear
   }
@@ -67,6 +71,13 @@ class Display {
     }
     writeText(1, fmt::format("\x1b[{};1H\x1b[2K{} | {} bytes | Ctrl-] quits, Ctrl-\\ writes a PNG", host_.rows,
                              title_, screen.bytes()));
+  }
+  // The window changed size: the picture is fitted again and drawn whole at the next draw.
+  void resize() {
+    if (!readWindowSize(1, host_)) return;
+    view_ = SixelView(geometryOf(host_), view_.screenWidth(), view_.screenHeight());
+    dialog_.clear();
+    writeText(1, "\x1b[2J");
   }
   const SixelView& view() const { return view_; }
   SixelView& view() { return view_; }
@@ -93,14 +104,16 @@ TermResult runTerm(const TermOptions& options, const TermSay& say) {
   io::SendSignals signals;  // SIGINT, SIGTERM, SIGHUP end the session in order
   HostTerminal host(0);
   std::optional<Display> display;
+  std::optional<WindowResizes> resizes;
   if (options.display == TermOptions::Display::Auto) {
     if (!host.isTerminal() || !::isatty(1)) {
       say("no display: standard input and output are not both a terminal (--snapshot keeps the screen)");
     } else {
       const HostGraphics graphics = askHost(0, 1);
-      if (graphics.sixel)
+      if (graphics.sixel) {
         display.emplace(graphics, device);
-      else
+        resizes.emplace();
+      } else
         say(fmt::format("no display: {}; xterm -ti vt340, mlterm, foot or WezTerm show sixels "
                         "(--snapshot keeps the screen)", graphics.why));
     }
@@ -142,6 +155,10 @@ TermResult runTerm(const TermOptions& options, const TermSay& say) {
       result.endReason = fmt::format("stopped by {}", io::signalName(signals.caught()));
       source->stop();
       break;
+    }
+    if (resizes && resizes->take()) {
+      display->resize();
+      dirty = true;  // redrawn whole even if no byte comes
     }
     if (keysOpen && (fds[keysAt].revents & (POLLIN | POLLHUP | POLLERR))) {
       std::uint8_t keys[4096];

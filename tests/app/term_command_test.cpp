@@ -232,6 +232,21 @@ TEST_CASE("term draws the screen as sixels in a terminal that says it shows them
   CHECK(host.restored());
 }
 
+TEST_CASE("term fits the picture again when the window changes size", "[term]") {
+  const lattice::testing::TempDir scratch("term-resize");
+  lattice::testing::PtyHost host(40, 100, 1000, 800, true);
+  host.start({"term", "--snapshot", scratch / "s.png", "--", "sh", "-c", fmt::format("cat '{}'; sleep 3", kPlate)});
+  for (int i = 0; i < 100 && host.output().find("\"1;1;925;") == std::string::npos; ++i) host.pump(0.05);
+  REQUIRE(host.output().find("\"1;1;925;") != std::string::npos);  // drawn at 925 x 740 in 100 x 40 cells
+  host.pump(0.3);
+  host.resize(30, 60, 600, 600);  // 60 x 30 cells of 10 x 20: 600 x 540 above the text rows
+  CHECK(host.wait(20) == 0);
+  INFO(host.output().substr(host.output().size() > 300 ? host.output().size() - 300 : 0));
+  // Fitted again: 1280 x 1024 into 600 x 540 is 600 x 480, drawn whole from the top.
+  CHECK(host.output().find("\x1b[1;1H\x1bPq\"1;1;600;480") != std::string::npos);
+  CHECK(host.restored());
+}
+
 TEST_CASE("term: usage errors name the fix", "[term][cli]") {
   auto run = runLattice("term");
   CHECK(run.exitCode == 2);

@@ -95,6 +95,15 @@ class PtyHost {
       if (done_ && n <= 0) return;
     }
   }
+  // The window changes size: the kernel sends SIGWINCH to the program.
+  void resize(int rows, int columns, int pixelWidth, int pixelHeight) {
+    winsize size{};
+    size.ws_row = static_cast<unsigned short>(rows);
+    size.ws_col = static_cast<unsigned short>(columns);
+    size.ws_xpixel = static_cast<unsigned short>(pixelWidth);
+    size.ws_ypixel = static_cast<unsigned short>(pixelHeight);
+    ::ioctl(slave_, TIOCSWINSZ, &size);
+  }
   void type(const std::string& keys) { (void)!::write(pty_.masterFd(), keys.data(), keys.size()); }
   void signal(int s) { ::kill(child_, s); }
   // Pumps until the program exits (at most `seconds`); its exit code, or -1.
