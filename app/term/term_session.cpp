@@ -63,7 +63,7 @@ class Display {
     // The dialog area's last lines, on the rows between the picture and the status line.
     const std::vector<std::string> lines =
         lastDialogLines(screen.dialogText(), kTextRowsBelow - 1, static_cast<std::size_t>(host_.columns));
-    if (lines != dialog_) {
+    if (lines != dialog_ && host_.rows > kTextRowsBelow) {  // a window of a few rows has no room for them
       for (int i = 0; i < kTextRowsBelow - 1; ++i)
         writeText(1, fmt::format("\x1b[{};1H\x1b[2K{}", host_.rows - (kTextRowsBelow - 1) + i,
                                  static_cast<std::size_t>(i) < lines.size() ? lines[static_cast<std::size_t>(i)] : ""));
