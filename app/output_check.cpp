@@ -45,12 +45,28 @@ void checkOutputPath(const std::string& path, const std::string& flag, bool forc
   }
 }
 
+namespace {
+
+// An option checked with CLI::ExistingFile reads a file (`term --stream`
+// plays one): it is an input, whatever its name.
+bool namesExistingFile(CLI::Option& option) {
+  try {
+    option.get_validator("FILE");
+    return true;
+  } catch (const CLI::OptionNotFound&) {
+    return false;
+  }
+}
+
+}  // namespace
+
 void guardOutputs(CLI::App& root) {
   for (CLI::App* command : root.get_subcommands([](const CLI::App*) { return true; })) {
     guardOutputs(*command);
     std::vector<CLI::Option*> outputs;
-    for (const char* name : {"--output", "--stream"})
-      if (CLI::Option* option = command->get_option_no_throw(name)) outputs.push_back(option);
+    for (const char* name : {"--output", "--stream", "--snapshot", "--record"})
+      if (CLI::Option* option = command->get_option_no_throw(name); option && !namesExistingFile(*option))
+        outputs.push_back(option);
     if (outputs.empty()) continue;
     CLI::Option* force = command->get_option_no_throw("--force");
     if (force == nullptr)

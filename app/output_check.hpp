@@ -19,8 +19,9 @@ namespace lattice::app {
 // Throws Error(Output) naming `flag`, the path and the fix.
 void checkOutputPath(const std::string& path, const std::string& flag, bool force);
 
-// For every command of `root` (nested ones too) with an -o/--output or
-// --stream option: adds --force and checks the paths given as soon as the
+// For every command of `root` (nested ones too) with an -o/--output,
+// --stream, --snapshot or --record option that writes (one checked with
+// CLI::ExistingFile reads): adds --force and checks the paths given as soon as the
 // command's flags are parsed, before its work starts. Reads the CLI11 tree,
 // so a command added later is covered without being listed here.
 void guardOutputs(CLI::App& root);

@@ -12,4 +12,15 @@ std::string DecodeReport::summary() const {
   return s;
 }
 
+const std::string& StreamDecoder::dialogText() const {
+  static const std::string none;
+  return none;
+}
+
+void appendDialogText(std::string& text, std::uint8_t c) {
+  // Trimmed by half at a time, so a long session costs one move per 2 KiB.
+  if (text.size() >= kDialogKeepBytes) text.erase(0, kDialogKeepBytes / 2);
+  text.push_back(static_cast<char>(c));
+}
+
 }  // namespace lattice

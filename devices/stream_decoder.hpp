@@ -37,6 +37,16 @@ class StreamDecoder {
   virtual void finish() = 0;
   virtual const IndexedImage& image() const = 0;
   virtual const DecodeReport& report() const = 0;
+  // The alphanumeric text the stream wrote for the terminal's dialog area
+  // (a 4100-series terminal's ANSI-mode and alpha-mode characters, with CR
+  // and LF), its last kDialogKeepBytes; empty for a device without one.
+  // `lattice term` shows its last lines below the picture.
+  virtual const std::string& dialogText() const;
 };
+
+inline constexpr std::size_t kDialogKeepBytes = 4096;
+
+// Appends `c` to a dialog area's text, keeping its last kDialogKeepBytes.
+void appendDialogText(std::string& text, std::uint8_t c);
 
 }  // namespace lattice

@@ -26,7 +26,8 @@
 // * Flags that wait on the outside world are not given: `ports --wait`
 //   (waits for a person to plug in an adapter), and a --port other than the
 //   virtual terminals or a missing path; --baud is left at its default so
-//   pacing a few hundred bytes takes milliseconds.
+//   pacing a few hundred bytes takes milliseconds (`term --stream` plays the
+//   input at the device's rate: 512 bytes in well under a second).
 // * The answer is an exit code; Error and CLI11's errors are the expected
 //   answers to bad input. A crash, a sanitizer report, an uncaught exception
 //   or a hang (libFuzzer's -timeout) is a finding.
@@ -171,6 +172,8 @@ void commandLine(std::span<const std::uint8_t> bytes) {
   // A scene is always the small one: a scene from the input bytes could ask
   // for legitimately hours of work (a 16384-pixel side, a fine lattice), which
   // libFuzzer would report as a hang; the scene reader has its own target.
+  // term's program is a scratch file, never executable: a fuzzer must not run
+  // what its bytes name, and exec's refusal is the answer checked.
   for (const std::string& positional : command.positionals)
     argv.push_back(positional == "scene" ? files[1] : files[in.next() % std::size(files)]);
   while (!in.done() && !command.flags.empty() && argv.size() < 48) {
@@ -190,6 +193,10 @@ void commandLine(std::span<const std::uint8_t> bytes) {
   // the input: its short form keeps a run well inside libFuzzer's timeout.
   if (command.words.front() == "table1" && std::find(argv.begin(), argv.end(), "--quick") == argv.end())
     argv.push_back("--quick");
+  // `term --stream` plays at the device's rate, which a `--set baud=1` makes
+  // hours for a few hundred bytes: played unpaced, it decodes the same bytes.
+  if (command.words.front() == "term" && std::find(argv.begin(), argv.end(), "--stream") != argv.end())
+    argv.push_back("--unpaced");
   std::vector<char*> raw;
   for (std::string& word : argv) raw.push_back(word.data());
   // LATTICE_FUZZ_SHOW_ARGV=1 prints the command line an input becomes: how a

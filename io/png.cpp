@@ -11,27 +11,29 @@
 namespace lattice::io {
 namespace {
 
-void writeEncoded(const std::filesystem::path& path, const PngPixels& pixels, const PngEncoding& encoding) {
-  AtomicFile file(path);
+void writeEncoded(const std::filesystem::path& path, const PngPixels& pixels, const PngEncoding& encoding,
+                  AtomicFile::Landing landing) {
+  AtomicFile file(path, landing);
   encodePng(pixels, encoding, file);
   file.close();
 }
 
 }  // namespace
 
-void writePng(const std::filesystem::path& path, const RgbImage& img, unsigned threads) {
+void writePng(const std::filesystem::path& path, const RgbImage& img, unsigned threads, AtomicFile::Landing landing) {
   if (img.width <= 0 || img.height <= 0)
     throw Error(ErrorKind::Output, fmt::format("{}: cannot write an empty image", path.string()));
   PngEncoding encoding;
   encoding.threads = threads;
-  writeEncoded(path, {img.width, img.height, img.rgb, {}}, encoding);
+  writeEncoded(path, {img.width, img.height, img.rgb, {}}, encoding, landing);
 }
 
-void writePng(const std::filesystem::path& path, const IndexedImage& img, unsigned threads) {
+void writePng(const std::filesystem::path& path, const IndexedImage& img, unsigned threads,
+              AtomicFile::Landing landing) {
   if (img.width <= 0 || img.height <= 0)
     throw Error(ErrorKind::Output, fmt::format("{}: cannot write an empty image", path.string()));
   if (img.colormap.empty() || img.colormap.size() > 256) {
-    writePng(path, toRgbImage(img), threads);
+    writePng(path, toRgbImage(img), threads, landing);
     return;
   }
   // Indices beyond the map would make a PNG no decoder accepts; clamp them to
@@ -41,7 +43,7 @@ void writePng(const std::filesystem::path& path, const IndexedImage& img, unsign
     if (p >= img.colormap.size()) p = 0;
   PngEncoding encoding;  // no filter, as W3C PNG 12.8 advises for palette pictures
   encoding.threads = threads;
-  writeEncoded(path, {img.width, img.height, pixels, img.colormap}, encoding);
+  writeEncoded(path, {img.width, img.height, pixels, img.colormap}, encoding, landing);
 }
 
 }  // namespace lattice::io

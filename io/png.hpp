@@ -13,13 +13,18 @@
 #include <vector>
 
 #include "foundation/indexed_image.hpp"
+#include "foundation/system/atomic_file.hpp"
 #include "foundation/rgb_image.hpp"
 
 namespace lattice::io {
 
-void writePng(const std::filesystem::path& path, const RgbImage& image, unsigned threads = 0);
+// `landing`: with the command's other outputs (the default), or at once
+// (a terminal's snapshot, rewritten while the session goes on).
+void writePng(const std::filesystem::path& path, const RgbImage& image, unsigned threads = 0,
+              AtomicFile::Landing landing = AtomicFile::Landing::WithCommand);
 // Writes a palette PNG (colour type 3) when the map has <= 256 entries.
-void writePng(const std::filesystem::path& path, const IndexedImage& image, unsigned threads = 0);
+void writePng(const std::filesystem::path& path, const IndexedImage& image, unsigned threads = 0,
+              AtomicFile::Landing landing = AtomicFile::Landing::WithCommand);
 // The largest picture a PNG read accepts (docs/limits.md): 2^26 pixels,
 // e.g. 8192 x 8192, 192 MiB as 8-bit RGB. Larger headers are refused (exit 3)
 // before any pixel memory is allocated.

@@ -47,7 +47,8 @@ declare -A within=(
   [devices/*]="devices"
   [devices]="devices/*"
   [app/cli]="app"
-  [app/commands]="app/cli app"
+  [app/term]="app"
+  [app/commands]="app/cli app/term app"
   [app]=""
 )
 

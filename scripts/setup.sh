@@ -5,7 +5,8 @@
 # write. `--terminals` adds the terminals people own and the programs that
 # check our pictures of them: libsixel-bin (sixel2png, img2sixel), xterm, xvfb
 # and x11-apps (xwd), for the sixel and Tek 4014 tests
-# (tests/support/xterm_capture.hpp; scripts/test.sh asks for them). `--bench`
+# (tests/support/xterm_capture.hpp; scripts/test.sh asks for them), and
+# plotutils, whose `graph -T tek` runs inside `lattice term --device tek4014`. `--bench`
 # adds the peers the benchmarks compare against (POV-Ray,
 # Embree, pngquant, GNU time, and libsixel-dev: libsixel's headers and library,
 # for bench/sixel_encoder_bench, which times libsixel's sixel_encode beside our
@@ -29,7 +30,7 @@ packages=(cmake ninja-build g++ make pkg-config git catch2 libglm-dev libpng-dev
           libtomlplusplus-dev libcli11-dev libfmt-dev gnuplot-nox)
 for option in "$@"; do
   case $option in
-    --terminals) packages+=(libsixel-bin xterm xvfb x11-apps) ;;
+    --terminals) packages+=(libsixel-bin xterm xvfb x11-apps plotutils) ;;
     --bench) packages+=(povray libembree-dev pngquant time python3 libsixel-dev libspng-dev) ;;
     --fuzz) packages+=(clang-14 libclang-rt-14-dev llvm-14) ;;
     --firmware) packages+=(gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm ccache) ;;

@@ -21,11 +21,13 @@ void addRender(CLI::App& root);
 void addSend(CLI::App& root);
 void addShow(CLI::App& root);
 void addTable1(CLI::App& root);
+void addTerm(CLI::App& root);
 
 using CommandAdder = void (*)(CLI::App& root);
 
 // In the order `lattice --help` lists them.
 inline constexpr CommandAdder kCommands[] = {addBake,     addDiff,   addEmulate, addExport, addLhtInfo, addPorts,
-                                             addQuantize, addRasterize, addRender, addSend, addShow, addTable1};
+                                             addQuantize, addRasterize, addRender, addSend, addShow, addTable1,
+                                             addTerm};
 
 }  // namespace lattice::app

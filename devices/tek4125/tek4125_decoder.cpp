@@ -204,7 +204,12 @@ void Tek4125Decoder::feedByte(std::uint8_t c) {
 }
 
 void Tek4125Decoder::ground(std::uint8_t c) {
-  if (!tekMode_) return;  // ANSI mode: text for the dialog area, not graphics
+  const bool text = (c >= 0x20 && c < kDel) || c == '\n' || c == kCR;
+  if (!tekMode_) {  // ANSI mode: text for the dialog area, not graphics
+    if (text) appendDialogText(dialog_, c);
+    return;
+  }
+  if (!graphMode_ && text) appendDialogText(dialog_, c);  // alpha mode: the dialog area's text
   if (c == kGS) {
     graphMode_ = true;
     darkVector_ = true;

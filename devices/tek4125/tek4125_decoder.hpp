@@ -32,6 +32,7 @@ class Tek4125Decoder final : public StreamDecoder {
   void finish() override;
   const IndexedImage& image() const override { return screen_; }
   const DecodeReport& report() const override { return report_; }
+  const std::string& dialogText() const override { return dialog_; }
   bool inTekMode() const { return tekMode_; }
 
   // The power-up colour map (a reading: tek4125_readings.hpp).
@@ -110,6 +111,7 @@ class Tek4125Decoder final : public StreamDecoder {
   bool panelOpen_ = false;
   bool panelBoundary_ = false;
   std::vector<int> panel_;  // terminal coordinates x0, y0, x1, y1, ...
+  std::string dialog_;      // alphanumeric text: ANSI mode, and alpha mode in Tek mode
 };
 
 std::unique_ptr<Tek4125Decoder> makeTek4125Decoder(const Tek4125Profile& profile);

@@ -199,9 +199,11 @@ XtermCapture captureXterm(const XtermCaptureOptions& o) {
   xtermArgs.insert(xtermArgs.end(), o.xtermArguments.begin(), o.xtermArguments.end());
   const std::vector<std::string> shell = {
       "-e", "sh", "-c",
-      "printf '\\033[?25l'; cat \"$1\"; printf %s \"$WINDOWID\" > \"$2.part\"; mv \"$2.part\" \"$2\"; exec sleep 600",
+      "s=\"$1\"; m=\"$2\"; shift 2; printf '\\033[?25l'; if [ $# -gt 0 ]; then \"$@\"; else cat \"$s\"; fi; "
+      "printf %s \"$WINDOWID\" > \"$m.part\"; mv \"$m.part\" \"$m\"; exec sleep 600",
       "sh", o.streamFile, marker};
   xtermArgs.insert(xtermArgs.end(), shell.begin(), shell.end());
+  xtermArgs.insert(xtermArgs.end(), o.command.begin(), o.command.end());
   Child xterm(xtermArgs, display);
 
   std::string windowId;

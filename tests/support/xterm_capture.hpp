@@ -14,7 +14,8 @@
 //  * xterm runs with `-geometry +0+0 -b 0 -bw 0` before the caller's
 //    arguments (internal border and window border 0: the window's pixel
 //    (0,0) is the terminal's), and `-e sh -c ...`: the shell hides the cursor
-//    (CSI ? 25 l), copies the stream to the terminal, then writes xterm's
+//    (CSI ? 25 l), copies the stream to the terminal (or runs the given
+//    command there, which draws for itself), then writes xterm's
 //    $WINDOWID to a marker file and sleeps until it is killed.
 //  * Once the marker exists the window is captured with `xwd -id WINDOWID`
 //    every 250 ms until two captures in a row are identical (xterm draws
@@ -35,6 +36,9 @@ namespace lattice::testing {
 struct XtermCaptureOptions {
   std::vector<std::string> xtermArguments;  // e.g. {"-ti", "vt340", "-xrm", "XTerm*numColorRegisters: 256"}
   std::string streamFile;                   // copied to the terminal as it is
+  // Non-empty: run this program in the terminal instead (argv, no shell),
+  // e.g. `lattice term --stream FILE`; the capture starts once it has exited.
+  std::vector<std::string> command;
   // Empty: capture xterm's VT window ($WINDOWID). Otherwise the top-level
   // window of this name (xwd -name): "tektronix(Tek)" is `xterm -t`'s Tek 4014
   // window, a window of its own beside the (unmapped) VT one. Either way the
