@@ -22,7 +22,8 @@
 // * Work that is legitimately long is kept out, so a timeout means a hang:
 //   a scene argument is always the small scene (a scene of the input's bytes
 //   could ask for a 16384-pixel side or a fine lattice; the scene reader is
-//   fuzzed by its own target), and table1 runs its short form.
+//   fuzzed by its own target), table1 runs its short form, and a render
+//   with a wire budget is given the scene's size (no size search).
 // * Flags that wait on the outside world are not given: `ports --wait`
 //   (waits for a person to plug in an adapter), and a --port other than the
 //   virtual terminals or a missing path; --baud is left at its default so
@@ -193,6 +194,14 @@ void commandLine(std::span<const std::uint8_t> bytes) {
   // the input: its short form keeps a run well inside libFuzzer's timeout.
   if (command.words.front() == "table1" && std::find(argv.begin(), argv.end(), "--quick") == argv.end())
     argv.push_back("--quick");
+  // A wire budget with no size searches picture sizes up to the device's
+  // whole screen, each rendered and searched: seconds of legitimate work
+  // under the sanitizers. Given the small scene's own size, the search is
+  // the fixed-size one.
+  const auto given = [&](const char* flag) { return std::find(argv.begin(), argv.end(), flag) != argv.end(); };
+  if (command.words.front() == "render" && (given("--wire-seconds") || given("--wire-bytes")) && !given("--width") &&
+      !given("--height"))
+    argv.insert(argv.end(), {"--width", "12", "--height", "10"});
   // `term --stream` plays at the device's rate, which a `--set baud=1` makes
   // hours for a few hundred bytes: played unpaced, it decodes the same bytes.
   if (command.words.front() == "term" && std::find(argv.begin(), argv.end(), "--stream") != argv.end())
