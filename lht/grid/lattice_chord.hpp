@@ -12,8 +12,9 @@
 //   rounding maps -0 and +0 alike.
 // * clipToCells: the slab test of Bounds::clip over [0, cells] along the
 //   whole line, with the three reciprocals taken first (independent
-//   divisions the CPU overlaps) and Bounds::clip's compare and swap as
-//   selects: the same t0 and t1.
+//   divisions the CPU overlaps; in fixed point the ray keeps them, and the
+//   leaf's look-up reuses them: foundation/ray.hpp) and Bounds::clip's
+//   compare and swap as selects: the same t0 and t1.
 // * nearestGridCoordinate: std::round (halves away from zero) without the
 //   library call, after the clamp to [0, cells]: truncate, then add one when
 //   the fractional part, exact in IEEE arithmetic below 2^24, is at least
@@ -54,7 +55,7 @@ class LatticeAffine {
 template <typename T>
 inline bool clipToCells(const Ray<T>& ray, const Vec3<T>& cells, T& t0Out, T& t1Out) {
   T inv[3];
-  for (int a = 0; a < 3; ++a) inv[a] = ray.direction[a] == T(0) ? T(0) : T(1) / ray.direction[a];
+  for (int a = 0; a < 3; ++a) inv[a] = ray.direction[a] == T(0) ? T(0) : ray.inverseDirection(a);
   T t0 = -std::numeric_limits<T>::infinity(), t1 = std::numeric_limits<T>::infinity();
   for (int a = 0; a < 3; ++a) {
     const T o = ray.origin[a];
