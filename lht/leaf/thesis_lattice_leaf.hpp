@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <memory>
 
 #include "foundation/error.hpp"
@@ -87,17 +86,6 @@ class LatticeLeafBase : public Primitive<T> {
   }
   // One cell along the ray, in t: the reach of the rounding error.
   static T oneCell(const Chord& c) { return T(1) / lattice::length(c.local.direction); }
-  // In fixed point, a bound oneCell never exceeds, from the reciprocals the
-  // clip kept: the raw length is floor(sqrt(sum raw^2)), at least the largest
-  // |raw| of a component, and the rounded quotient 1 / x falls as x grows, so
-  // oneCell <= 1 / max |d_a| = min |1 / d_a|. Infinity when no component moves.
-  static T oneCellBound(const Chord& c) {
-    T bound = std::numeric_limits<T>::infinity();
-    for (int a = 0; a < 3; ++a)
-      if (c.local.direction[a] != T(0)) bound = std::min(bound, absolute(c.local.inverseDirection(a)));
-    return bound;
-  }
-
   // The span from the entry's s and normal and, when haveLeave, the exit's,
   // appended unless a rule below drops it.
   void emitSpan(const Chord& chord, T tmin, T tmax, Span<T> span, T enterS, T leaveS, bool haveLeave,
@@ -241,7 +229,7 @@ class ThesisLatticeLeaf final : public LatticeLeafBase<T> {
     // An enter at least the bound past tmin is at least one cell past it:
     // the same answer without oneCell's square root and division.
     if constexpr (!kIsIeee<T>)
-      if (at.enterT > tmin && !(at.enterT < tmin + Base::oneCellBound(c))) return Found::EnterAhead;
+      if (at.enterT > tmin && !(at.enterT < tmin + oneCellBound(c.local))) return Found::EnterAhead;
     const T past = tmin + Base::oneCell(c);
     if (at.enterT > tmin && !(at.enterT < past)) return Found::EnterAhead;
     at.leaveEntry = this->find(c.out, c.in);
