@@ -234,16 +234,15 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
     tables.packing = tablePackingWithin(*budget, job.events);
     bound = lht::withTableSettings(loaded, tables);
   }
-  Renderer<T> renderer(bound ? bound->scene : loaded.scene, settings);
-  // The renderer holds its own tree now; the scene's node descriptions (a
-  // scatter's are 262 B an instance, and a budget's copy doubles them) go
-  // before the output's buffers come (docs/memory.md), unless a wire
-  // budget's size search renders the scene again at other sizes.
+  // The renderer takes the node tree, releasing each set operation's
+  // descriptions (a scatter's are 262 B an instance) once its operands are
+  // built, before its BVH's build and the output's buffers (docs/memory.md);
+  // a wire budget's size search renders the scene again at other sizes, so
+  // then the renderer copies it.
   const bool sizeSearch = device && job.wire && job.width == 0 && job.height == 0;
-  if (!sizeSearch) {
-    loaded.scene.root = NodeDesc{};
-    if (bound) bound->scene.root = NodeDesc{};
-  }
+  SceneDesc& scene = bound ? bound->scene : loaded.scene;
+  Renderer<T> renderer = sizeSearch ? Renderer<T>(scene, settings) : Renderer<T>(std::move(scene), settings);
+  if (!sizeSearch) loaded.scene.root = NodeDesc{};  // under a budget its copy was built: the loaded tree goes too
   if (job.memoryBudget) {
     const MemoryPlan plan = planBuiltRender(*budget, job.events);
     pipeline.mode = plan.mode;

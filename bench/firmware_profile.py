@@ -2,7 +2,7 @@
 """A sampling profile of the firmware as it runs under QEMU (docs/firmware.md,
 "Profile"): where the instructions of the real ARM image go, by function.
 
-    bench/firmware_profile.py ELF --machine netduinoplus2 [--interval 0.01] [--top 30]
+    bench/firmware_profile.py ELF --machine netduinoplus2 [--interval 0.01] [--top 30] [--callers REGEX]
 
 Method and tunables: QEMU runs the image with -icount shift=0 (guest time is
 instructions, so wall time spent in a function follows its instruction count
@@ -15,6 +15,13 @@ fall in (the portable 128-bit class, libgcc's 64-bit division, Fixed32, the
 quantizer, the driver). A sample is a TB start, not an exact instruction:
 shares are good to a few per cent at a few thousand samples. The serial
 output is thrown away: scripts/firmware.sh checks the stream.
+--callers REGEX: each sample in a function whose name matches is charged to
+its caller too, so a kernel's share is split by who calls it. The caller is
+found on the stack: the first of the 32 words above SP that is a Thumb code
+address (odd) inside another function, the return address the callee pushed
+with its saved registers (R14 itself is a scratch register once the callee
+has pushed it). A heuristic: a saved register that happens to hold such a
+value would be charged instead; rows a caller cannot have are that noise.
 """
 import argparse
 import bisect
@@ -38,6 +45,15 @@ def symbols(elf):
             starts.append(start)
             rows.append((start, size, parts[3]))
     return starts, rows
+
+
+def function_at(starts, rows, address):
+    i = bisect.bisect_right(starts, address) - 1
+    return rows[i][2] if i >= 0 and address < rows[i][0] + max(rows[i][1], 1) else f"?{address:08x}"
+
+
+def short(name):
+    return name if len(name) <= 110 else name[:107] + "..."
 
 
 def family(name):
@@ -64,6 +80,7 @@ def main():
     ap.add_argument("--interval", type=float, default=0.01)
     ap.add_argument("--top", type=int, default=30)
     ap.add_argument("--timeout", type=float, default=3600)
+    ap.add_argument("--callers", help="split the samples of leaf functions matching this regex by caller (R14)")
     args = ap.parse_args()
     starts, rows = symbols(args.elf)
     sock_path = os.path.join(tempfile.mkdtemp(prefix="fw-profile-"), "monitor")
@@ -76,6 +93,7 @@ def main():
             break
         time.sleep(0.05)
     samples = collections.Counter()
+    callers = collections.Counter()  # (callee, caller) -> samples, for --callers
     begin = time.time()
     try:
         s = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
@@ -83,17 +101,37 @@ def main():
         s.settimeout(5)
         buffer = ""
         while qemu.poll() is None and time.time() - begin < args.timeout:
-            s.sendall(b"info registers\n")
+            # With --callers the guest stops while its stack is read, so the
+            # words belong to the sampled moment.
+            s.sendall(b"stop\ninfo registers\n" if args.callers else b"info registers\n")
             while "R15=" not in buffer or not re.search(r"R15=[0-9a-f]{8}", buffer):
                 chunk = s.recv(65536).decode(errors="replace")
                 if not chunk:
                     raise ConnectionError
                 buffer += chunk
+            sp = int(re.search(r"R13=([0-9a-f]{8})", buffer).group(1), 16)
             pc = int(re.search(r"R15=([0-9a-f]{8})", buffer).group(1), 16)
             buffer = buffer[buffer.index("R15=") + 12:]
-            i = bisect.bisect_right(starts, pc) - 1
-            name = rows[i][2] if i >= 0 and pc < rows[i][0] + max(rows[i][1], 1) else f"?{pc:08x}"
+            name = function_at(starts, rows, pc)
             samples[name] += 1
+            if args.callers and re.search(args.callers, name):
+                s.sendall(f"xp /32xw 0x{sp:08x}\n".encode())
+                dump = ""
+                while len(re.findall(r"[0-9a-f]+:(?: 0x[0-9a-f]{8}){4}", dump)) < 8:
+                    chunk = s.recv(65536).decode(errors="replace")
+                    if not chunk:
+                        raise ConnectionError
+                    dump += chunk
+                words = " ".join(re.findall(r"[0-9a-f]+:((?: 0x[0-9a-f]{8}){4})", dump))
+                caller = "?"
+                for w in re.findall(r"0x([0-9a-f]{8})", words):
+                    v = int(w, 16)
+                    if v & 1 and function_at(starts, rows, v & ~1)[0] != "?" and function_at(starts, rows, v & ~1) != name:
+                        caller = function_at(starts, rows, v & ~1)
+                        break
+                callers[(name, caller)] += 1
+            if args.callers:
+                s.sendall(b"cont\n")
             time.sleep(args.interval)
     except (ConnectionError, OSError, socket.timeout):
         pass
@@ -111,8 +149,11 @@ def main():
         print(f"| {label} | {100 * n / total:.1f} % |")
     print("\n| function | share |\n|---|---|")
     for name, n in samples.most_common(args.top):
-        short = name if len(name) <= 110 else name[:107] + "..."
-        print(f"| `{short}` | {100 * n / total:.1f} % |")
+        print(f"| `{short(name)}` | {100 * n / total:.1f} % |")
+    if args.callers:
+        print("\n| function | caller | share of all samples |\n|---|---|---|")
+        for (name, caller), n in callers.most_common(args.top):
+            print(f"| `{short(name)}` | `{short(caller)}` | {100 * n / total:.1f} % |")
     return 0
 
 

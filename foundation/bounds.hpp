@@ -44,7 +44,7 @@ struct Bounds {
         if (o < lo[a] || o > hi[a]) return false;
         continue;
       }
-      T inv = T(1) / d;
+      const T inv = ray.inverseDirection(a);  // kept by the ray in fixed point (foundation/ray.hpp)
       T ta = (lo[a] - o) * inv, tb = (hi[a] - o) * inv;
       if (ta > tb) std::swap(ta, tb);
       // NaN-safe: (inf - inf) cannot occur since o is finite; max/min keep t0/t1 finite-or-inf.

@@ -22,8 +22,12 @@
 //   quotient of raw values (round half away from zero, symmetric saturation
 //   to +-(2^63 - 1)), from the magnitudes, the sign applied last.
 //   Magnitudes below 2^32 (below 1.0 in Q31.32: unit vectors, cosines)
-//   take shorter paths: a product of two of them is one 32x32->64 product;
-//   a quotient by one (n below 2^96) is two divide64By32 digits.
+//   take shorter paths: a product of two of them is one 32x32->64 product,
+//   of one of them and a larger one two (multiply64By32); a quotient by one
+//   (n below 2^96) is two divide64By32 digits. A quotient below 2^32 (a
+//   result below 1.0: a reciprocal of more than 1.0, a component over a
+//   length) is one digit of the long division (divideDigit), where the
+//   general path computes a leading zero digit first.
 #include <cstdint>
 
 namespace lattice::wide {
@@ -40,6 +44,14 @@ constexpr U128 multiply64(std::uint64_t a, std::uint64_t b) {
   // Below 3 * 2^32: no carry is lost.
   const std::uint64_t middle = (p00 >> 32) + static_cast<std::uint32_t>(p01) + static_cast<std::uint32_t>(p10);
   return {p11 + (p01 >> 32) + (p10 >> 32) + (middle >> 32), middle << 32 | static_cast<std::uint32_t>(p00)};
+}
+
+// The product of a 64-bit and a 32-bit value: two 32x32->64 products.
+constexpr U128 multiply64By32(std::uint64_t a, std::uint32_t b) {
+  const std::uint64_t p0 = std::uint64_t(static_cast<std::uint32_t>(a)) * b;
+  const std::uint64_t p1 = std::uint64_t(static_cast<std::uint32_t>(a >> 32)) * b;
+  const std::uint64_t middle = (p0 >> 32) + static_cast<std::uint32_t>(p1);  // below 2^33
+  return {(p1 >> 32) + (middle >> 32), middle << 32 | static_cast<std::uint32_t>(p0)};
 }
 
 // q = (high:low) / d, rest in `remainder`; d >= 2^31, high < d.
@@ -62,35 +74,39 @@ constexpr std::uint32_t divide64By32(std::uint32_t high, std::uint32_t low, std:
   return quotient;
 }
 
+// One base-2^32 digit of a long division: q = (partial:next) / d for a
+// normalised d (d >= 2^63) and partial < d; partial becomes the rest.
+constexpr std::uint32_t divideDigit(std::uint64_t& partial, std::uint32_t next, std::uint64_t d) {
+  const std::uint32_t dHigh = static_cast<std::uint32_t>(d >> 32), dLow = static_cast<std::uint32_t>(d);
+  const std::uint32_t top = static_cast<std::uint32_t>(partial >> 32), second = static_cast<std::uint32_t>(partial);
+  // Estimate from (top:second) / dHigh; top <= dHigh since partial < d.
+  std::uint32_t q;
+  std::uint64_t r;  // the estimate's rest, (top:second) - q dHigh, may reach 2^32
+  if (top >= dHigh) {
+    q = 0xffffffffu;
+    r = std::uint64_t(second) + dHigh;  // (top:second) - (2^32 - 1) dHigh with top == dHigh
+  } else {
+    std::uint32_t rest = 0;
+    q = divide64By32(top, second, dHigh, rest);
+    r = rest;
+  }
+  // With a two-digit divisor this test is exact: q d > (partial:next) iff it holds.
+  while (r >> 32 == 0 && std::uint64_t(q) * dLow > (r << 32 | next)) {
+    --q;
+    r += dHigh;
+  }
+  // The new rest is below d: modulo 2^64 is exact.
+  partial = (partial << 32 | next) - (std::uint64_t(q) * dLow + (std::uint64_t(q * dHigh) << 32));
+  return q;
+}
+
 // q = (high:low) / d, rest in `remainder`; d >= 2^63, high < d.
 constexpr std::uint64_t divide128By64(std::uint64_t high, std::uint64_t low, std::uint64_t d, std::uint64_t& remainder) {
-  const std::uint32_t dHigh = static_cast<std::uint32_t>(d >> 32), dLow = static_cast<std::uint32_t>(d);
-  const std::uint32_t lowDigits[2] = {static_cast<std::uint32_t>(low >> 32), static_cast<std::uint32_t>(low)};
-  std::uint64_t partial = high, quotient = 0;  // the running rest, < d
-  for (const std::uint32_t next : lowDigits) {
-    const std::uint32_t top = static_cast<std::uint32_t>(partial >> 32), second = static_cast<std::uint32_t>(partial);
-    // Estimate from (top:second) / dHigh; top <= dHigh since partial < d.
-    std::uint32_t q;
-    std::uint64_t r;  // the estimate's rest, (top:second) - q dHigh, may reach 2^32
-    if (top >= dHigh) {
-      q = 0xffffffffu;
-      r = std::uint64_t(second) + dHigh;  // (top:second) - (2^32 - 1) dHigh with top == dHigh
-    } else {
-      std::uint32_t rest = 0;
-      q = divide64By32(top, second, dHigh, rest);
-      r = rest;
-    }
-    // With a two-digit divisor this test is exact: q d > (partial:next) iff it holds.
-    while (r >> 32 == 0 && std::uint64_t(q) * dLow > (r << 32 | next)) {
-      --q;
-      r += dHigh;
-    }
-    // The new rest is below d: modulo 2^64 is exact.
-    partial = (partial << 32 | next) - (std::uint64_t(q) * dLow + (std::uint64_t(q * dHigh) << 32));
-    quotient = quotient << 32 | q;
-  }
+  std::uint64_t partial = high;  // the running rest, < d
+  const std::uint32_t qHigh = divideDigit(partial, static_cast<std::uint32_t>(low >> 32), d);
+  const std::uint32_t qLow = divideDigit(partial, static_cast<std::uint32_t>(low), d);
   remainder = partial;
-  return quotient;
+  return std::uint64_t(qHigh) << 32 | qLow;
 }
 
 constexpr std::uint64_t magnitude(std::int64_t v) { return v < 0 ? 0 - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v); }
@@ -128,7 +144,9 @@ constexpr std::int64_t multiplyRaw(std::int64_t a, std::int64_t b) {
     const std::uint64_t p = std::uint64_t(static_cast<std::uint32_t>(ua)) * static_cast<std::uint32_t>(ub);
     return signedRaw(((p >> (F - 1)) + 1) >> 1, negative);  // round(p / 2^F): halves up
   }
-  const U128 p = multiply64(ua, ub);
+  const U128 p = ub >> 32 == 0   ? multiply64By32(ua, static_cast<std::uint32_t>(ub))
+                 : ua >> 32 == 0 ? multiply64By32(ub, static_cast<std::uint32_t>(ua))
+                                 : multiply64(ua, ub);
   // + 2^(F-1), then the bits from F up.
   const std::uint64_t low = p.low + (std::uint64_t(1) << (F - 1));
   const std::uint64_t high = p.high + (low < p.low ? 1 : 0);
@@ -164,16 +182,22 @@ constexpr std::int64_t divideRaw(std::int64_t a, std::int64_t b) {
     // and the next two come from (n2:n1:n0) 2^s over dn.
     const std::uint32_t top = s == 0 ? n2 : (n2 << s | n1 >> (32 - s));
     const std::uint32_t middle = s == 0 ? n1 : (n1 << s | n0 >> (32 - s));
-    std::uint32_t rest = 0;
-    const std::uint32_t qHigh = divide64By32(top, middle, dn, rest);
+    std::uint32_t rest = middle;
+    // A quotient below 2^32 has a zero top digit: (top:middle) < dn.
+    const std::uint32_t qHigh = top == 0 && middle < dn ? 0 : divide64By32(top, middle, dn, rest);
     const std::uint32_t qLow = divide64By32(rest, n0 << s, dn, rest);
     return signedRaw(std::uint64_t(qHigh) << 32 | qLow, negative);
   }
   // Normalised: n 2^s < 2^63 (ud 2^s), so its high half is below ud 2^s.
   const int s = __builtin_clzll(ud);
-  const std::uint64_t high = s == 0 ? nHigh : (nHigh << s | nLow >> (64 - s));
+  const std::uint64_t high = s == 0 ? nHigh : (nHigh << s | nLow >> (64 - s)), low = nLow << s, dn = ud << s;
+  // A quotient below 2^32 iff floor(n 2^s / 2^32) < dn: its one digit.
+  if (high >> 32 == 0) {
+    std::uint64_t partial = high << 32 | low >> 32;
+    if (partial < dn) return signedRaw(divideDigit(partial, static_cast<std::uint32_t>(low), dn), negative);
+  }
   std::uint64_t rest = 0;
-  return signedRaw(divide128By64(high, nLow << s, ud << s, rest), negative);
+  return signedRaw(divide128By64(high, low, dn, rest), negative);
 }
 
 }  // namespace lattice::wide

@@ -55,12 +55,13 @@ void parallelRows(int y0, int y1, int threads, Work&& work) {
 }  // namespace
 
 template <typename T>
-Renderer<T>::Renderer(const SceneDesc& scene, const RenderSettings& settings)
+Renderer<T>::Renderer(const SceneDesc& scene, const RenderSettings& settings, NodeDesc* release)
     : width_(resolveSide(settings.width, scene.options.width, "width")),
       height_(resolveSide(settings.height, scene.options.height, "height")),
       threads_(resolveThreads(settings.threads)),
       camera_(scene.camera, width_, height_),
-      root_(buildPrimitive<T>(scene.root, Mat4d(1.0), settings.build, 0)),
+      root_(release ? buildPrimitive<T>(std::move(*release), Mat4d(1.0), settings.build, 0)
+                    : buildPrimitive<T>(scene.root, Mat4d(1.0), settings.build, 0)),
       background_(Vec3<T>(glm::clamp(scene.options.background, Vec3d(0.0), Vec3d(1.0)))),
       shadows_(scene.options.shadows),
       offsetScale_(static_cast<T>(std::min(1.0, viewingDistance(scene.camera)))),

@@ -72,7 +72,11 @@ class Renderer final : public RowSource18 {
  public:
   // Builds the primitive tree for T once. Throws lattice::Error on a scene
   // that cannot be built or a bad size/thread count (Usage).
-  Renderer(const SceneDesc& scene, const RenderSettings& settings = {});
+  Renderer(const SceneDesc& scene, const RenderSettings& settings = {}) : Renderer(scene, settings, nullptr) {}
+  // The same, releasing the scene's node tree while building it
+  // (buildPrimitive of a NodeDesc&&): scene.root is left with no operands,
+  // the rest of the scene as it was.
+  Renderer(SceneDesc&& scene, const RenderSettings& settings = {}) : Renderer(scene, settings, &scene.root) {}
   ~Renderer() override;
 
   int width() const override { return width_; }
@@ -98,6 +102,9 @@ class Renderer final : public RowSource18 {
   const Camera<T>& camera() const { return camera_; }
 
  private:
+  // release: scene.root, built by buildPrimitive of a NodeDesc&&; null: kept.
+  Renderer(const SceneDesc& scene, const RenderSettings& settings, NodeDesc* release);
+
   Vec3<T> trace(const Ray<T>& ray, std::uint64_t& rays) const;
   void shadeRow(int y, Color18* out) const;
 

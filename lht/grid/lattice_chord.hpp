@@ -12,8 +12,14 @@
 //   rounding maps -0 and +0 alike.
 // * clipToCells: the slab test of Bounds::clip over [0, cells] along the
 //   whole line, with the three reciprocals taken first (independent
-//   divisions the CPU overlaps) and Bounds::clip's compare and swap as
-//   selects: the same t0 and t1.
+//   divisions the CPU overlaps; in fixed point the ray keeps them, and the
+//   leaf's look-up reuses them: foundation/ray.hpp) and Bounds::clip's
+//   compare and swap as selects: the same t0 and t1.
+// * oneCellBound: in fixed point, a bound the leaf's one cell along the ray,
+//   1 / |d|, never exceeds, from the reciprocals the clip has kept: the raw
+//   length is floor(sqrt(sum raw^2)) (foundation/vec.hpp), at least the
+//   largest |raw| of a component, and the rounded quotient 1 / x does not
+//   grow with x, so 1 / |d| <= 1 / max |d_a| = min |1 / d_a|.
 // * nearestGridCoordinate: std::round (halves away from zero) without the
 //   library call, after the clamp to [0, cells]: truncate, then add one when
 //   the fractional part, exact in IEEE arithmetic below 2^24, is at least
@@ -54,7 +60,7 @@ class LatticeAffine {
 template <typename T>
 inline bool clipToCells(const Ray<T>& ray, const Vec3<T>& cells, T& t0Out, T& t1Out) {
   T inv[3];
-  for (int a = 0; a < 3; ++a) inv[a] = ray.direction[a] == T(0) ? T(0) : T(1) / ray.direction[a];
+  for (int a = 0; a < 3; ++a) inv[a] = ray.direction[a] == T(0) ? T(0) : ray.inverseDirection(a);
   T t0 = -std::numeric_limits<T>::infinity(), t1 = std::numeric_limits<T>::infinity();
   for (int a = 0; a < 3; ++a) {
     const T o = ray.origin[a];
@@ -73,6 +79,17 @@ inline bool clipToCells(const Ray<T>& ray, const Vec3<T>& cells, T& t0Out, T& t1
   t0Out = t0;
   t1Out = t1;
   return true;
+}
+
+// At least T(1) / length(ray.direction) in fixed point (see above), from the
+// reciprocals the ray keeps; infinity when no component moves.
+template <typename T>
+T oneCellBound(const Ray<T>& ray) {
+  static_assert(!kIsIeee<T>, "the bound holds for fixed point's exact length and rounding");
+  T bound = std::numeric_limits<T>::infinity();
+  for (int a = 0; a < 3; ++a)
+    if (ray.direction[a] != T(0)) bound = std::min(bound, absolute(ray.inverseDirection(a)));
+  return bound;
 }
 
 // The grid coordinate nearest v, within [0, cells].

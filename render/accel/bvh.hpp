@@ -18,15 +18,16 @@
 
 namespace lattice {
 
-// Slab test with the reciprocal direction computed once per ray, not once
-// per box as Bounds::clip does (the BVH tests dozens of boxes per ray). BVH
+// Slab test with the reciprocal direction taken once per walk, not once per
+// box (the BVH tests dozens of boxes per ray); in fixed point the ray keeps it
+// for every other box test of the ray too (foundation/ray.hpp). BVH
 // boxes are finite; a zero direction component gives infinite reciprocals,
 // and the NaN of 0 * inf (origin exactly on a slab) keeps the segment, which
 // errs on the side of visiting the box.
 template <typename T>
 struct SlabTest {
   Vec3<T> origin, inverse;
-  explicit SlabTest(const Ray<T>& ray) : origin(ray.origin), inverse(T(1) / ray.direction) {}
+  explicit SlabTest(const Ray<T>& ray) : origin(ray.origin), inverse(ray.inverseDirection()) {}
   bool clip(const Bounds<T>& b, T tmin, T tmax, T& t0) const {
     for (int a = 0; a < 3; ++a) {
       T ta = (b.lo[a] - origin[a]) * inverse[a], tb = (b.hi[a] - origin[a]) * inverse[a];

@@ -53,9 +53,12 @@ MaterialId SceneDesc::addMaterial(const std::string& name, const Material<double
   return static_cast<MaterialId>(materials.size() - 1);
 }
 
-template <typename T>
-PrimitivePtr<T> buildPrimitive(const NodeDesc& node, const Mat4d& parentToWorld, const BuildOptions& options,
-                               MaterialId inherited) {
+namespace {
+
+// Node: const NodeDesc (the tree is kept) or NodeDesc (each set operation's
+// operand descriptions are released once its operands are built).
+template <typename T, typename Node>
+PrimitivePtr<T> buildNode(Node& node, const Mat4d& parentToWorld, const BuildOptions& options, MaterialId inherited) {
   // Fig. 4: transforms on inner nodes are pushed down, so each leaf gets the
   // full object -> world matrix and the set operations hold none.
   const Mat4d toWorld = parentToWorld * node.transform;
@@ -85,7 +88,8 @@ PrimitivePtr<T> buildPrimitive(const NodeDesc& node, const Mat4d& parentToWorld,
     throw Error(ErrorKind::Input, fmt::format("{}: a set operation needs at least one child object", where));
   std::vector<PrimitivePtr<T>> children;
   children.reserve(node.children.size());
-  for (const NodeDesc& child : node.children) children.push_back(buildPrimitive<T>(child, toWorld, options, material));
+  for (Node& child : node.children) children.push_back(buildNode<T>(child, toWorld, options, material));
+  if constexpr (!std::is_const_v<Node>) std::vector<NodeDesc>().swap(node.children);  // before the BVH's build
   // A set operation of one operand is that operand; skipping the node saves
   // a span merge per ray.
   if (children.size() == 1) return std::move(children.front());
@@ -95,8 +99,22 @@ PrimitivePtr<T> buildPrimitive(const NodeDesc& node, const Mat4d& parentToWorld,
   return makeCsgNode<T>(op, std::move(children));
 }
 
-#define LATTICE_INSTANTIATE(T) \
-  template PrimitivePtr<T> buildPrimitive<T>(const NodeDesc&, const Mat4d&, const BuildOptions&, MaterialId);
+}  // namespace
+
+template <typename T>
+PrimitivePtr<T> buildPrimitive(const NodeDesc& node, const Mat4d& parentToWorld, const BuildOptions& options,
+                               MaterialId inherited) {
+  return buildNode<T>(node, parentToWorld, options, inherited);
+}
+template <typename T>
+PrimitivePtr<T> buildPrimitive(NodeDesc&& node, const Mat4d& parentToWorld, const BuildOptions& options,
+                               MaterialId inherited) {
+  return buildNode<T>(node, parentToWorld, options, inherited);
+}
+
+#define LATTICE_INSTANTIATE(T)                                                                            \
+  template PrimitivePtr<T> buildPrimitive<T>(const NodeDesc&, const Mat4d&, const BuildOptions&, MaterialId); \
+  template PrimitivePtr<T> buildPrimitive<T>(NodeDesc&&, const Mat4d&, const BuildOptions&, MaterialId);
 LATTICE_FOR_EACH_ARITHMETIC(LATTICE_INSTANTIATE)
 #undef LATTICE_INSTANTIATE
 

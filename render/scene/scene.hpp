@@ -162,9 +162,18 @@ struct SceneDesc {
 template <typename T>
 PrimitivePtr<T> buildPrimitive(const NodeDesc& node, const Mat4d& parentToWorld, const BuildOptions& options,
                                MaterialId inherited = 0);
+// The same, releasing the tree as it goes: each set operation's operand
+// descriptions are freed once its operands are built, before the operation
+// builds its BVH over them, so a scatter's descriptions and the BVH's build
+// never take memory at once (docs/memory.md). `node` is left with no
+// operands.
+template <typename T>
+PrimitivePtr<T> buildPrimitive(NodeDesc&& node, const Mat4d& parentToWorld, const BuildOptions& options,
+                               MaterialId inherited = 0);
 
-#define LATTICE_DECLARE(T) \
-  extern template PrimitivePtr<T> buildPrimitive<T>(const NodeDesc&, const Mat4d&, const BuildOptions&, MaterialId);
+#define LATTICE_DECLARE(T)                                                                                         \
+  extern template PrimitivePtr<T> buildPrimitive<T>(const NodeDesc&, const Mat4d&, const BuildOptions&, MaterialId); \
+  extern template PrimitivePtr<T> buildPrimitive<T>(NodeDesc&&, const Mat4d&, const BuildOptions&, MaterialId);
 LATTICE_FOR_EACH_ARITHMETIC(LATTICE_DECLARE)
 #undef LATTICE_DECLARE
 

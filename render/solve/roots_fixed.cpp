@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdlib>
 
 #include "foundation/rounding.hpp"
 
@@ -190,9 +191,15 @@ int solve(const Fixed32* c, int size, Fixed32 roots[4]) {
         r[i] = d[top - i];
       }
       // 2-3. |y| <= 1 from P, |y| > 1 from R(z), z = 1/y in (-1, 1).
+      // Degree 1 (a plane's ray): the root -D0/D1 lies in [-1, 1] only if
+      // |D0| <= |D1|, for |D1| < 2^56 makes the quotient of a larger |D0|
+      // more than 2^60 + 16 in Q60, which isolate() would refuse; so the side
+      // that cannot hold it is skipped with its 128-bit division, and only
+      // |D0| = |D1| asks both, as before.
       std::array<Raw, 4> ys{}, zs{};
-      const int ny = isolate(p.data(), m, -kOneQ, kOneQ, ys.data());
-      const int nz = isolate(r.data(), m, -kOneQ, kOneQ, zs.data());
+      const bool onlyP = m == 1 && std::abs(p[0]) < std::abs(p[1]), onlyR = m == 1 && std::abs(p[1]) < std::abs(p[0]);
+      const int ny = onlyR ? 0 : isolate(p.data(), m, -kOneQ, kOneQ, ys.data());
+      const int nz = onlyP ? 0 : isolate(r.data(), m, -kOneQ, kOneQ, zs.data());
       // 4. Back to Q31.32: x = y 2^k, or 2^k / z.
       for (int i = 0; i < nz && count < 4; ++i) {
         if (zs[i] >= 0 || zs[i] <= -kOneQ) continue;  // the negative ones first (ascending x)

@@ -64,6 +64,29 @@ TEST_CASE("wide kernels: Fixed32's rounded, saturated product and quotient equal
     }
 }
 
+TEST_CASE("wide kernels: quotients either side of one digit and products of one operand below 1.0") {
+  // A quotient below 2^32 (|a| below |b|) takes one digit of the long
+  // division, from 2^32 on two: dividends next to the divisor put the
+  // quotient on both sides of that edge, for divisors of every length.
+  std::mt19937_64 rng(32);
+  for (int i = 0; i < 200000; ++i) {
+    const int length = i % 63 + 1;
+    const auto b = static_cast<std::int64_t>((rng() >> (64 - length)) | (std::uint64_t(1) << (length - 1)));
+    const std::int64_t delta = static_cast<std::int64_t>(rng() % 7) - 3;
+    const std::int64_t a = (rng() & 1) ? b + delta : -(b + delta), signedB = (rng() & 1) ? b : -b;
+    INFO("a=" << a << " b=" << signedB);
+    REQUIRE(lattice::wide::divideRaw<32>(a, signedB) == referenceQuotient<32>(a, signedB));
+    // One operand below 2^32, the other of any length.
+    const auto small = static_cast<std::int64_t>(rng() >> 32), large = static_cast<std::int64_t>(rng() >> (i % 64 + 1));
+    REQUIRE(lattice::wide::multiplyRaw<32>(small, large) == referenceProduct<32>(small, large));
+    REQUIRE(lattice::wide::multiplyRaw<32>(-large, small) == referenceProduct<32>(-large, small));
+    const auto p = lattice::wide::multiply64By32(static_cast<std::uint64_t>(large), static_cast<std::uint32_t>(small));
+    const U expected = static_cast<U>(static_cast<std::uint64_t>(large)) * static_cast<std::uint32_t>(small);
+    REQUIRE(p.high == static_cast<std::uint64_t>(expected >> 64));
+    REQUIRE(p.low == static_cast<std::uint64_t>(expected));
+  }
+}
+
 TEST_CASE("wide kernels: other fraction bit counts agree too") {
   const auto v = raws();
   for (std::size_t i = 0; i < v.size(); i += 5)

@@ -7,6 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cmath>
 #include <random>
 
 #include "foundation/fixed.hpp"
@@ -164,4 +165,26 @@ TEST_CASE("lattice chord: the clip gives Bounds::clip's t0 and t1 to the bit, an
     REQUIRE(s1 == r1);
   }
   CHECK(inside > 2000);
+}
+
+TEST_CASE("lattice chord: in fixed point one cell along the ray never exceeds oneCellBound") {
+  // The look-up answers "at least one cell past tmin" from the bound where
+  // it settles it, so the bound must hold for every direction: components of
+  // every size, zeros among them, and directions along one axis (equality).
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int equal = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const double scale = std::ldexp(1.0, static_cast<int>(rng() % 44) - 24);
+    Vec3<Fixed32> d(Fixed32(unit(rng) * scale), Fixed32(unit(rng) * scale), Fixed32(unit(rng) * scale));
+    if (i % 5 == 0) d[i % 3] = Fixed32(0);
+    if (i % 11 == 0) d = Vec3<Fixed32>(Fixed32(0), d.y, Fixed32(0));
+    if (d == Vec3<Fixed32>(Fixed32(0))) continue;
+    const Ray<Fixed32> ray{Vec3<Fixed32>(Fixed32(0)), d};
+    const Fixed32 cell = Fixed32(1) / length(d), bound = oneCellBound(ray);
+    INFO("d = " << double(d.x) << ", " << double(d.y) << ", " << double(d.z));
+    REQUIRE(cell <= bound);
+    if (cell == bound) ++equal;
+  }
+  CHECK(equal > 1000);  // tight where the direction lies along an axis
 }

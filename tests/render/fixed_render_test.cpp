@@ -139,6 +139,25 @@ TEST_CASE("fixed point: roots of the standard hard cases") {
     // 1e4 .. 1e-2 (coefficients up to 1e4).
     checkNear(solveFixed(fromRoots({1e4L, 1e2L, 1, 1e-2L})), {1e4, 1e2, 1, 1e-2}, 1e-4);
   }
+  SECTION("degree 1 (a plane's ray): one root, on either side of |x| = 1 and at it") {
+    // The solver runs only the side of |y| = 1 that can hold -c0/c1, both
+    // when the scaled coefficients are equal in size: every case one root.
+    std::mt19937_64 rng(1);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int i = 0; i < 20000; ++i) {
+      const double c1 = unit(rng) * std::ldexp(1.0, static_cast<int>(rng() % 24) - 12);
+      double c0 = unit(rng) * std::ldexp(1.0, static_cast<int>(rng() % 24) - 12);
+      if (i % 4 == 0) c0 = (i % 8 == 0 ? 1 : -1) * std::ldexp(c1, static_cast<int>(rng() % 5) - 2);  // |x| a power of 2
+      const std::vector<Fixed32> line{Fixed32(c0), Fixed32(c1)};
+      if (line[0].raw() == 0 || line[1].raw() == 0) continue;
+      const double x = -line[0].toDouble() / line[1].toDouble();
+      if (std::abs(x) >= std::ldexp(1.0, 30)) continue;  // beyond Q31.32's reach: saturated, not this test's
+      const auto r = solveFixed(line);
+      INFO("c0 = " << c0 << ", c1 = " << c1);
+      REQUIRE(r.size() == 1);
+      CHECK(std::abs(r[0] - x) <= 1e-9 * std::max(1.0, std::abs(x)));
+    }
+  }
   SECTION("no cancellation in the quadratic") {
     // x^2 - 1e4 x + 1: roots 1.00000001e-4 and 9999.9999 (exact below).
     const std::vector<Fixed32> q{Fixed32(1), Fixed32(-1e4), Fixed32(1)};

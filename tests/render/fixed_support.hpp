@@ -114,7 +114,7 @@ inline FixedPointScan scanFixedPointCode(const std::string& library,
 inline bool isSetUpFunction(const std::string& name) {
   static const std::vector<std::string> setUp = {"::Camera(", "::Renderer(", "::build(", "::Bvh(",
                                                  "makeQuarticLeaf<", "makeCapsule<", "makeQuarticCapsule<", "paddedBox<",
-                                                 "buildPrimitive<", "::QuarticLeaf(", "makeCsgNode<",
+                                                 "buildPrimitive<", "buildNode<", "::QuarticLeaf(", "makeCsgNode<",
                                                  "::LatticeLeafBase(", "makePolyline<", "makeLatticeLeaf<",
                                                  "::QuarticArithmetic(", "QuarticArithmetic<lattice::Fixed<32> >::prepare(",
                                                  "::EntryReader(", "::buildInto(", "::buildAs<"};
