@@ -57,18 +57,22 @@ RenderSettings renderSettings(const RenderJob& job, const SceneDesc& scene, int 
 }
 
 // The trace (what bench/peers.sh compares with a peer's own trace timer: no
-// set-up, no PNG), then the PNG.
+// set-up, no PNG), with a progress bar, timed as the trace phase.
+template <typename T>
+RgbImage tracedImage(Renderer<T>& renderer, const RenderJob& job, RenderPhases& phases) {
+  Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
+  progress.setEnabled(progress.enabled() && !job.quiet);
+  const PhaseTimer trace;
+  RgbImage image = renderImage(renderer, &progress);
+  trace.addTo(phases.trace);
+  progress.finish();
+  return image;
+}
+
+// The trace, then the PNG.
 template <typename T>
 void renderTruecolour(Renderer<T>& renderer, const RenderJob& job, RenderPhases& phases) {
-  RgbImage image;
-  {
-    Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
-    progress.setEnabled(progress.enabled() && !job.quiet);
-    const PhaseTimer trace;
-    image = renderImage(renderer, &progress);
-    trace.addTo(phases.trace);
-    progress.finish();
-  }
+  const RgbImage image = tracedImage(renderer, job, phases);
   const PhaseTimer output;
   io::writePng(job.picture, image, renderer.threads());
   output.addTo(phases.output);
@@ -176,16 +180,7 @@ WireSearch renderWithinWireBudget(Renderer<T>& renderer, const SceneDesc& scene,
     search.settings = added;
     raise(job.events, WireChosen{describeWireSize(sized, area)});
   } else {
-    RgbImage truecolour;
-    {
-      Progress progress("render", static_cast<std::uint64_t>(renderer.height()), "rows");
-      progress.setEnabled(progress.enabled() && !job.quiet);
-      const PhaseTimer trace;
-      truecolour = renderImage(renderer, &progress);
-      trace.addTo(phases.trace);
-      progress.finish();
-    }
-    search = searchWireBudget(truecolour, device, *job.wire, pipeline.quantize, !job.quiet);
+    search = searchWireBudget(tracedImage(renderer, job, phases), device, *job.wire, pipeline.quantize, !job.quiet);
     search.settings = added;
   }
   PhaseSeconds searching;  // the whole, less the renders
