@@ -65,7 +65,7 @@ TEST_CASE("ray: the reciprocal direction a ray gives is T(1) / direction, bit fo
   checkKeptInverse<float>();
 }
 
-TEST_CASE("ray: only fixed point keeps the reciprocal; float and double rays stay two vectors") {
+TEST_CASE("ray: only fixed point keeps the reciprocal, float and double rays stay two vectors") {
   CHECK(sizeof(Ray<float>) == 2 * sizeof(Vec3<float>));
   CHECK(sizeof(Ray<double>) == 2 * sizeof(Vec3<double>));
   CHECK(sizeof(Ray<Fixed32>) > 2 * sizeof(Vec3<Fixed32>));
