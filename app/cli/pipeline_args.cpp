@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 
 #include "foundation/error.hpp"
-#include "foundation/name_table.hpp"
 
 namespace lattice::app {
 

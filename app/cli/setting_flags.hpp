@@ -10,8 +10,10 @@
 
 #include <map>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "app/cli/number_flags.hpp"
 #include "foundation/settings_schema.hpp"
