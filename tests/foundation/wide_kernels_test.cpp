@@ -76,8 +76,9 @@ TEST_CASE("wide kernels: quotients either side of one digit and products of one 
     const std::int64_t a = (rng() & 1) ? b + delta : -(b + delta), signedB = (rng() & 1) ? b : -b;
     INFO("a=" << a << " b=" << signedB);
     REQUIRE(lattice::wide::divideRaw<32>(a, signedB) == referenceQuotient<32>(a, signedB));
-    // One operand below 2^32, the other of any length.
-    const auto small = static_cast<std::int64_t>(rng() >> 32), large = static_cast<std::int64_t>(rng() >> (i % 63 + 1));  // shifts 1..63: 64 would be undefined
+    // One operand below 2^32, the other of any length (a shift of 1..63: 64
+    // would be undefined).
+    const auto small = static_cast<std::int64_t>(rng() >> 32), large = static_cast<std::int64_t>(rng() >> (i % 63 + 1));
     REQUIRE(lattice::wide::multiplyRaw<32>(small, large) == referenceProduct<32>(small, large));
     REQUIRE(lattice::wide::multiplyRaw<32>(-large, small) == referenceProduct<32>(-large, small));
     const auto p = lattice::wide::multiply64By32(static_cast<std::uint64_t>(large), static_cast<std::uint32_t>(small));
