@@ -13,7 +13,7 @@ void addPipelineOptions(CLI::App* cmd, PipelineArgs& args, const std::string& gr
   cmd->add_flag("-q,--quiet", args.quiet, "no progress bars")->group("Report");
 }
 
-quantize::PipelineOptions toPipelineOptions(const PipelineArgs& args, const CLI::App&) {
+quantize::PipelineOptions toPipelineOptions(const PipelineArgs& args) {
   quantize::PipelineOptions options = args.initial;
   applySettingFlags(quantize::pipelineSettings(), options, args.given);
   // A sample step asks for sample mode unless --mode says otherwise, and

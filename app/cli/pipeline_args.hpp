@@ -32,6 +32,6 @@ inline constexpr std::string_view kRenderPipelineKeys[] = {"colors", "dither", "
 void addPipelineOptions(CLI::App* cmd, PipelineArgs& args, const std::string& group = "Quantizer",
                         std::span<const std::string_view> keys = kAllPipelineKeys);
 // Throws lattice::Error(Usage) for combinations CLI11 cannot check alone.
-quantize::PipelineOptions toPipelineOptions(const PipelineArgs& args, const CLI::App& cmd);
+quantize::PipelineOptions toPipelineOptions(const PipelineArgs& args);
 
 }  // namespace lattice::app

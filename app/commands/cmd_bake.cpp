@@ -40,13 +40,13 @@ void parseSize(const std::string& text, int& width, int& height) {
     throw Error(ErrorKind::Usage, fmt::format("--size {}: each side must be 1..4096 pixels", text));
 }
 
-void runBake(const BakeFlags& f, const CLI::App& cmd) {
+void runBake(const BakeFlags& f) {
   BakeRequest request;
   request.sceneFile = f.scene;
   parseSize(f.size, request.width, request.height);
   request.settings = f.settings;
   devices::makeDevice("tek4125", request.settings);  // a bad --set fails here, as in `lattice render`
-  request.pipeline = toPipelineOptions(f.pipeline, cmd);
+  request.pipeline = toPipelineOptions(f.pipeline);
   lht::TableSettings tables;
   tables.progress = !f.pipeline.quiet;
   const lht::SceneWithLattices loaded = lht::loadSceneWithLattices(f.scene, tables);
@@ -79,7 +79,7 @@ void addBake(CLI::App& root) {
   cmd->add_option("--set", flags->settings,
                   "Override a Tek 4125 profile assumption, key=value (repeatable; docs/tek4125.md)");
   addPipelineOptions(cmd, flags->pipeline);
-  cmd->callback([flags, cmd] { runBake(*flags, *cmd); });
+  cmd->callback([flags] { runBake(*flags); });
 }
 
 }  // namespace lattice::app

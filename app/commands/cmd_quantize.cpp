@@ -24,8 +24,8 @@ struct QuantizeArgs {
   bool verbose = false;
 };
 
-void runQuantize(const QuantizeArgs& args, const CLI::App& cmd) {
-  lattice::quantize::PipelineOptions options = lattice::app::toPipelineOptions(args.pipeline, cmd);
+void runQuantize(const QuantizeArgs& args) {
+  lattice::quantize::PipelineOptions options = lattice::app::toPipelineOptions(args.pipeline);
   std::filesystem::path output(args.output);
   if (std::filesystem::is_directory(output))
     throw lattice::Error(lattice::ErrorKind::Output,
@@ -57,7 +57,7 @@ void addQuantize(CLI::App& root) {
   cmd->add_option("-o,--output", args->output, "palette PNG to write (atomically)")->required();
   lattice::app::addPipelineOptions(cmd, args->pipeline);
   cmd->add_flag("-v,--verbose", args->verbose, "print the palette size and buffer memory");
-  cmd->callback([args, cmd] { runQuantize(*args, *cmd); });
+  cmd->callback([args] { runQuantize(*args); });
 }
 
 }  // namespace lattice::app

@@ -216,7 +216,7 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
   if (!f.memoryBudget.empty()) job.memoryBudget = parseByteCount(f.memoryBudget, "--memory-budget");
   job.modeChosenByUser = cmd.count("--mode") > 0 || cmd.count("--sample") > 0;
   job.histogramChosenByUser = cmd.count("--histogram") > 0;
-  job.pipeline = toPipelineOptions(f.pipeline, cmd);
+  job.pipeline = toPipelineOptions(f.pipeline);
   job.quiet = f.pipeline.quiet;
   // With --port the stream is recorded (--stream, or a file beside the
   // picture) and then sent from the file, so a send that stops resumes.
