@@ -34,14 +34,11 @@ namespace {
 // The picture size: what the job asks for, else the scene's own, shrunk
 // (keeping its shape) to fit the device's screen (a SizeFitted event).
 RenderSettings renderSettings(const RenderJob& job, const SceneDesc& scene, int deviceWidth, int deviceHeight) {
-  RenderSettings s;
-  s.threads = job.threads;
-  s.build.fullRayTrace = job.fullRayTrace;
-  s.build.latticeShadows = job.latticeShadows;
-  s.width = job.width > 0 ? job.width : scene.options.width;
-  s.height = job.height > 0 ? job.height : scene.options.height;
+  RenderSettings s = job.render;
+  s.width = job.render.width > 0 ? job.render.width : scene.options.width;
+  s.height = job.render.height > 0 ? job.render.height : scene.options.height;
   if (deviceWidth > 0 && (s.width > deviceWidth || s.height > deviceHeight)) {
-    if (job.width > 0 || job.height > 0)
+    if (job.render.width > 0 || job.render.height > 0)
       throw Error(ErrorKind::Usage,
                   fmt::format("{}x{} does not fit the device's {}x{} drawable area; choose a smaller --width/--height "
                               "or change the profile with --set width=... --set height=...",
@@ -74,7 +71,7 @@ template <typename T>
 void renderTruecolour(Renderer<T>& renderer, const RenderJob& job, RenderPhases& phases) {
   const RgbImage image = tracedImage(renderer, job, phases);
   const PhaseTimer output;
-  io::writePng(job.picture, image, renderer.threads());
+  io::writePng(job.output.picture, image, renderer.threads());
   output.addTo(phases.output);
 }
 
@@ -84,21 +81,21 @@ void renderTruecolour(Renderer<T>& renderer, const RenderJob& job, RenderPhases&
 std::unique_ptr<ByteSink> openTransport(const RenderJob& job, const devices::Device& device, std::string& where,
                                         int& replyFd) {
   replyFd = -1;
-  if (job.port) {
-    io::SerialOptions serial = *job.port;
-    if (job.baudFromProfile && device.line) serial.baud = device.line->baud;
+  if (job.output.port) {
+    io::SerialOptions serial = *job.output.port;
+    if (job.output.baudFromProfile && device.line) serial.baud = device.line->baud;
     auto sink = io::openSerialSink(serial);
     where = serial.port;
     replyFd = sink->fd();
     return sink;
   }
-  if (job.stream == "-") {
+  if (job.output.stream == "-") {
     where = "standard output";
     return std::make_unique<io::StdoutSink>();
   }
-  if (!job.stream.empty()) {
-    where = job.stream;
-    return std::make_unique<AtomicFile>(job.stream);
+  if (!job.output.stream.empty()) {
+    where = job.output.stream;
+    return std::make_unique<AtomicFile>(job.output.stream);
   }
   where = "the emulator only";
   return nullptr;
@@ -113,15 +110,15 @@ devices::DriverStats renderToDevice(const std::function<void(IndexedSink&)>& sou
   int replyFd = -1;
   std::unique_ptr<ByteSink> transport = openTransport(job, device, where, replyFd);
   std::unique_ptr<StreamDecoder> emulator;
-  if (!job.picture.empty()) emulator = device.makeEmulator();
+  if (!job.output.picture.empty()) emulator = device.makeEmulator();
   io::TeeSink tee(transport.get(), [&emulator](std::span<const std::uint8_t> bytes) {
     if (emulator) emulator->feed(bytes);
   });
   auto driver = device.makeDriver(tee);
-  if (replyFd >= 0) driver->answerOn(replyFd, job.port->stallTimeoutSeconds);
+  if (replyFd >= 0) driver->answerOn(replyFd, job.output.port->stallTimeoutSeconds);
   if (job.rdLambda > 0 && !device.runCost)
-    throw Error(ErrorKind::Usage, fmt::format("--rd-lambda: {} has no run costs; rate-distortion runs apply to "
-                                              "devices that send runs (tek4125, tek4027, sixel)",
+    throw Error(ErrorKind::Usage, fmt::format("rate-distortion runs: {} has no run costs; they apply to devices "
+                                              "that send runs (tek4125, tek4027, sixel)",
                                               device.name));
   if (job.rdLambda > 0 && !job.wire) {
     quantize::RateDistortionSink runs(driver->sink(), device.runCost, job.rdLambda);
@@ -137,7 +134,7 @@ devices::DriverStats renderToDevice(const std::function<void(IndexedSink&)>& sou
                                 device.line ? std::optional<int>(device.line->baud) : std::nullopt, where, stats});
   if (emulator) {
     emulator->finish();
-    io::writePng(job.picture, emulator->image(), static_cast<unsigned>(job.threads));
+    io::writePng(job.output.picture, emulator->image(), static_cast<unsigned>(job.render.threads));
     const DecodeReport& report = emulator->report();
     if (report.unknownCommands + report.malformed > 0)
       throw Error(ErrorKind::Internal,
@@ -158,7 +155,7 @@ WireSearch renderWithinWireBudget(Renderer<T>& renderer, const SceneDesc& scene,
                                   RenderPhases& phases) {
   WireSearch search;
   const PhaseTimer whole;
-  if (job.width == 0 && job.height == 0) {
+  if (job.render.width == 0 && job.render.height == 0) {
     const SizeArea area = sizeAreaFor(scene.options.width, scene.options.height, device.width, device.height);
     const RenderAt renderAt = [&](int width, int height) {
       const PhaseTimer trace;  // each size's render is trace; the rest of the search, quantize
@@ -200,14 +197,14 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
   quantize::PipelineOptions pipeline = job.pipeline;
   std::optional<devices::Device> device;
   std::vector<std::string> wireAdded;  // profile settings the wire budget turned on
-  if (!job.device.empty()) {
-    device = devices::makeDevice(job.device, job.settings);
+  if (!job.output.device.empty()) {
+    device = devices::makeDevice(job.output.device, job.output.settings);
     if (job.wire) {
-      wireAdded = wireSettingsToAdd(*device, job.settings);
+      wireAdded = wireSettingsToAdd(*device, job.output.settings);
       if (!wireAdded.empty()) {
-        std::vector<std::string> all = job.settings;
+        std::vector<std::string> all = job.output.settings;
         all.insert(all.end(), wireAdded.begin(), wireAdded.end());
-        device = devices::makeDevice(job.device, all);
+        device = devices::makeDevice(job.output.device, all);
       }
     }
   }
@@ -219,12 +216,12 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
     // The default budget checks the job's mode and histogram; only a chosen
     // one picks them, so a picture never depends on the machine's memory.
     budget = renderBudgetRequest(room->budget, settings.width, settings.height, pipeline,
-                                 job.modeChosenByUser || !room->chosen, device ? &*device : nullptr,
-                                 job.picture.empty() ? 0u : job.threads > 0 ? unsigned(job.threads) : hardwareThreads());
-    budget->histogramChosenByUser = job.histogramChosenByUser || !room->chosen;
+                                 job.memory.modeChosenByUser || !room->chosen, device ? &*device : nullptr,
+                                 job.output.picture.empty() ? 0u : job.render.threads > 0 ? unsigned(job.render.threads) : hardwareThreads());
+    budget->histogramChosenByUser = job.memory.histogramChosenByUser || !room->chosen;
     room->leastOutput = leastOutputBytes(*budget);  // before the renderer rasterizes the lattices
   }
-  if (job.memoryBudget) {
+  if (job.memory.budget) {
     lht::TableSettings tables = loaded.tables;
     tables.packing = tablePackingWithin(*budget, job.events);
     bound = lht::withTableSettings(loaded, tables);
@@ -234,11 +231,11 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
   // built, before its BVH's build and the output's buffers (docs/memory.md);
   // a wire budget's size search renders the scene again at other sizes, so
   // then the renderer copies it.
-  const bool sizeSearch = device && job.wire && job.width == 0 && job.height == 0;
+  const bool sizeSearch = device && job.wire && job.render.width == 0 && job.render.height == 0;
   SceneDesc& scene = bound ? bound->scene : loaded.scene;
   Renderer<T> renderer = sizeSearch ? Renderer<T>(scene, settings) : Renderer<T>(std::move(scene), settings);
   if (!sizeSearch) loaded.scene.root = NodeDesc{};  // under a budget its copy was built: the loaded tree goes too
-  if (job.memoryBudget) {
+  if (job.memory.budget) {
     const MemoryPlan plan = planBuiltRender(*budget, job.events);
     pipeline.mode = plan.mode;
     pipeline.quantize.histogram = plan.histogram;
@@ -270,7 +267,7 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
   result.height = result.wire ? result.wire->choice.height : renderer.height();
   result.rays = renderer.raysTraced();
   result.threads = renderer.threads();
-  if (job.memoryBudget) checkPeakAgainst(budget->budget, job.events);
+  if (job.memory.budget) checkPeakAgainst(budget->budget, job.events);
   if (result.wire && !result.wire->choice.fits)
     throw Error(ErrorKind::Budget,
                 fmt::format("no setting fits {} bytes: the smallest stream is {} bytes ({:.1f} s at {} baud), written; "
@@ -288,55 +285,50 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
 
 void checkRenderJob(const RenderJob& job) {
   if (!isArithmeticName(job.arithmetic)) throwUnknownArithmetic(job.arithmetic);
-  if (job.device.empty()) {
+  if (job.output.device.empty()) {
     if (job.wire || job.rdLambda > 0)
-      throw Error(ErrorKind::Usage, "--wire-seconds, --wire-bytes and --rd-lambda shape a device's stream; choose one "
-                                    "with --device");
-    if (job.picture.empty()) throw Error(ErrorKind::Usage, "a truecolour render writes a PNG: give -o OUT.png");
-    if (!job.stream.empty() || job.port)
+      throw Error(ErrorKind::Usage, "--wire-seconds and --wire-bytes shape a device's stream; choose one with "
+                                    "--device");
+    if (job.output.picture.empty()) throw Error(ErrorKind::Usage, "a truecolour render writes a PNG: give -o OUT.png");
+    if (!job.output.stream.empty() || job.output.port)
       throw Error(ErrorKind::Usage,
                   fmt::format("--stream and --port take a device's command stream; choose one with --device ({})",
                               fmt::join(devices::deviceNames(), ", ")));
-    if (!job.settings.empty())
+    if (!job.output.settings.empty())
       throw Error(ErrorKind::Usage, "--set overrides a device profile; use it with --device");
   } else {
-    devices::deviceEntry(job.device);  // an unknown name fails now
+    devices::deviceEntry(job.output.device);  // an unknown name fails now
     if (job.wire && !job.wire->bytes && !job.wire->seconds)
       throw Error(ErrorKind::Usage, "a wire budget needs --wire-seconds S or --wire-bytes N");
-    if (job.picture.empty() && job.stream.empty() && !job.port)
+    if (job.output.picture.empty() && job.output.stream.empty() && !job.output.port)
       throw Error(ErrorKind::Usage,
                   fmt::format("--device {} needs somewhere to send the stream: --stream FILE, --stream -, --port "
                               "PORT, and/or -o OUT.png for the emulated picture",
-                              job.device));
-    if (!job.stream.empty() && job.port)
+                              job.output.device));
+    if (!job.output.stream.empty() && job.output.port)
       throw Error(ErrorKind::Usage, "give either --stream or --port, not both (record a stream with --stream, then "
                                     "`lattice send` it)");
   }
   // Read-only files were refused (or allowed by --force) with the flags.
-  checkOutputPath(job.picture, "-o", /*force=*/true);
-  checkOutputPath(job.stream, "--stream", /*force=*/true);
+  checkOutputPath(job.output.picture, "-o", /*force=*/true);
+  checkOutputPath(job.output.stream, "--stream", /*force=*/true);
 }
 
 RenderResult renderScene(const RenderJob& job) {
   const PhaseTimer start;
   checkRenderJob(job);
-  if (job.memoryBudget) shareOneAllocatorArena();  // before the rasterizer's threads
+  if (job.memory.budget) shareOneAllocatorArena();  // before the rasterizer's threads
   // Scenes may hold [[lattices]]; their tables are built when the renderer
   // is, under these settings.
-  lht::TableSettings tables;
-  tables.precision = job.precision;
-  tables.form = job.form;
-  tables.lookup = job.lookup;
-  if (job.onDemandCacheBytes) tables.onDemandCacheBytes = *job.onDemandCacheBytes;
-  if (job.lhtStats) tables.stats = std::make_shared<lht::LookupStatsBook>();
-  tables.threads = static_cast<unsigned>(job.threads);  // one thread means one thread throughout
+  lht::TableSettings tables = job.tables;
+  tables.threads = static_cast<unsigned>(job.render.threads);  // one thread means one thread throughout
   // Every render has a budget, the one given or the default; the lattices
   // the renderer rasterizes are admitted against it before any work.
   std::shared_ptr<RasterRoom> room;
-  if (const auto budget = job.memoryBudget ? job.memoryBudget : defaultMemoryBudget()) {
+  if (const auto budget = job.memory.budget ? job.memory.budget : defaultMemoryBudget()) {
     room = std::make_shared<RasterRoom>();
     room->budget = *budget;
-    room->chosen = job.memoryBudget.has_value();
+    room->chosen = job.memory.budget.has_value();
     tables.admission = rasterizingWithin(room);
   }
   lht::SceneWithLattices loaded = lht::loadSceneWithLattices(job.scene, tables);

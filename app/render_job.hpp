@@ -21,40 +21,51 @@
 #include "app/wire_budget.hpp"
 #include "devices/device.hpp"
 #include "io/serial_options.hpp"
-#include "lht/leaf/lookup_mode.hpp"
-#include "lht/table/lht_form.hpp"
-#include "lht/table/lht_precision.hpp"
+#include "loader/lattice_definition.hpp"
 #include "quantize/run_pipeline.hpp"
+#include "render/renderer.hpp"
 
 namespace lattice::app {
 
-struct RenderJob {
-  std::string scene;                  // scene file
+// Where the job's picture and stream go.
+struct RenderOutput {
   std::string device;                 // a device table name, or empty for a truecolour PNG
   std::vector<std::string> settings;  // the device profile's key=value overrides
   std::string picture;                // PNG to write: truecolour, or the emulator's screen; empty: none
   std::string stream;                 // the device's bytes to a file, or "-" for standard output
-  std::optional<io::SerialOptions> port;  // ... or to a serial line
+  std::optional<io::SerialOptions> port;  // ... or to a serial line (io/serial_settings.hpp)
   bool baudFromProfile = false;       // the port's baud is the device profile's
-  int width = 0;                      // 0: the scene's, fitted to the device's screen
-  int height = 0;
-  int threads = 0;                    // 0: all cores
+};
+
+// What the memory budget may choose, and what the user chose instead.
+struct MemoryChoice {
+  std::optional<std::uint64_t> budget;  // bytes of peak resident memory; unset: the default, which only refuses
+  bool modeChosenByUser = false;        // the quantizer mode is the user's (not the budget's)
+  bool histogramChosenByUser = false;   // and the histogram form (--histogram)
+};
+
+// A job is the stages' own settings side by side, each checked where it is
+// read (the flags, a schema's --set), not a second time here.
+struct RenderJob {
+  std::string scene;  // scene file
+  RenderOutput output;
+  // The picture: size (0: the scene's, fitted to the device's screen),
+  // threads (0: all cores), full ray trace, lattice shadows (render/renderer.hpp).
+  RenderSettings render;
   std::string arithmetic = "double";  // an arithmetic's name (foundation/arithmetics.hpp)
-  bool fullRayTrace = false;          // lattices replaced by their exact CSG objects
-  bool latticeShadows = true;
-  std::optional<lht::LhtPrecision> precision;  // every lattice's entry precision
-  std::optional<lht::LhtForm> form;            // every lattice's table form
-  std::optional<lht::LatticeLookup> lookup;    // every lattice leaf's look-up
-  bool lhtStats = false;                       // count and print the lattices' look-ups
-  std::optional<std::uint64_t> onDemandCacheBytes;  // the on-demand form's bound
-  std::optional<std::uint64_t> memoryBudget;   // bytes of peak resident memory
-  bool modeChosenByUser = false;               // the quantizer mode is the user's (not the budget's)
-  bool histogramChosenByUser = false;          // and the histogram form (--histogram)
-  quantize::PipelineOptions pipeline;
-  bool quiet = false;  // no progress bars
+  // The lattice tables' user settings (loader/table_settings.hpp), and
+  // `stats` when their look-ups are to be counted and printed; the threads
+  // and a budget's hooks are the job's to fill in.
+  lht::TableSettings tables;
+  quantize::PipelineOptions pipeline;  // quantize/pipeline_settings.hpp
+  MemoryChoice memory;
+  std::optional<WireBudget> wire;  // choose colours, dithering and runs to fit (app/wire_settings.hpp)
+  // Rate-distortion runs at a fixed lambda (quantize/rate_distortion_runs.hpp;
+  // 0: lossless): a benchmark's setting (bench/wire_bench.cpp), which a wire
+  // budget chooses for a user.
+  double rdLambda = 0;
+  bool quiet = false;   // no progress bars
   RenderEvents events;  // told what happened along the way (app/render_events.hpp); empty: nobody
-  double rdLambda = 0;               // rate-distortion runs (quantize/rate_distortion_runs.hpp); 0: lossless
-  std::optional<WireBudget> wire;    // choose colours, dithering and lambda to fit (app/wire_budget.hpp)
 };
 
 struct RenderResult {

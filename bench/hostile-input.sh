@@ -143,7 +143,7 @@ echo "| (snapshots written: $(files 'd-at*')) | | | | |"
 row "emulate --at inf" "$L" emulate --device tek4125 "$w/t.tek" -o "$w/e.png" --at inf
 row "emulate --at 1e300" "$L" emulate --device tek4125 "$w/t.tek" -o "$w/e.png" --at 1e300
 row "render --wire-seconds nan" "$L" render "$scene" --device tek4125 --stream "$w/f.tek" --wire-seconds nan
-row "render --rd-lambda nan" "$L" render "$scene" --device tek4125 --stream "$w/f.tek" --rd-lambda nan
+row "render --wire-bytes nan" "$L" render "$scene" --device tek4125 --stream "$w/f.tek" --wire-bytes nan
 row "render --set width=nan" "$L" render "$scene" --device tek4125 --stream "$w/f.tek" --set width=nan
 row "254-cell sphere lattice (401 B scene), --memory-budget 1G" "$L" render "$w/ball.toml" -o "$w/g.png" --memory-budget 1G
 row "the same, the default budget" "$L" render "$w/ball.toml" -o "$w/g.png"

@@ -22,7 +22,7 @@
 #    15 s and 30 s into the minute).
 # 4. Sixel on Plate 6 at 512x512 (docs/sixel.md, docs/wire.md): bytes and
 #    the PSNR of the emulated screen against the truecolour render (`lattice
-#    diff`) at --rd-lambda 0, 100, 400, 1600, 6400, 25600 with 256 and 16
+#    diff`) at lambda (bench/rd_runs_bench) 0, 100, 400, 1600, 6400, 25600 with 256 and 16
 #    registers, and the wire budget at 57,600 B and 76,800 B (256
 #    registers, the size fixed at 512x512 as the figures before were).
 # Medians are quoted with the load average (the machine is shared; the
@@ -35,7 +35,7 @@ images=""
 out=""
 bench_parse --build=build --before=before --runs=runs --images=images --out=out -- "$@"
 bench_positive --runs "$runs"
-bench_need_built "$build" lattice wire_search_bench
+bench_need_built "$build" lattice wire_search_bench rd_runs_bench
 L="$build/app/lattice"
 plate6="$root/scenes/fuzzy-sphere-1000.toml"
 bench_workdir work
@@ -77,13 +77,13 @@ measure() {
   echo "wall $(echo "$(date +%s.%N) - $start" | bc) s (2 threads for the renders), load average $(bench_loadavg)"
   grep -o 'wire budget: .*\|tek4125 stream .*' "$work/p6.err"
   "$L" emulate --device tek4125 "$work/p6.tek" -o "$screen" --at 25%,50% 2>/dev/null
-  echo "## 4. Sixel, Plate 6 512x512: --rd-lambda (bytes, PSNR of the emulated screen) and the wire budget"
+  echo "## 4. Sixel, Plate 6 512x512: rate-distortion lambda (rd_runs_bench; bytes, PSNR of the emulated screen) and the wire budget"
   "$L" render "$plate6" -q -o "$work/true.png" 2>/dev/null
   local registers lambda limit
   for registers in 256 16; do
     for lambda in 0 100 400 1600 6400 25600; do
-      "$L" render "$plate6" --device sixel --set registers=$registers --rd-lambda $lambda -q \
-        --stream "$work/s.six" -o "$work/s.png" 2>/dev/null
+      "$build/bench/rd_runs_bench" "$plate6" --device sixel --set registers=$registers --lambda $lambda \
+        --stream "$work/s.six" -o "$work/s.png" >/dev/null
       echo "registers $registers lambda $lambda: $(stat -c %s "$work/s.six") B, $("$L" diff "$work/true.png" "$work/s.png" 2>&1 | awk '/^PSNR/ {print $2, $3}')"
     done
   done

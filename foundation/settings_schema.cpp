@@ -2,42 +2,63 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "foundation/byte_count.hpp"
 #include "foundation/error.hpp"
 #include "foundation/name_table.hpp"
 
 namespace lattice {
 namespace settings_detail {
+namespace {
 
-double parseValue(std::string_view context, SettingKind kind, NumberRange range, SettingChoices choices,
-                  const KeyValue& kv) {
+// The choices, and the unset word after them (what an error lists).
+std::vector<std::string_view> withUnset(SettingChoices choices, std::string_view unset) {
+  std::vector<std::string_view> names(choices.begin(), choices.end());
+  if (!unset.empty()) names.push_back(unset);
+  return names;
+}
+
+}  // namespace
+
+double parseValue(std::string_view context, const RowType& type, const KeyValue& kv) {
   const std::string what = fmt::format("{}: {}", context, kv.key);
-  switch (kind) {
+  if (!type.unset.empty() && kv.value == type.unset) return std::numeric_limits<double>::quiet_NaN();
+  switch (type.kind) {
     case SettingKind::Whole:
-      return parseIntText(what, kv.value, range);
+      return parseIntText(what, kv.value, type.range);
     case SettingKind::Number:
-      return parseNumberText(what, kv.value, range);
+      return parseNumberText(what, kv.value, type.range);
+    case SettingKind::Bytes:
+      return static_cast<double>(parseByteCount(kv.value, what));
     case SettingKind::Switch:
       return parseSwitchSetting(context, kv) ? 1.0 : 0.0;
     case SettingKind::Choice:
-      for (std::size_t i = 0; i < choices.size(); ++i)
-        if (choices[i] == kv.value) return static_cast<double>(i);
-      throw Error(ErrorKind::Usage, fmt::format("{}: {}={} must be {}", context, kv.key, kv.value, choicesOf(choices)));
+      for (std::size_t i = 0; i < type.choices.size(); ++i)
+        if (type.choices[i] == kv.value) return static_cast<double>(i);
+      throw Error(ErrorKind::Usage, fmt::format("{}: {}={} must be {}", context, kv.key, kv.value,
+                                                choicesOf(withUnset(type.choices, type.unset))));
     case SettingKind::Reported:
       break;
   }
   throw Error(ErrorKind::Internal, fmt::format("{}: {} is reported, not set", context, kv.key));
 }
 
-std::string formatValue(SettingKind kind, SettingChoices choices, double value) {
-  switch (kind) {
+std::string formatValue(const RowType& type, double value) {
+  if (!type.unset.empty() && std::isnan(value)) return std::string(type.unset);
+  switch (type.kind) {
     case SettingKind::Whole:
       return fmt::format("{}", static_cast<long long>(value));
+    case SettingKind::Bytes:
+      return byteCountText(static_cast<std::uint64_t>(value));
     case SettingKind::Switch:
       return value != 0 ? "on" : "off";
     case SettingKind::Choice: {
       const auto index = static_cast<std::size_t>(value);
       // A profile built in code may hold a value no name has: say so rather than guess.
-      return value >= 0 && index < choices.size() ? std::string(choices[index]) : std::string("?");
+      return value >= 0 && index < type.choices.size() ? std::string(type.choices[index]) : std::string("?");
     }
     case SettingKind::Number:
     case SettingKind::Reported:
@@ -47,10 +68,11 @@ std::string formatValue(SettingKind kind, SettingChoices choices, double value) 
   return fmt::format("{}", value);
 }
 
-void checkRange(std::string_view context, std::string_view key, NumberRange range, double value) {
-  if (!(value >= range.min && value <= range.max))
+void checkRange(std::string_view context, std::string_view key, const RowType& type, double value) {
+  if (!type.unset.empty() && std::isnan(value)) return;
+  if (!(value >= type.range.min && value <= type.range.max))
     throw Error(ErrorKind::Usage, fmt::format("{}: {}={} is out of range; give {}", context, key, value,
-                                              describeRange(range)));
+                                              describeRange(type.range)));
 }
 
 void checkChoice(std::string_view context, std::string_view key, SettingChoices choices, double index) {
@@ -62,21 +84,29 @@ void checkChoice(std::string_view context, std::string_view key, SettingChoices 
 }  // namespace settings_detail
 
 std::string settingTakes(const SettingInfo& info) {
+  std::string takes;
   switch (info.kind) {
     case SettingKind::Whole:
     case SettingKind::Number:
-      return describeRange(info.range);
+      takes = describeRange(info.range);
+      break;
+    case SettingKind::Bytes:
+      takes = "a size in bytes (57600, 56K, 8MiB)";
+      break;
     case SettingKind::Switch:
-      return "`on` or `off`";
+      takes = "`on` or `off`";
+      break;
     case SettingKind::Choice: {
       std::vector<std::string> quoted;
       for (std::string_view name : info.choices) quoted.push_back(fmt::format("`{}`", name));
+      if (!info.unset.empty()) quoted.push_back(fmt::format("`{}`", info.unset));
       return choicesOf(quoted);
     }
     case SettingKind::Reported:
-      break;
+      return "reported";
   }
-  return "reported";
+  if (!info.unset.empty()) takes += fmt::format(", or `{}`", info.unset);
+  return takes;
 }
 
 std::string settingsMarkdown(std::span<const SettingInfo> infos) {

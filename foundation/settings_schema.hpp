@@ -8,19 +8,26 @@
 // the key list of an error, describe() and the Markdown table of docs/cli.md
 // are all read from that table, so a key is spelled in one place and the
 // docs cannot drift from the code (tests/devices/shared regenerates them).
-// Every number goes through foundation/number_text.hpp, so NaN, infinities
-// and values out of range are refused there, once. A default is the value
+// Every number goes through foundation/number_text.hpp and every size through
+// foundation/byte_count.hpp, so NaN, infinities and values out of range are
+// refused there, once. A default is the value
 // the profile starts with, read through its row, never written twice.
 //
 // A value travels between the table and the profile as a double: the number
 // itself, 0 or 1 for a switch, or the index of a name among the choices (a
-// bool is choice 0 or not; an enum's values are its names in order). Plain
+// bool is choice 0 or not; an enum's values are its names in order). A
+// setting that may be left unset (a std::optional field: "each lattice's own",
+// "no budget") names that state with a word of its own (`unset`), which it
+// takes and shows, and travels as NaN, which no typed number can be. Plain
 // fields are read and written through member pointers (whole<&P::width>);
 // a setting that is not one field (a preset, a character spelled as a name)
 // gives its own pair of captureless functions. Rows are constant data with
 // plain function pointers, so a table sits in flash on the firmware.
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <limits>
+#include <optional>
 #include <iterator>
 #include <span>
 #include <string>
@@ -29,6 +36,7 @@
 #include <vector>
 
 #include "foundation/key_value.hpp"
+#include "foundation/name_table.hpp"
 #include "foundation/number_text.hpp"
 
 namespace lattice {
@@ -37,6 +45,7 @@ enum class SettingKind {
   Whole,     // a whole number in `range`
   Number,    // a finite number in `range`
   Switch,    // on or off (yes/no, true/false, 1/0 are read too)
+  Bytes,     // a size in bytes: 57600, 56K, 8MiB (foundation/byte_count.hpp)
   Choice,    // one of `choices()`
   Reported,  // shown by describe() (`report`), not taken by --set: it follows from other settings
 };
@@ -56,6 +65,9 @@ struct Setting {
   // A preset: applySettings applies it before the other keys wherever it was
   // typed, so they refine it.
   bool preset = false;
+  // Non-empty: the word for "not set" (the field is a std::optional), e.g.
+  // "scene" for each lattice's own form, "none" for no budget.
+  std::string_view unset{};
 };
 
 template <class Profile>
@@ -76,17 +88,25 @@ struct SettingInfo {
   std::vector<std::string_view> choices;
   std::string initial;  // the value the profile starts with, as describe() shows it
   std::string_view help;
+  std::string_view unset;  // the word for "not set", or empty
 };
 
 // The parts that do not depend on the profile (settings_schema.cpp).
 namespace settings_detail {
-// The key=value's value as the row's double, or Error(Usage) naming the key
-// and what it takes.
-double parseValue(std::string_view context, SettingKind kind, NumberRange range, SettingChoices choices,
-                   const KeyValue& kv);
-std::string formatValue(SettingKind kind, SettingChoices choices, double value);
-// Error(Usage) when a stored value is outside its range (a profile built in code).
-void checkRange(std::string_view context, std::string_view key, NumberRange range, double value);
+// A row as the parts below see it.
+struct RowType {
+  SettingKind kind = SettingKind::Whole;
+  NumberRange range{};
+  SettingChoices choices;
+  std::string_view unset;
+};
+// The key=value's value as the row's double (NaN: the unset word), or
+// Error(Usage) naming the key and what it takes.
+double parseValue(std::string_view context, const RowType& type, const KeyValue& kv);
+std::string formatValue(const RowType& type, double value);
+// Error(Usage) when a stored value is outside its range (a profile built in
+// code); an unset value passes where the row may be unset.
+void checkRange(std::string_view context, std::string_view key, const RowType& type, double value);
 void checkChoice(std::string_view context, std::string_view key, SettingChoices choices, double index);
 }  // namespace settings_detail
 
@@ -131,8 +151,15 @@ template <auto... Path>
 using FieldOf = std::remove_cvref_t<decltype(field<Path...>(std::declval<ProfileOf<Path...>&>()))>;
 
 template <class T>
-constexpr double toValue(T v) {
-  if constexpr (std::is_enum_v<T>)
+struct IsOptional : std::false_type {};
+template <class T>
+struct IsOptional<std::optional<T>> : std::true_type {};
+
+template <class T>
+constexpr double toValue(const T& v) {
+  if constexpr (IsOptional<T>::value)
+    return v ? toValue(*v) : std::numeric_limits<double>::quiet_NaN();
+  else if constexpr (std::is_enum_v<T>)
     return static_cast<double>(static_cast<std::underlying_type_t<T>>(v));
   else if constexpr (std::is_same_v<T, bool>)
     return v ? 1.0 : 0.0;
@@ -142,7 +169,9 @@ constexpr double toValue(T v) {
 
 template <class T>
 constexpr T fromValue(double v) {
-  if constexpr (std::is_enum_v<T>)
+  if constexpr (IsOptional<T>::value)
+    return std::isnan(v) ? T{} : T{fromValue<typename T::value_type>(v)};
+  else if constexpr (std::is_enum_v<T>)
     return static_cast<T>(static_cast<std::underlying_type_t<T>>(v));
   else if constexpr (std::is_same_v<T, bool>)
     return v != 0;
@@ -173,6 +202,12 @@ constexpr auto number(std::string_view key, NumberRange range, std::string_view 
   return settings_detail::fieldRow<Path...>(key, SettingKind::Number, range, nullptr, help);
 }
 
+// A size in bytes (an integer field, or an optional one).
+template <auto... Path>
+constexpr auto bytes(std::string_view key, std::string_view help) {
+  return settings_detail::fieldRow<Path...>(key, SettingKind::Bytes, {1, 1e18, true}, nullptr, help);
+}
+
 // A bool field taking on or off.
 template <auto... Path>
 constexpr auto onOff(std::string_view key, std::string_view help) {
@@ -201,29 +236,53 @@ constexpr auto choiceAs(std::string_view key, std::string_view help) {
                     [](P& p, double v) { settings_detail::field<Path...>(p) = Values[static_cast<std::size_t>(v)]; }};
 }
 
-// The names of a table of EnumName pairs (foundation/name_table.hpp), for a
-// Choice row over an enum field: the table is the one spelling.
+// The names of a table (foundation/name_table.hpp: EnumName pairs, or
+// entries with a `name`), for a Choice row over an enum field: the table is
+// the one spelling.
 template <const auto& Table>
 SettingChoices namesOfTable() {
   static const auto names = [] {
     std::array<std::string_view, std::size(Table)> n{};
-    for (std::size_t i = 0; i < n.size(); ++i) n[i] = Table[i].second;
+    for (std::size_t i = 0; i < n.size(); ++i) n[i] = entryName(Table[i]);
     return n;
   }();
   return names;
+}
+
+// An enum field (or an optional one) whose values are 0, 1, 2... in the order
+// of the entries of `Table`, which name them.
+template <const auto& Table, auto... Path>
+constexpr auto choiceInOrder(std::string_view key, std::string_view help) {
+  return settings_detail::fieldRow<Path...>(key, SettingKind::Choice, {}, &namesOfTable<Table>, help);
+}
+
+// The row, which may be left unset, `word` naming that state ("scene", "none").
+template <class Profile>
+constexpr Setting<Profile> orUnset(Setting<Profile> row, std::string_view word) {
+  row.unset = word;
+  return row;
 }
 
 // An enum field taking one of the names of `Table`, stored as that entry's value.
 template <const auto& Table, auto... Path>
 constexpr auto choiceOf(std::string_view key, std::string_view help) {
   using P = settings_detail::ProfileOf<Path...>;
+  constexpr bool optional = settings_detail::IsOptional<settings_detail::FieldOf<Path...>>::value;
   return Setting<P>{key, SettingKind::Choice, {}, &namesOfTable<Table>, help,
                     [](const P& p) {
+                      const auto& value = settings_detail::field<Path...>(p);
+                      if constexpr (optional)
+                        if (!value) return std::numeric_limits<double>::quiet_NaN();
                       std::size_t i = 0;
-                      while (i < std::size(Table) && Table[i].first != settings_detail::field<Path...>(p)) ++i;
+                      while (i < std::size(Table) && Table[i].first != value) ++i;
                       return static_cast<double>(i);
                     },
-                    [](P& p, double v) { settings_detail::field<Path...>(p) = Table[static_cast<std::size_t>(v)].first; }};
+                    [](P& p, double v) {
+                      auto& value = settings_detail::field<Path...>(p);
+                      if constexpr (optional)
+                        if (std::isnan(v)) return void(value.reset());
+                      value = Table[static_cast<std::size_t>(v)].first;
+                    }};
 }
 
 template <class Profile>
@@ -240,6 +299,11 @@ bool settable(const Setting<Profile>& row) {
 template <class Profile>
 SettingChoices rowChoices(const Setting<Profile>& row) {
   return row.choices ? row.choices() : SettingChoices{};
+}
+
+template <class Profile>
+settings_detail::RowType rowType(const Setting<Profile>& row) {
+  return {row.kind, row.range, rowChoices(row), row.unset};
 }
 
 // "a, b, c": the keys --set takes, in table order.
@@ -265,7 +329,7 @@ const Setting<Profile>* findSetting(const SettingsSchema<Profile>& schema, std::
 template <class Profile>
 std::string settingText(const Setting<Profile>& row, const Profile& profile) {
   if (row.kind == SettingKind::Reported) return row.report(profile);
-  return settings_detail::formatValue(row.kind, rowChoices(row), row.read(profile));
+  return settings_detail::formatValue(rowType(row), row.read(profile));
 }
 
 // One "key=value": unknown keys, values that are not the row's kind or are
@@ -279,7 +343,7 @@ void applySetting(const SettingsSchema<Profile>& schema, Profile& profile, std::
   const Setting<Profile>* row = findSetting(schema, kv.key);
   if (!row) unknownSetting(schema.context, kv, keys);
   Profile changed = profile;
-  row->write(changed, settings_detail::parseValue(schema.context, row->kind, row->range, rowChoices(*row), kv));
+  row->write(changed, settings_detail::parseValue(schema.context, rowType(*row), kv));
   if (schema.validate) schema.validate(changed);
   profile = changed;
 }
@@ -330,10 +394,12 @@ std::vector<std::string> settingsChanged(const SettingsSchema<Profile>& schema, 
 template <class Profile>
 void checkSettings(const SettingsSchema<Profile>& schema, const Profile& profile) {
   for (const Setting<Profile>& row : schema.rows) {
-    if (row.kind == SettingKind::Whole || row.kind == SettingKind::Number)
-      settings_detail::checkRange(schema.context, row.key, row.range, row.read(profile));
+    const double value = row.kind == SettingKind::Reported ? 0.0 : row.read(profile);
+    if (!row.unset.empty() && std::isnan(value)) continue;
+    if (row.kind == SettingKind::Whole || row.kind == SettingKind::Number || row.kind == SettingKind::Bytes)
+      settings_detail::checkRange(schema.context, row.key, rowType(row), value);
     else if (row.kind == SettingKind::Choice)
-      settings_detail::checkChoice(schema.context, row.key, rowChoices(row), row.read(profile));
+      settings_detail::checkChoice(schema.context, row.key, rowChoices(row), value);
   }
 }
 
@@ -345,7 +411,8 @@ std::vector<SettingInfo> settingInfos(const SettingsSchema<Profile>& schema) {
   for (const Setting<Profile>& row : schema.rows) {
     if (!settable(row)) continue;
     const SettingChoices names = rowChoices(row);
-    infos.push_back({row.key, row.kind, row.range, {names.begin(), names.end()}, settingText(row, initial), row.help});
+    infos.push_back(
+        {row.key, row.kind, row.range, {names.begin(), names.end()}, settingText(row, initial), row.help, row.unset});
   }
   return infos;
 }

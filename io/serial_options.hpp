@@ -44,9 +44,8 @@ struct SerialOptions {
   void validate() const;
 };
 
-// Flag spellings, shared by the CLI, error messages and the resume command.
-Parity parseParity(std::string_view text);           // none|even|odd, Error(Usage) otherwise
-FlowControl parseFlowControl(std::string_view text); // none|xonxoff|rtscts, Error(Usage) otherwise
+// The names of kParityNames and kFlowControlNames, for messages (the flags
+// read them through io/serial_settings.hpp).
 std::string_view toString(Parity parity);
 std::string_view toString(FlowControl flow);
 

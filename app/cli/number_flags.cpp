@@ -45,6 +45,12 @@ CLI::Validator numberIn(NumberRange range) {
                         kCheckName);
 }
 
+CLI::Validator numberIn(NumberRange range, const std::string& word) {
+  return CLI::Validator(
+      [range, word](std::string& text) { return text == word ? std::string() : numberTextProblem(text, range); },
+      describeRange(range) + ", or " + word, kCheckName);
+}
+
 void guardNumbers(CLI::App& root) {
   forEachNumericOption(root, "", [](const std::string&, CLI::Option& option, const std::string& type) {
     if (hasCheck(option, kCheckName)) return;

@@ -20,6 +20,8 @@ namespace lattice::app {
 
 // A CLI11 check that refuses what parseNumberText refuses.
 CLI::Validator numberIn(NumberRange range);
+// The same, taking `word` too (a setting's unset word: "none").
+CLI::Validator numberIn(NumberRange range, const std::string& word);
 
 // Every numeric option below `root` without a numberIn check gets one for its type.
 void guardNumbers(CLI::App& root);

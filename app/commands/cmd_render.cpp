@@ -19,6 +19,7 @@
 #include "app/commands/send_file.hpp"
 #include "app/cli/number_flags.hpp"
 #include "app/cli/pipeline_args.hpp"
+#include "app/cli/setting_flags.hpp"
 #include "app/render_job.hpp"
 #include "app/cli/serial_args.hpp"
 #include "app/cli/wire_args.hpp"
@@ -28,10 +29,9 @@
 #include "foundation/error.hpp"
 #include "foundation/system/output_transaction.hpp"
 #include "foundation/system/resident_memory.hpp"
-#include "lht/leaf/lookup_mode.hpp"
-#include "lht/table/lht_form.hpp"
-#include "lht/table/lht_precision.hpp"
+#include "io/serial_settings.hpp"
 #include "lht/leaf/lookup_stats.hpp"
+#include "loader/table_settings.hpp"
 
 namespace lattice::app {
 namespace {
@@ -40,10 +40,8 @@ struct RenderFlags {
   RenderJob job;
   std::string device = "png";
   bool noLatticeShadows = false;
-  std::string lhtPrecision;  // empty: each lattice's own `precision`
-  std::string lhtForm;       // empty: each lattice's own `form`
-  std::string lookup;        // empty: each lattice's own `lookup`
-  std::string lhtCache;      // as typed
+  bool lhtStats = false;
+  SettingFlagValues tables;  // the lattice tables' flags, as typed (loader/table_settings.hpp)
   std::string memoryBudget;  // as typed
   PipelineArgs pipeline;
   io::SerialOptions serial;
@@ -70,7 +68,7 @@ bool isVirtualPort(const std::string& port) { return port.rfind("virtual:", 0) =
 // picture (-o), else the scene's name in the current folder, with the
 // device's name as the extension (fuzzy.png -> fuzzy.tek4125).
 std::string recordingPath(const RenderJob& job, const std::string& device) {
-  std::filesystem::path path = job.picture.empty() ? std::filesystem::path(job.scene).filename() : std::filesystem::path(job.picture);
+  std::filesystem::path path = job.output.picture.empty() ? std::filesystem::path(job.scene).filename() : std::filesystem::path(job.output.picture);
   path.replace_extension(device);
   return path.string();
 }
@@ -78,9 +76,9 @@ std::string recordingPath(const RenderJob& job, const std::string& device) {
 // After the render: the recorded stream to the port (app/commands/send_file.hpp).
 void sendRecording(const RenderFlags& f, const CLI::App& cmd, const RenderJob& job, const RenderResult& result) {
   SendArgs send;
-  send.stream = job.stream;
+  send.stream = job.output.stream;
   send.device = f.device;
-  send.settings = job.settings;
+  send.settings = job.output.settings;
   if (result.wire) send.settings.insert(send.settings.end(), result.wire->settings.begin(), result.wire->settings.end());
   send.serial = f.serial;
   send.baudGiven = cmd.count("--baud") > 0;
@@ -89,12 +87,12 @@ void sendRecording(const RenderFlags& f, const CLI::App& cmd, const RenderJob& j
     if (const devices::Device device = devices::makeDevice(f.device, send.settings); device.line)
       send.serial.baud = device.line->baud, send.baudGiven = true;
   }
-  send.screen = f.job.picture;
-  send.screenGiven = isVirtualPort(f.serial.port) && !f.job.picture.empty();
+  send.screen = f.job.output.picture;
+  send.screenGiven = isVirtualPort(f.serial.port) && !f.job.output.picture.empty();
   send.force = true;  // -o was checked with render's flags
   send.who = "lattice render";
   OutputTransaction::commitOpen();  // the recording lands before a byte goes out
-  fmt::print(stderr, "lattice render: the stream is recorded in {}; sending it to {}\n", job.stream, f.serial.port);
+  fmt::print(stderr, "lattice render: the stream is recorded in {}; sending it to {}\n", job.output.stream, f.serial.port);
   runSend(send);
 }
 
@@ -112,28 +110,28 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
   cmd.add_option("scene", j.scene, "Scene file (TOML, see docs/scene-format.md)")->required();
   // Help groups follow docs/cli.md's list for `lattice render`; a flag added
   // without a group is listed under "Options".
-  cmd.add_option("-o,--output", j.picture,
+  cmd.add_option("-o,--output", j.output.picture,
                  "PNG to write (atomically): the truecolour picture, or the device emulator's view of the stream")
       ->group(kOutputGroup);
   cmd.add_option("--device", f.device, fmt::format("png (truecolour) or a device: {}", fmt::join(devices, ", ")))
       ->check(CLI::IsMember(devices))
       ->capture_default_str()
       ->group(kOutputGroup);
-  cmd.add_option("--stream", j.stream,
+  cmd.add_option("--stream", j.output.stream,
                  "Devices: write the command stream to this file, or - for stdout (sixel: stdout when it is a "
                  "terminal and no other destination is named)")
       ->group(kOutputGroup);
-  cmd.add_option("--set", j.settings,
+  cmd.add_option("--set", j.output.settings,
                  "Devices: override a profile assumption, key=value (repeatable), e.g. --set planes=4; "
                  "docs/tek4125.md, docs/tek4027.md and docs/tek4014.md list the keys")
       ->group(kOutputGroup);
-  cmd.add_option("--width", j.width, "Image width in pixels (default: the scene's, fitted to the device)")
+  cmd.add_option("--width", j.render.width, "Image width in pixels (default: the scene's, fitted to the device)")
       ->check(numberIn({1, 16384, true}))
       ->group(kPictureGroup);
-  cmd.add_option("--height", j.height, "Image height in pixels (default: the scene's, fitted to the device)")
+  cmd.add_option("--height", j.render.height, "Image height in pixels (default: the scene's, fitted to the device)")
       ->check(numberIn({1, 16384, true}))
       ->group(kPictureGroup);
-  cmd.add_option("--threads", j.threads, "Threads for rendering and rasterizing (default: all cores); same image")
+  cmd.add_option("--threads", j.render.threads, "Threads for rendering and rasterizing (default: all cores); same image")
       ->check(numberIn({1, 256, true}))
       ->group(kPictureGroup);
   cmd.add_option("--arith", j.arithmetic,
@@ -143,31 +141,12 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
       ->check([](const std::string& name) { return isArithmeticName(name) ? "" : "choose " + arithmeticNames(); })
       ->capture_default_str()
       ->group(kPictureGroup);
-  cmd.add_flag("--full", j.fullRayTrace, "Full ray trace: every lattice replaced by its exact CSG object")->group(kLatticeGroup);
+  cmd.add_flag("--full", j.render.build.fullRayTrace, "Full ray trace: every lattice replaced by its exact CSG object")->group(kLatticeGroup);
   cmd.add_flag("--no-lattice-shadows", f.noLatticeShadows, "Lattices cast no shadows, as particles (thesis plate 3)")
       ->group(kLatticeGroup);
-  cmd.add_option("--lht-precision", f.lhtPrecision,
-                 fmt::format("LHT entry precision of every lattice, overriding the scene's `precision`: {} "
-                             "(docs/lattices.md, \"Entry precision\")",
-                             lht::lhtPrecisionChoices()))
-      ->group(kLatticeGroup);
-  cmd.add_option("--lht-form", f.lhtForm,
-                 fmt::format("LHT form of every lattice, overriding the scene's `form`: {} (docs/lattices.md, \"The "
-                             "compressed LHT\", \"The LHT built on demand\")",
-                             lht::lhtFormChoices()))
-      ->group(kLatticeGroup);
-  cmd.add_option("--lattice-lookup", f.lookup,
-                 fmt::format("How lattice leaves read their table, overriding the scene's `lookup`: {} (thesis: "
-                             "nearest lattice points, one pair; blend: the 16 pairs around the ray, weighted; "
-                             "docs/lattices.md, \"Look-ups\")",
-                             lht::latticeLookupChoices()))
-      ->group(kLatticeGroup);
-  cmd.add_option("--lht-cache", f.lhtCache,
-                 "With --lht-form on-demand: the most memory its stored hits take, 48 bytes each (8MiB, 65536K; "
-                 "default 64MiB; misses go to a bitmap apart); beyond it new pairs are traced again rather than "
-                 "stored (docs/lattices.md)")
-      ->group(kLatticeGroup);
-  cmd.add_flag("--lht-stats", j.lhtStats,
+  addSettingFlags(&cmd, lht::tableSettings(), lht::tableSettings().initial(), f.tables,
+                  settableKeys(lht::tableSettings()), kLatticeGroup);
+  cmd.add_flag("--lht-stats", f.lhtStats,
                "After rendering, print per lattice: look-ups, hits, misses, distinct (p_i, p_o) asked, entries "
                "referenced (share of N_iz) and look-ups per entry (docs/lattices.md); off, nothing is counted")
       ->group(kLatticeGroup);
@@ -196,37 +175,37 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
                              deviceChoices));
   refuseUnless(cmd, {"--set"}, !png,
                fmt::format("overrides a device profile, and none was chosen: add --device ({})", deviceChoices));
-  refuseUnless(cmd, {"--flow", "--data-bits", "--parity", "--stop-bits", "--stall-timeout", "--pace"},
-               cmd.count("--port") > 0, "sets the serial line of --port, and none was given: add --port PORT, or drop it");
+  for (std::string_view key : settableKeys(io::serialSettings()))  // the line's flags, from its schema
+    if (key != "baud")
+      refuseUnless(cmd, {fmt::format("--{}", key).c_str()}, cmd.count("--port") > 0,
+                   "sets the serial line of --port, and none was given: add --port PORT, or drop it");
   // --wire-seconds counts at --baud too (a device without a serial line, sixel, has no other rate).
   refuseUnless(cmd, {"--baud"}, cmd.count("--port") > 0 || cmd.count("--wire-seconds") > 0,
                "sets the serial line of --port, and none was given: add --port PORT (or --wire-seconds S to "
                "count a budget at that rate), or drop it");
-  if (cmd.count("--lht-cache") > 0 && f.lhtForm != "on-demand")
+  RenderJob job = f.job;
+  if (f.device != "png") job.output.device = f.device;
+  job.render.build.latticeShadows = !f.noLatticeShadows;
+  applySettingFlags(lht::tableSettings(), job.tables, f.tables);
+  if (f.lhtStats) job.tables.stats = std::make_shared<lht::LookupStatsBook>();
+  if (cmd.count("--lht-cache") > 0 && job.tables.form != lht::LhtForm::OnDemand)
     fmt::print(stderr,
                "lattice render: warning: --lht-cache bounds only tables built on demand; it applies to no lattice "
                "unless --lht-form on-demand is given or the scene sets form = \"on-demand\"\n");
-  RenderJob job = f.job;
-  if (f.device != "png") job.device = f.device;
-  job.latticeShadows = !f.noLatticeShadows;
-  if (!f.lhtPrecision.empty()) job.precision = lht::parseLhtPrecision(f.lhtPrecision, "--lht-precision");
-  if (!f.lhtForm.empty()) job.form = lht::parseLhtForm(f.lhtForm, "--lht-form");
-  if (!f.lookup.empty()) job.lookup = lht::parseLatticeLookup(f.lookup, "--lattice-lookup");
-  if (!f.lhtCache.empty()) job.onDemandCacheBytes = parseByteCount(f.lhtCache, "--lht-cache");
-  if (!f.memoryBudget.empty()) job.memoryBudget = parseByteCount(f.memoryBudget, "--memory-budget");
-  job.modeChosenByUser = cmd.count("--mode") > 0 || cmd.count("--sample") > 0;
-  job.histogramChosenByUser = cmd.count("--histogram") > 0;
+  if (!f.memoryBudget.empty()) job.memory.budget = parseByteCount(f.memoryBudget, "--memory-budget");
+  job.memory.modeChosenByUser = cmd.count("--mode") > 0 || cmd.count("--sample") > 0;
+  job.memory.histogramChosenByUser = cmd.count("--histogram") > 0;
   job.pipeline = toPipelineOptions(f.pipeline);
   job.quiet = f.pipeline.quiet;
   // With --port the stream is recorded (--stream, or a file beside the
   // picture) and then sent from the file, so a send that stops resumes.
   if (cmd.count("--port") > 0) {
-    if (job.stream == "-")
+    if (job.output.stream == "-")
       throw Error(ErrorKind::Usage, "--stream - and --port: the stream sent to --port is recorded in a file; give "
                                     "--stream FILE, or drop --stream for a file beside the picture");
-    if (job.stream.empty()) job.stream = recordingPath(job, f.device);
+    if (job.output.stream.empty()) job.output.stream = recordingPath(job, f.device);
     // A virtual terminal's screen is the -o picture; render's own emulator is not needed.
-    if (isVirtualPort(f.serial.port)) job.picture.clear();
+    if (isVirtualPort(f.serial.port)) job.output.picture.clear();
   }
   // One baud: --baud becomes the profile's rate too, so the wire budget, the
   // timing line and the port all count at it. A device without a serial line
@@ -237,11 +216,11 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
     return std::any_of(keys.begin(), keys.end(), [](const SettingInfo& s) { return s.key == "baud"; });
   };
   if (cmd.count("--baud") > 0 && f.device != "png" && hasBaudKey()) {
-    for (const std::string& setting : job.settings)
+    for (const std::string& setting : job.output.settings)
       if (setting.rfind("baud=", 0) == 0 && setting != fmt::format("baud={}", f.serial.baud))
         throw Error(ErrorKind::Usage, fmt::format("--baud {} and --set {} name two line rates; give one", f.serial.baud,
                                                   setting));
-    job.settings.push_back(fmt::format("baud={}", f.serial.baud));
+    job.output.settings.push_back(fmt::format("baud={}", f.serial.baud));
   }
   applyWireArgs(f.wire, cmd, f.serial.baud, job);
   streamToTerminalByDefault(job);  // sixel on a terminal: the picture goes there
@@ -325,7 +304,7 @@ void addRender(CLI::App& root) {
     const RenderResult r = renderScene(job);
     fmt::print(stderr, "lattice render: {}: {}x{}, {:.2f} s{}, {} rays ({} arithmetic, {} thread{}){}\n", job.scene,
                r.width, r.height, r.seconds, phaseTimes(r.phases), r.rays, job.arithmetic, r.threads,
-               r.threads == 1 ? "" : "s", job.picture.empty() ? "" : fmt::format(", picture {}", job.picture));
+               r.threads == 1 ? "" : "s", job.output.picture.empty() ? "" : fmt::format(", picture {}", job.output.picture));
     if (cmd->count("--port") > 0) sendRecording(*flags, *cmd, job, r);
   });
 }

@@ -1,16 +1,11 @@
 #include "foundation/system/resident_memory.hpp"
 
-#include <fmt/format.h>
-
 #include <cctype>
 #include <charconv>
-#include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include <unistd.h>
-
-#include "foundation/error.hpp"
 
 namespace lattice {
 
@@ -58,41 +53,6 @@ std::optional<ResidentMemory> residentMemory() {
   std::ostringstream text;
   text << in.rdbuf();
   return parseProcStatus(text.str());
-}
-
-std::uint64_t parseByteCount(std::string_view text, std::string_view flag) {
-  const auto bad = [&] {
-    return Error(ErrorKind::Usage, fmt::format("{} {}: give a size in bytes, e.g. 8388608, 8192K, 8MiB or 1.5M "
-                                               "(K, M, G with or without 'iB' are powers of 1024)",
-                                               flag, text));
-  };
-  double number = 0.0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
-  if (ec != std::errc() || !(number > 0.0) || !std::isfinite(number)) throw bad();
-  std::string suffix(ptr, text.data() + text.size());
-  for (char& c : suffix) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  double scale = 1.0;
-  if (suffix.empty() || suffix == "B")
-    scale = 1.0;
-  else if (suffix == "K" || suffix == "KB" || suffix == "KIB")
-    scale = 1024.0;
-  else if (suffix == "M" || suffix == "MB" || suffix == "MIB")
-    scale = 1024.0 * 1024.0;
-  else if (suffix == "G" || suffix == "GB" || suffix == "GIB")
-    scale = 1024.0 * 1024.0 * 1024.0;
-  else
-    throw bad();
-  const double bytes = std::round(number * scale);
-  if (bytes < 1.0 || bytes > 1e18) throw bad();
-  return static_cast<std::uint64_t>(bytes);
-}
-
-std::string formatBytes(std::uint64_t bytes) {
-  const double b = static_cast<double>(bytes);
-  if (bytes >= 1024ull * 1024 * 1024) return fmt::format("{:.2f} GiB", b / (1024.0 * 1024 * 1024));
-  if (bytes >= 1024ull * 1024) return fmt::format("{:.2f} MiB", b / (1024.0 * 1024));
-  if (bytes >= 1024) return fmt::format("{:.1f} KiB", b / 1024.0);
-  return fmt::format("{} B", bytes);
 }
 
 }  // namespace lattice

@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "foundation/byte_count.hpp"  // the sizes a budget is given in
+
 namespace lattice {
 
 struct ResidentMemory {
@@ -22,11 +24,5 @@ std::optional<std::uint64_t> physicalMemory();
 // Parses the text of a /proc/PID/status file (nullopt if a field is missing).
 std::optional<ResidentMemory> parseProcStatus(std::string_view status);
 
-// "8388608", "8192K", "8KiB", "8M", "8MiB", "1.5M", "2G": decimal or binary
-// suffixes both mean powers of 1024, as the 8 MB of a Sun 3/60 did.
-// lattice::Error(Usage) naming the flag and the forms accepted.
-std::uint64_t parseByteCount(std::string_view text, std::string_view flag);
-// 8650752 -> "8.25 MiB", 4000 -> "3.9 KiB".
-std::string formatBytes(std::uint64_t bytes);
 
 }  // namespace lattice

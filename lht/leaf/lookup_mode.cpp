@@ -9,20 +9,12 @@
 
 namespace lattice::lht {
 
-namespace {
 
-constexpr std::array<EnumName<LatticeLookup>, 2> kLookups = {{
-    {LatticeLookup::Thesis, "thesis"},
-    {LatticeLookup::Blend, "blend"},
-}};
+std::string_view latticeLookupName(LatticeLookup lookup) { return nameOfValue(kLatticeLookupNames, lookup); }
 
-}  // namespace
+std::string latticeLookupChoices() { return namesOf(kLatticeLookupNames); }
 
-std::string_view latticeLookupName(LatticeLookup lookup) { return nameOfValue(kLookups, lookup); }
-
-std::string latticeLookupChoices() { return namesOf(kLookups); }
-
-std::optional<LatticeLookup> latticeLookupFromName(std::string_view name) { return valueNamed(kLookups, name); }
+std::optional<LatticeLookup> latticeLookupFromName(std::string_view name) { return valueNamed(kLatticeLookupNames, name); }
 
 LatticeLookup parseLatticeLookup(std::string_view name, std::string_view what) {
   if (const auto lookup = latticeLookupFromName(name)) return *lookup;

@@ -14,13 +14,22 @@
 //           what the table samples (docs/lattices.md, "Look-ups"). Pairs
 //           are read heaviest first and a miss is decided as soon as the
 //           missing pairs hold over half the weight.
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
 
+#include "foundation/name_table.hpp"
+
 namespace lattice::lht {
 
 enum class LatticeLookup { Thesis, Blend };
+
+// The one spelling of each look-up, in scene files and on the command line.
+inline constexpr std::array<EnumName<LatticeLookup>, 2> kLatticeLookupNames = {{
+    {LatticeLookup::Thesis, "thesis"},
+    {LatticeLookup::Blend, "blend"},
+}};
 
 std::string_view latticeLookupName(LatticeLookup lookup);
 std::string latticeLookupChoices();  // "thesis, blend"

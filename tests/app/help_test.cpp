@@ -77,11 +77,11 @@ TEST_CASE("render --help is grouped as docs/cli.md groups it, with the program's
   INFO(text);
   CHECK_THAT(text, Catch::Contains("lattice render [OPTIONS]"));
   CHECK_FALSE(Catch::Contains("/app/lattice").match(text));
-  for (const char* group : {"Output:", "Picture:", "Lattices:", "Quantizer (devices):", "Memory:", "Serial line:",
+  for (const char* group : {"Output:", "Picture:", "Lattices:", "Quantizer (devices):", "Memory:", "Serial line:", "Wire budget:",
                             "Report:"})
     CHECK_THAT(text, Catch::Contains(group));
   // --baud's default is the device profile's rate, as the render uses.
-  CHECK_THAT(text, Catch::Contains("default: the device profile's rate: tek4125 38400"));
+  CHECK_THAT(text, Catch::Contains("=the device profile's rate: tek4125 38400"));
   CHECK_THAT(help("send"), Catch::Contains("virtual:"));
 }
 

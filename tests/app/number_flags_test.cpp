@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -22,18 +23,48 @@ struct NumericFlag {
   std::string flag;                  // "--width"
 };
 
-void collect(CLI::App& app, std::vector<std::string> path, std::vector<NumericFlag>& out) {
+// The flags whose type name is one of `types` ("INT", "SIZE"), below `app`.
+void collectTyped(CLI::App& app, std::vector<std::string> path, std::vector<NumericFlag>& out,
+                  const std::vector<std::string>& types) {
   for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
     std::vector<std::string> here = path;
     here.push_back(sub->get_name());
-    collect(*sub, here, out);
+    collectTyped(*sub, here, out, types);
     for (const CLI::Option* option : sub->get_options()) {
       const std::string type = option->get_type_name();
       const std::string base = type.substr(0, type.find(':'));
-      if ((base == "INT" || base == "UINT" || base == "FLOAT") && !option->get_lnames().empty())
+      if (std::find(types.begin(), types.end(), base) != types.end() && !option->get_lnames().empty())
         out.push_back({here, "--" + option->get_lnames().front()});
     }
   }
+}
+
+void collect(CLI::App& app, std::vector<std::string> path, std::vector<NumericFlag>& out) {
+  collectTyped(app, std::move(path), out, {"INT", "UINT", "FLOAT"});
+}
+
+// What parsing `flag value` under `command` says (empty: taken).
+std::string refusalOf(const NumericFlag& f, const std::string& value) {
+  std::vector<std::string> argv = {"lattice"};
+  argv.insert(argv.end(), f.command.begin(), f.command.end());
+  argv.push_back(f.flag);
+  argv.push_back(value);
+  std::vector<char*> raw;
+  for (std::string& a : argv) raw.push_back(a.data());
+  CLI::App tree;
+  lattice::app::buildCommandTree(tree);
+  try {
+    tree.parse(static_cast<int>(raw.size()), raw.data());
+  } catch (const CLI::ValidationError& e) {
+    return e.what();
+  } catch (const CLI::RequiredError&) {
+    return {};  // the value was taken; the command's positionals were not given
+  } catch (const CLI::ParseError& e) {
+    return e.get_exit_code() == 0 ? std::string() : std::string("other parse error: ") + e.what();
+  } catch (const std::exception& e) {
+    return std::string("other error: ") + e.what();
+  }
+  return {};
 }
 
 }  // namespace
@@ -54,24 +85,29 @@ TEST_CASE("every numeric flag refuses NaN, infinities and overflow with its name
   REQUIRE(flags.size() >= 20);  // the table has about thirty; an empty walk would prove nothing
   for (const NumericFlag& f : flags) {
     for (const char* value : {"nan", "inf", "-inf", "1e999"}) {
-      std::vector<std::string> argv = {"lattice"};
-      argv.insert(argv.end(), f.command.begin(), f.command.end());
-      argv.push_back(f.flag);
-      argv.push_back(value);
-      std::vector<char*> raw;
-      for (std::string& a : argv) raw.push_back(a.data());
-      CLI::App tree;
-      lattice::app::buildCommandTree(tree);
-      std::string message;
-      try {
-        tree.parse(static_cast<int>(raw.size()), raw.data());
-      } catch (const CLI::ValidationError& e) {
-        message = e.what();
-      } catch (const std::exception& e) {
-        message = std::string("other error: ") + e.what();
-      }
+      const std::string message = refusalOf(f, value);
       INFO(f.command.back() << " " << f.flag << " " << value << ": " << message);
       CHECK_THAT(message, Catch::StartsWith(f.flag) && Catch::Contains("not a") && Catch::Contains(value));
+    }
+  }
+}
+
+TEST_CASE("every size flag refuses NaN, zero, negatives and unknown units with its name, and takes sizes",
+          "[cli][numbers]") {
+  CLI::App root;
+  lattice::app::buildCommandTree(root);
+  std::vector<NumericFlag> flags;
+  collectTyped(root, {}, flags, {"SIZE"});
+  REQUIRE(flags.size() >= 2);  // render --lht-cache and --wire-bytes at least
+  for (const NumericFlag& f : flags) {
+    for (const char* value : {"nan", "inf", "0", "-1", "12Q", "1e999"}) {
+      const std::string message = refusalOf(f, value);
+      INFO(f.command.back() << " " << f.flag << " " << value << ": " << message);
+      CHECK_THAT(message, Catch::StartsWith(f.flag) && Catch::Contains("give a size in bytes"));
+    }
+    for (const char* value : {"57600", "56K", "8MiB"}) {
+      INFO(f.command.back() << " " << f.flag << " " << value);
+      CHECK(refusalOf(f, value).empty());
     }
   }
 }

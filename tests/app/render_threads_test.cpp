@@ -33,12 +33,12 @@ struct Output {
 
 Output renderWith(const app::RenderJob& base, int threads, const testing::TempDir& dir) {
   app::RenderJob job = base;
-  job.threads = threads;
-  job.stream = dir / fmt::format("t{}.tek", threads);
-  job.picture = dir / fmt::format("t{}.png", threads);
+  job.render.threads = threads;
+  job.output.stream = dir / fmt::format("t{}.tek", threads);
+  job.output.picture = dir / fmt::format("t{}.png", threads);
   job.quiet = true;
   app::renderScene(job);
-  return {slurp(job.stream), slurp(job.picture)};
+  return {slurp(job.output.stream), slurp(job.output.picture)};
 }
 
 }  // namespace
@@ -57,11 +57,11 @@ TEST_CASE("render threads: the device stream is the same for 1 to 4 threads in e
       INFO(c.scene << (c.full ? " --full " : " ") << c.arithmetic << ", mode " << quantize::pipelineModeName(mode));
       app::RenderJob job;
       job.scene = testing::sourcePath(fmt::format("scenes/{}", c.scene)).string();
-      job.device = "tek4125";
-      job.width = 72;
-      job.height = 61;  // not a multiple of any band
+      job.output.device = "tek4125";
+      job.render.width = 72;
+      job.render.height = 61;  // not a multiple of any band
       job.arithmetic = c.arithmetic;
-      job.fullRayTrace = c.full;
+      job.render.build.fullRayTrace = c.full;
       job.pipeline.mode = mode;
       const Output one = renderWith(job, 1, dir);
       REQUIRE(one.stream.size() > 1000);
@@ -79,14 +79,14 @@ TEST_CASE("render threads: a truecolour PNG is the same file for 1 to 4 threads,
   testing::TempDir dir("render-threads-png");
   app::RenderJob job;
   job.scene = testing::sourcePath("scenes/sphere-hole.toml").string();
-  job.width = 300;
-  job.height = 701;  // 900 bytes a row: three bands of the PNG encoder, the last one short
+  job.render.width = 300;
+  job.render.height = 701;  // 900 bytes a row: three bands of the PNG encoder, the last one short
   job.quiet = true;
   std::string first;
   for (int threads : {1, 2, 3, 4}) {
     INFO(threads << " threads");
-    job.threads = threads;
-    job.picture = dir / fmt::format("t{}.png", threads);
+    job.render.threads = threads;
+    job.output.picture = dir / fmt::format("t{}.png", threads);
     const app::RenderResult r = app::renderScene(job);
     CHECK(r.phases.setup.wall > 0);
     CHECK(r.phases.trace.wall > 0);
@@ -94,7 +94,7 @@ TEST_CASE("render threads: a truecolour PNG is the same file for 1 to 4 threads,
     CHECK(r.phases.quantize.wall == 0);  // no quantizer on the truecolour path
     CHECK(r.phases.output.wall > 0);
     CHECK(r.phases.setup.wall + r.phases.trace.wall + r.phases.output.wall <= r.seconds);
-    const std::string picture = slurp(job.picture);
+    const std::string picture = slurp(job.output.picture);
     if (first.empty()) first = picture;
     CHECK(picture == first);
   }

@@ -3,9 +3,12 @@
 // a profile built in code, and the Markdown the docs show.
 #include <catch2/catch.hpp>
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "foundation/byte_count.hpp"
 #include "foundation/error.hpp"
 #include "foundation/settings_schema.hpp"
 
@@ -182,4 +185,76 @@ TEST_CASE("the Markdown table: every settable row with what it takes and its def
         "| `shade` | `light` or `dark` | `dark` | the colour |\n"
         "| `separator` | `space` or `comma` | `space` | between things |\n"
         "| `baud` | a whole number from 50 to 1000000 | `9600` | the line |\n");
+}
+
+namespace {
+
+// Settings that may be left unset, and a size in bytes.
+struct Budget {
+  std::optional<double> seconds;
+  std::optional<Shade> shade;
+  std::optional<std::uint64_t> limit;
+  std::uint64_t cache = std::uint64_t(64) << 20;
+};
+
+constexpr Setting<Budget> kBudgetRows[] = {
+    orUnset(number<&Budget::seconds>("seconds", {0.001, 1e9}, "how long"), "none"),
+    orUnset(choice<kShades, &Budget::shade>("shade", "the colour"), "own"),
+    orUnset(bytes<&Budget::limit>("limit", "how many bytes"), "none"),
+    bytes<&Budget::cache>("cache", "how much to keep"),
+};
+
+constexpr SettingsSchema<Budget> kBudget{"budget", kBudgetRows, [] { return Budget{}; }};
+
+}  // namespace
+
+TEST_CASE("a setting left unset is named by its word, which --set takes back") {
+  Budget b;
+  CHECK(describeSettings(kBudget, b) == "seconds=none\nshade=own\nlimit=none\ncache=64MiB\n");
+  applySetting(kBudget, b, "seconds=60");
+  applySetting(kBudget, b, "shade=light");
+  applySetting(kBudget, b, "limit=56K");
+  CHECK(b.seconds == 60.0);
+  CHECK(b.shade == Shade::Light);
+  CHECK(b.limit == std::uint64_t(56 * 1024));
+  CHECK(describeSettings(kBudget, b) == "seconds=60\nshade=light\nlimit=56KiB\ncache=64MiB\n");
+  applySetting(kBudget, b, "seconds=none");
+  applySetting(kBudget, b, "shade=own");
+  applySetting(kBudget, b, "limit=none");
+  CHECK_FALSE(b.seconds.has_value());
+  CHECK_FALSE(b.shade.has_value());
+  CHECK_FALSE(b.limit.has_value());
+  checkSettings(kBudget, b);  // unset is not out of range
+}
+
+TEST_CASE("NaN, infinities and bad sizes are refused by a row that may be unset, naming the key") {
+  Budget b;
+  for (const char* bad : {"seconds=nan", "seconds=inf", "seconds=0", "limit=nan", "limit=0", "limit=-5",
+                          "limit=1e400", "limit=12Q", "cache=none", "shade=none"}) {
+    INFO(bad);
+    const std::string key = std::string(bad).substr(0, std::string(bad).find('='));
+    try {
+      applySetting(kBudget, b, bad);
+      FAIL("taken");
+    } catch (const Error& e) {
+      CHECK(e.kind() == ErrorKind::Usage);
+      CHECK(std::string(e.what()).find(key) != std::string::npos);
+    }
+  }
+  CHECK(describeSettings(kBudget, b) == "seconds=none\nshade=own\nlimit=none\ncache=64MiB\n");
+}
+
+TEST_CASE("a size in bytes reads back as the same count, and the docs say what a row takes") {
+  for (std::uint64_t n : {std::uint64_t(1), std::uint64_t(57600), std::uint64_t(57344), std::uint64_t(3) << 30,
+                          (std::uint64_t(64) << 20) + 1}) {
+    INFO(n);
+    Budget b;
+    applySetting(kBudget, b, "cache=" + byteCountText(n));
+    CHECK(b.cache == n);
+  }
+  const std::vector<SettingInfo> infos = settingInfos(kBudget);
+  REQUIRE(infos.size() == 4);
+  CHECK(settingTakes(infos[0]) == "a number from 0.001 to 1000000000, or `none`");
+  CHECK(settingTakes(infos[1]) == "`light`, `dark` or `own`");
+  CHECK(settingTakes(infos[3]) == "a size in bytes (57600, 56K, 8MiB)");
 }

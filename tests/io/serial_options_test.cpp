@@ -1,24 +1,33 @@
-// Flag spellings and the flags an error prints for resuming.
+// The line's spellings (its settings table) and the flags an error prints for resuming.
 #include <catch2/catch.hpp>
 
 #include "io/serial_options.hpp"
+#include "io/serial_settings.hpp"
 #include "io/stream_sender.hpp"
 #include "foundation/error.hpp"
 
 using namespace lattice;
 using namespace lattice::io;
 
-TEST_CASE("Parity and flow control parse from their flag spellings", "[serial]") {
-  CHECK(parseParity("even") == Parity::Even);
-  CHECK(parseParity("odd") == Parity::Odd);
-  CHECK(parseParity("none") == Parity::None);
-  CHECK(parseFlowControl("rtscts") == FlowControl::RtsCts);
-  CHECK(parseFlowControl("xonxoff") == FlowControl::XonXoff);
-  CHECK(parseFlowControl("none") == FlowControl::None);
-  CHECK_THROWS_AS(parseParity("mark"), Error);
-  CHECK_THROWS_AS(parseFlowControl("dtrdsr"), Error);
-  for (auto p : {Parity::None, Parity::Even, Parity::Odd}) CHECK(parseParity(toString(p)) == p);
-  for (auto f : {FlowControl::None, FlowControl::XonXoff, FlowControl::RtsCts}) CHECK(parseFlowControl(toString(f)) == f);
+TEST_CASE("Parity and flow control are read from their spellings in the line's settings table", "[serial]") {
+  SerialOptions options;
+  applySetting(serialSettings(), options, "parity=even");
+  CHECK(options.parity == Parity::Even);
+  applySetting(serialSettings(), options, "flow=rtscts");
+  CHECK(options.flow == FlowControl::RtsCts);
+  CHECK_THROWS_AS(applySetting(serialSettings(), options, "parity=mark"), Error);
+  CHECK_THROWS_AS(applySetting(serialSettings(), options, "flow=dtrdsr"), Error);
+  CHECK_THROWS_AS(applySetting(serialSettings(), options, "baud=nan"), Error);
+  CHECK_THROWS_AS(applySetting(serialSettings(), options, "stall-timeout=inf"), Error);
+  CHECK(options.parity == Parity::Even);  // a refused value leaves the line as it was
+  for (auto p : {Parity::None, Parity::Even, Parity::Odd}) {
+    applySetting(serialSettings(), options, "parity=" + std::string(toString(p)));
+    CHECK(options.parity == p);
+  }
+  for (auto f : {FlowControl::None, FlowControl::XonXoff, FlowControl::RtsCts}) {
+    applySetting(serialSettings(), options, "flow=" + std::string(toString(f)));
+    CHECK(options.flow == f);
+  }
 }
 
 TEST_CASE("The line format counts parity and stop bits", "[serial]") {
@@ -44,6 +53,9 @@ TEST_CASE("The resume command reproduces every setting", "[serial]") {
   options.pace = true;
   CHECK(resumeCommand("my picture.tek", options, 7) ==
         "lattice send 'my picture.tek' --port /dev/ttyUSB0 --baud 19200 --flow rtscts --data-bits 7 --parity odd "
-        "--stop-bits 1 --stall-timeout 12.5 --pace --resume 7");
+        "--stall-timeout 12.5 --pace --resume 7");
+  options = SerialOptions{};  // the defaults: only the port and the rate
+  options.port = "/dev/ttyS0";
+  CHECK(resumeCommand("a.tek", options, 1) == "lattice send a.tek --port /dev/ttyS0 --baud 9600 --resume 1");
   CHECK(resumeCommand("it's.tek", options, 0).rfind("lattice send 'it'\\''s.tek' ", 0) == 0);
 }

@@ -116,20 +116,20 @@ TEST_CASE("A non-standard baud rate goes through termios2", "[serial]") {
   CHECK(detail::readBaudTermios2(port.fd()) == 31250);
 }
 
-TEST_CASE("Impossible line settings are usage errors naming the flag", "[serial]") {
+TEST_CASE("Impossible line settings are usage errors naming the setting and its value", "[serial]") {
   PtyPair pty;
   SerialPort port(pty.slavePath());
   SerialOptions options;
   options.port = pty.slavePath();
   options.baud = 10;
-  CHECK(messageOf([&] { port.configure(options); }, ErrorKind::Usage).find("--baud 10") != std::string::npos);
+  CHECK(messageOf([&] { port.configure(options); }, ErrorKind::Usage).find("baud=10") != std::string::npos);
   options.baud = 9600;
   options.dataBits = 6;
-  CHECK(messageOf([&] { port.configure(options); }, ErrorKind::Usage).find("--data-bits") != std::string::npos);
+  CHECK(messageOf([&] { port.configure(options); }, ErrorKind::Usage).find("data-bits=6") != std::string::npos);
   options.dataBits = 8;
   options.stopBits = 3;
-  CHECK(messageOf([&] { port.configure(options); }, ErrorKind::Usage).find("--stop-bits") != std::string::npos);
+  CHECK(messageOf([&] { port.configure(options); }, ErrorKind::Usage).find("stop-bits=3") != std::string::npos);
   options.stopBits = 1;
   options.stallTimeoutSeconds = 0;
-  CHECK(messageOf([&] { port.configure(options); }, ErrorKind::Usage).find("--stall-timeout") != std::string::npos);
+  CHECK(messageOf([&] { port.configure(options); }, ErrorKind::Usage).find("stall-timeout=0") != std::string::npos);
 }

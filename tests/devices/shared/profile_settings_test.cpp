@@ -55,6 +55,8 @@ std::vector<std::string> valuesOf(const SettingInfo& info) {
       v.push_back(fmt::format("{}", info.range.max < 1e9 ? info.range.max : info.range.min + 1));
       return v;
     }
+    case SettingKind::Bytes:
+      return {"1", "56K", "8MiB"};
     case SettingKind::Switch:
       return {"on", "off"};
     case SettingKind::Choice:

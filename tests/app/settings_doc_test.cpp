@@ -1,10 +1,12 @@
 // docs/cli.md's table of each device's --set keys is the device's settings
-// table (foundation/settings_schema.hpp), and its table of the quantizer's
-// flags the quantizer's (quantize/pipeline_settings.hpp), regenerated here and compared with
-// the doc's text between the device's markers, so a key added, renamed or
-// re-ranged in code and not in the doc fails this test. On a difference it
-// prints the block to paste; LATTICE_REGENERATE_GOLDENS=1 rewrites the doc
-// instead (scripts/regenerate-goldens.sh devices/shared).
+// table (foundation/settings_schema.hpp), and its tables of the quantizer's,
+// the lattice tables', the wire budget's and the serial line's flags are
+// their schemas' (quantize/pipeline_settings.hpp, loader/table_settings.hpp,
+// app/wire_settings.hpp, io/serial_settings.hpp), regenerated here and
+// compared with the doc's text between each table's markers, so a key
+// added, renamed or re-ranged in code and not in the doc fails this test. On
+// a difference it prints the block to paste; LATTICE_REGENERATE_GOLDENS=1
+// rewrites the doc instead (scripts/regenerate-goldens.sh app).
 #include <catch2/catch.hpp>
 
 #include <fmt/format.h>
@@ -14,8 +16,11 @@
 #include <sstream>
 #include <string>
 
+#include "app/wire_settings.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/system/atomic_file.hpp"
+#include "io/serial_settings.hpp"
+#include "loader/table_settings.hpp"
 #include "quantize/pipeline_settings.hpp"
 #include "tests/support/golden.hpp"
 
@@ -30,7 +35,7 @@ std::string readText(const std::filesystem::path& path) {
 
 }  // namespace
 
-TEST_CASE("docs/cli.md lists each device's --set keys and the quantizer's flags as their tables declare them") {
+TEST_CASE("docs/cli.md lists each device's --set keys and each stage's flags as their schemas declare them") {
   const std::filesystem::path doc = lattice::testing::sourcePath("docs/cli.md");
   std::string text = readText(doc);
   REQUIRE_FALSE(text.empty());
@@ -39,6 +44,9 @@ TEST_CASE("docs/cli.md lists each device's --set keys and the quantizer's flags 
   for (const lattice::devices::DeviceEntry& entry : lattice::devices::deviceTable())
     tables.emplace_back(entry.name, entry.settings());
   tables.emplace_back("quantizer", lattice::settingInfos(lattice::quantize::pipelineSettings()));
+  tables.emplace_back("lattice-tables", lattice::settingInfos(lattice::lht::tableSettings()));
+  tables.emplace_back("wire", lattice::settingInfos(lattice::app::wireSettings()));
+  tables.emplace_back("serial", lattice::settingInfos(lattice::io::serialSettings()));
   for (const auto& [name, infos] : tables) {
     const std::string begin = fmt::format("<!-- settings:{} begin -->\n", name);
     const std::string end = fmt::format("<!-- settings:{} end -->\n", name);

@@ -1,0 +1,56 @@
+#include "foundation/byte_count.hpp"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+
+#include "foundation/error.hpp"
+
+namespace lattice {
+
+std::uint64_t parseByteCount(std::string_view text, std::string_view what) {
+  const auto bad = [&] {
+    return Error(ErrorKind::Usage, fmt::format("{} {}: give a size in bytes, e.g. 8388608, 8192K, 8MiB or 1.5M "
+                                               "(K, M, G with or without 'iB' are powers of 1024)",
+                                               what, text));
+  };
+  double number = 0.0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
+  if (ec != std::errc() || !(number > 0.0) || !std::isfinite(number)) throw bad();
+  std::string suffix(ptr, text.data() + text.size());
+  for (char& c : suffix) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  double scale = 1.0;
+  if (suffix.empty() || suffix == "B")
+    scale = 1.0;
+  else if (suffix == "K" || suffix == "KB" || suffix == "KIB")
+    scale = 1024.0;
+  else if (suffix == "M" || suffix == "MB" || suffix == "MIB")
+    scale = 1024.0 * 1024.0;
+  else if (suffix == "G" || suffix == "GB" || suffix == "GIB")
+    scale = 1024.0 * 1024.0 * 1024.0;
+  else
+    throw bad();
+  const double bytes = std::round(number * scale);
+  if (bytes < 1.0 || bytes > 1e18) throw bad();
+  return static_cast<std::uint64_t>(bytes);
+}
+
+std::string formatBytes(std::uint64_t bytes) {
+  const double b = static_cast<double>(bytes);
+  if (bytes >= 1024ull * 1024 * 1024) return fmt::format("{:.2f} GiB", b / (1024.0 * 1024 * 1024));
+  if (bytes >= 1024ull * 1024) return fmt::format("{:.2f} MiB", b / (1024.0 * 1024));
+  if (bytes >= 1024) return fmt::format("{:.1f} KiB", b / 1024.0);
+  return fmt::format("{} B", bytes);
+}
+
+std::string byteCountText(std::uint64_t bytes) {
+  constexpr std::uint64_t kKiB = 1024, kMiB = kKiB * 1024, kGiB = kMiB * 1024;
+  if (bytes > 0 && bytes % kGiB == 0) return fmt::format("{}GiB", bytes / kGiB);
+  if (bytes > 0 && bytes % kMiB == 0) return fmt::format("{}MiB", bytes / kMiB);
+  if (bytes > 0 && bytes % kKiB == 0) return fmt::format("{}KiB", bytes / kKiB);
+  return fmt::format("{}", bytes);
+}
+
+}  // namespace lattice
