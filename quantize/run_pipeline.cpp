@@ -91,7 +91,7 @@ PipelineReport runPipeline(RowSource18& source, IndexedSink& sink, const Pipelin
   // dithering), so its counts give each entry's share of the mapped picture:
   // exactly when the histogram saw every row, and the sample's share after
   // --mode sample, which is the share the pass that chose the palette saw
-  // (the issue-24 firmware renders Plate 6 so: the driver then takes its
+  // (the firmware renders Plate 6 so: the driver then takes its
   // background from that pass and keeps no frame). Host and firmware run this
   // same rule with the same flags, so their streams stay byte for byte the
   // same. Not where a 32-bit count could have saturated.

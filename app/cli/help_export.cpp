@@ -74,6 +74,38 @@ void describeCommand(std::string& page, const CLI::App& command, const std::stri
   for (const CLI::App* sub : subcommandsOf(command)) describeCommand(page, *sub, path + " " + sub->get_name());
 }
 
+// The names a flag takes, where its check lists them: CLI11 writes an
+// IsMember check into the type name as "TEXT:{a,b,c}" (the settings tables'
+// choices reach it so, app/cli/setting_flags.hpp).
+std::vector<std::string> valueNames(const CLI::Option& option) {
+  const std::string type = option.get_type_name();
+  const std::size_t open = type.find('{'), close = type.find('}', open);
+  std::vector<std::string> names;
+  if (open == std::string::npos || close == std::string::npos) return names;
+  std::string name;
+  for (char c : type.substr(open + 1, close - open - 1)) {
+    if (c == ',') {
+      names.push_back(name);
+      name.clear();
+    } else {
+      name += c;
+    }
+  }
+  names.push_back(name);
+  return names;
+}
+
+// `case "$prev" in` arms completing the values of `command`'s flags that name them.
+std::string valueArms(const CLI::App& command) {
+  std::string arms;
+  for (const CLI::Option* option : command.get_options()) {
+    const std::vector<std::string> names = valueNames(*option);
+    if (names.empty() || option->get_lnames().empty()) continue;
+    arms += fmt::format("        --{}) values=\"{}\" ;;\n", option->get_lnames().front(), fmt::join(names, " "));
+  }
+  return arms;
+}
+
 }  // namespace
 
 std::string manPage(const CLI::App& root, const std::string& version) {
@@ -98,11 +130,11 @@ std::string bashCompletion(const CLI::App& root) {
   std::string script =
       "# bash completion for lattice, generated from its command table (lattice --generate-bash-completion)\n"
       "_lattice() {\n"
-      "  local cur=\"${COMP_WORDS[COMP_CWORD]}\" command=\"\" i\n"
+      "  local cur=\"${COMP_WORDS[COMP_CWORD]}\" prev=\"${COMP_WORDS[COMP_CWORD - 1]}\" command=\"\" i\n"
       "  for ((i = 1; i < COMP_CWORD; i++)); do\n"
       "    case \"${COMP_WORDS[i]}\" in -*) ;; *) command=\"${command:+$command }${COMP_WORDS[i]}\"; break ;; esac\n"
       "  done\n"
-      "  local words\n"
+      "  local words values=\"\"\n"
       "  case \"$command\" in\n";
   std::vector<std::string> rootWords = commandNames(root);
   for (const std::string& flag : flagNames(root)) rootWords.push_back(flag);
@@ -110,11 +142,16 @@ std::string bashCompletion(const CLI::App& root) {
   for (const CLI::App* sub : subcommandsOf(root)) {
     std::vector<std::string> words = commandNames(*sub);
     for (const std::string& flag : flagNames(*sub)) words.push_back(flag);
-    script += fmt::format("    {}) words=\"{}\" ;;\n", sub->get_name(), fmt::join(words, " "));
+    const std::string arms = valueArms(*sub);
+    script += fmt::format("    {}) words=\"{}\"\n", sub->get_name(), fmt::join(words, " "));
+    if (!arms.empty()) script += "      case \"$prev\" in\n" + arms + "      esac\n";
+    script += "      ;;\n";
   }
   script +=
       "  esac\n"
-      "  if [[ -z \"$command\" || \"$cur\" == -* ]]; then\n"
+      "  if [[ -n \"$values\" ]]; then\n"
+      "    COMPREPLY=($(compgen -W \"$values\" -- \"$cur\"))\n"
+      "  elif [[ -z \"$command\" || \"$cur\" == -* ]]; then\n"
       "    COMPREPLY=($(compgen -W \"$words\" -- \"$cur\"))\n"
       "  else\n"
       "    COMPREPLY=($(compgen -f -- \"$cur\"))\n"

@@ -131,24 +131,27 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
   cmd.add_option("--height", j.render.height, "Image height in pixels (default: the scene's, fitted to the device)")
       ->check(numberIn({1, 16384, true}))
       ->group(kPictureGroup);
-  cmd.add_option("--threads", j.render.threads, "Threads for rendering and rasterizing (default: all cores); same image")
+  cmd.add_option("--threads", j.render.threads, "Threads for rendering and rasterizing (default: all cores): fewer leave cores to other work; the "
+                 "image is the same")
       ->check(numberIn({1, 256, true}))
       ->group(kPictureGroup);
   cmd.add_option("--arith", j.arithmetic,
-                 fmt::format("Arithmetic of the whole per-pixel path: {} (fixed: Q31.32 integers, no FPU; "
-                             "docs/fixed-point.md)",
+                 fmt::format("Arithmetic of the whole per-pixel path: {} (fixed: Q31.32 integers, no FPU: the "
+                             "picture a firmware build computes, bit for bit, on the host; docs/fixed-point.md)",
                              arithmeticNames()))
       ->check([](const std::string& name) { return isArithmeticName(name) ? "" : "choose " + arithmeticNames(); })
       ->capture_default_str()
       ->group(kPictureGroup);
-  cmd.add_flag("--full", j.render.build.fullRayTrace, "Full ray trace: every lattice replaced by its exact CSG object")->group(kLatticeGroup);
+  cmd.add_flag("--full", j.render.build.fullRayTrace, "Full ray trace: every lattice replaced by its exact CSG object, the reference a lattice render is "
+               "compared with")->group(kLatticeGroup);
   cmd.add_flag("--no-lattice-shadows", f.noLatticeShadows, "Lattices cast no shadows, as particles (thesis plate 3)")
       ->group(kLatticeGroup);
   addSettingFlags(&cmd, lht::tableSettings(), lht::tableSettings().initial(), f.tables,
                   settableKeys(lht::tableSettings()), kLatticeGroup);
   cmd.add_flag("--lht-stats", f.lhtStats,
                "After rendering, print per lattice: look-ups, hits, misses, distinct (p_i, p_o) asked, entries "
-               "referenced (share of N_iz) and look-ups per entry (docs/lattices.md); off, nothing is counted")
+               "referenced (share of N_iz) and look-ups per entry: how much of a table a render uses, to choose "
+               "its form (docs/lattices.md); off, nothing is counted")
       ->group(kLatticeGroup);
   cmd.add_option("--memory-budget", f.memoryBudget,
                  "Keep peak resident memory within SIZE (8MiB, 8192K, 8388608): picks the quantizer mode and the "

@@ -11,7 +11,7 @@ const std::vector<Tek4125NamedStrategy>& tek4125Strategies() {
       {"plain", {false, false, false, false, false}},    // one raster write per row
       {"skip", {true, false, false, false, false}},      // background runs left out
       {"rectangles", {false, true, false, false, false}},  // long runs as RR
-      {"spans", {true, true, true, false, false}},       // skip + RR merged down rows (the pre-issue-14 default)
+      {"spans", {true, true, true, false, false}},       // skip + RR merged down rows (the default before the planner)
       {"runs", {true, true, true, true, false}},         // spans + RL run-length writes
   };
   return all;

@@ -103,7 +103,7 @@ TEST_CASE("the man page lists every command and flag --help does, and no other",
   CHECK(fromMan == fromHelp);
 }
 
-TEST_CASE("bash completion offers the commands and a command's flags", "[cli]") {
+TEST_CASE("bash completion offers the commands, a command's flags and a flag's values", "[cli]") {
   const std::filesystem::path script = std::filesystem::path(LATTICE_BINARY_DIR) / "app" / "lattice.bash";
   REQUIRE(std::filesystem::exists(script));
   const auto complete = [&](const std::string& words, int current) {
@@ -113,4 +113,8 @@ TEST_CASE("bash completion offers the commands and a command's flags", "[cli]") 
   CHECK(complete("lattice rend", 1) == "render\n");
   CHECK(complete("lattice render --wid", 2) == "--width\n");
   CHECK(complete("lattice emulate --ra", 2) == "--raw\n");
+  // A flag's values, where its settings table names them.
+  CHECK(complete("lattice render --lht-form c", 3) == "compressed\n");
+  CHECK(complete("lattice render --dither ''", 3) == "none fs bayer\n");
+  CHECK(complete("lattice send --parity o", 3) == "odd\n");
 }

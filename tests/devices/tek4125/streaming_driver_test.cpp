@@ -132,7 +132,7 @@ TEST_CASE("the pipeline gives the 4125 driver exact counts without dithering, no
 }
 
 TEST_CASE("after a sampled histogram the 4125 driver streams from the sample's counts, the framed picture") {
-  // --mode sample (what the issue-24 firmware runs): the palette comes from
+  // --mode sample (what the firmware runs): the palette comes from
   // every 4th row and column, and so do the counts the driver ranks for its
   // background. It must stream, and draw exactly the picture a driver that
   // kept the frame draws from the same indices (only the background it
