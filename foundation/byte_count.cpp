@@ -10,15 +10,13 @@
 
 namespace lattice {
 
-std::uint64_t parseByteCount(std::string_view text, std::string_view what) {
-  const auto bad = [&] {
-    return Error(ErrorKind::Usage, fmt::format("{} {}: give a size in bytes, e.g. 8388608, 8192K, 8MiB or 1.5M "
-                                               "(K, M, G with or without 'iB' are powers of 1024)",
-                                               what, text));
-  };
+namespace {
+
+// The count, or 0 when `text` is not a size.
+std::uint64_t byteCountOf(std::string_view text) {
   double number = 0.0;
   const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
-  if (ec != std::errc() || !(number > 0.0) || !std::isfinite(number)) throw bad();
+  if (ec != std::errc() || !(number > 0.0) || !std::isfinite(number)) return 0;
   std::string suffix(ptr, text.data() + text.size());
   for (char& c : suffix) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   double scale = 1.0;
@@ -31,10 +29,25 @@ std::uint64_t parseByteCount(std::string_view text, std::string_view what) {
   else if (suffix == "G" || suffix == "GB" || suffix == "GIB")
     scale = 1024.0 * 1024.0 * 1024.0;
   else
-    throw bad();
+    return 0;
   const double bytes = std::round(number * scale);
-  if (bytes < 1.0 || bytes > 1e18) throw bad();
+  if (bytes < 1.0 || bytes > 1e18) return 0;
   return static_cast<std::uint64_t>(bytes);
+}
+
+}  // namespace
+
+std::string byteCountProblem(std::string_view text) {
+  if (byteCountOf(text) > 0) return {};
+  return fmt::format("'{}' is not a size in bytes; give a size in bytes such as 8388608, 8192K, 8MiB or 1.5M (K, M, "
+                     "G with or without 'iB' are powers of 1024)",
+                     text);
+}
+
+std::uint64_t parseByteCount(std::string_view text, std::string_view what) {
+  const std::uint64_t bytes = byteCountOf(text);
+  if (bytes == 0) throw Error(ErrorKind::Usage, fmt::format("{}: {}", what, byteCountProblem(text)));
+  return bytes;
 }
 
 std::string formatBytes(std::uint64_t bytes) {

@@ -15,6 +15,9 @@ namespace lattice {
 // "8388608", "8192K", "8KiB", "8M", "8MiB", "1.5M", "2G" -> bytes (1 to 1e18).
 // lattice::Error(Usage) naming `what` (a flag or key) and the forms accepted.
 std::uint64_t parseByteCount(std::string_view text, std::string_view what);
+// Why `text` is refused, or "" when it is a size: for callers that report
+// through another channel (CLI11's checks).
+std::string byteCountProblem(std::string_view text);
 // 8650752 -> "8.25 MiB", 4000 -> "3.9 KiB": for people, rounded.
 std::string formatBytes(std::uint64_t bytes);
 // 67108864 -> "64MiB", 57344 -> "56KiB", 57600 -> "57600": exact, and read

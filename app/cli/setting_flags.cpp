@@ -4,11 +4,10 @@
 
 #include "app/cli/number_flags.hpp"
 #include "foundation/byte_count.hpp"
-#include "foundation/error.hpp"
 
 namespace lattice::app {
 
-CLI::Validator settingFlagCheck(const settings_detail::RowType& type, const std::string& flag) {
+CLI::Validator settingFlagCheck(const settings_detail::RowType& type) {
   const std::string unset(type.unset);
   switch (type.kind) {
     case SettingKind::Whole:
@@ -22,15 +21,7 @@ CLI::Validator settingFlagCheck(const settings_detail::RowType& type, const std:
     case SettingKind::Bytes:
       // The one size parser decides, so the flag refuses what --set does.
       return CLI::Validator(
-          [unset, flag](std::string& text) -> std::string {
-            if (!unset.empty() && text == unset) return {};
-            try {
-              parseByteCount(text, flag);
-              return {};
-            } catch (const Error& e) {
-              return e.what();
-            }
-          },
+          [unset](std::string& text) { return !unset.empty() && text == unset ? std::string() : byteCountProblem(text); },
           unset.empty() ? std::string() : "or " + unset, "lattice-size");
     case SettingKind::Switch:
     case SettingKind::Reported:

@@ -25,8 +25,8 @@ namespace lattice::app {
 using SettingFlagValues = std::map<std::string, std::string, std::less<>>;
 
 // The CLI11 check of a row's flag: the row's range, names or sizes, and its
-// unset word (setting_flags.cpp). `flag` names it in the message.
-CLI::Validator settingFlagCheck(const settings_detail::RowType& type, const std::string& flag);
+// unset word (setting_flags.cpp); CLI11 names the flag in its message.
+CLI::Validator settingFlagCheck(const settings_detail::RowType& type);
 
 // What a flag does with its text once CLI11 has checked it.
 using SettingFlagGiven = std::function<void(const std::string& key, const std::string& text)>;
@@ -54,7 +54,7 @@ void addSettingFlagsWith(CLI::App* cmd, const SettingsSchema<Profile>& schema, c
                name, [given, key = std::string(key)](const std::string& text) { given(key, text); }, help)
             ->default_str(settingText(*row, initial))
             ->group(group);
-    option->check(settingFlagCheck(rowType(*row), name));
+    option->check(settingFlagCheck(rowType(*row)));
     option->type_name(row->kind == SettingKind::Whole    ? "INT"
                       : row->kind == SettingKind::Number ? "FLOAT"
                       : row->kind == SettingKind::Bytes  ? "SIZE"

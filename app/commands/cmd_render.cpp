@@ -158,6 +158,8 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
                  "entry form of lattices rasterized now, or exits 8 saying why not; a lattice too large to "
                  "rasterize within it exits 3 before any work (default: half the physical memory, which only "
                  "refuses; docs/memory.md)")
+      ->type_name("SIZE")
+      ->check(settingFlagCheck({SettingKind::Bytes, {}, {}, {}}))  // sizes as every SIZE flag
       ->group("Memory");
   addPipelineOptions(&cmd, f.pipeline, "Quantizer (devices)", kRenderPipelineKeys);
   addSerialOptions(&cmd, f.serial, /*portRequired=*/false, profileBaudText());

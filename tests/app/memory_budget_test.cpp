@@ -138,7 +138,7 @@ TEST_CASE("app:memory_budget_too_small_exits_8_and_writes_nothing") {
 TEST_CASE("app:memory_budget_rejects_a_bad_size_before_rendering") {
   const auto run = runLattice(fmt::format("{} --stream /dev/null --memory-budget 8XB", kRender));
   CHECK(run.exitCode == 2);
-  CHECK_THAT(run.stderrText, Catch::Contains("--memory-budget 8XB") && Catch::Contains("8MiB"));
+  CHECK_THAT(run.stderrText, Catch::Contains("--memory-budget: '8XB' is not a size in bytes") && Catch::Contains("8MiB"));
 }
 
 TEST_CASE("app:memory_budget_counts_the_truecolour_picture") {
