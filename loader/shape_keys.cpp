@@ -1,4 +1,9 @@
 // A shape's keys read from its TOML table (loader/shape_keys.hpp).
+//
+// Method: each value kind is parsed here once, for whichever shape asks: a
+// polynomial in either spelling (monomial table or the 35-number list), a
+// box, a list of points; failures go through ParseContext, so they carry the
+// file, line and column of the value at fault.
 #include "loader/shape_keys.hpp"
 
 #include <fmt/format.h>
