@@ -2,9 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <optional>
+#include <variant>
+
 #include "exporter/pov_format.hpp"
 #include "exporter/quartic_forms.hpp"
 #include "foundation/error.hpp"
+#include "foundation/overloaded.hpp"
 
 namespace lattice::exporter {
 
@@ -45,26 +49,28 @@ void PovObjectWriter::node(std::string& out, const NodeDesc& n, MaterialId inher
 
 void PovObjectWriter::leaf(std::string& out, const NodeDesc& n, MaterialId material, int depth) {
   if (!n.leaf) throw Error(ErrorKind::Internal, fmt::format("{}: leaf node without a leaf description", n.origin));
-  const LeafShape shape = n.leaf->shape();
+  const std::optional<LeafShape> shape = n.leaf->shape();
   const std::string where = n.origin.empty() ? source_.string() : n.origin;
+  if (!shape)
+    throw Error(ErrorKind::Input, fmt::format("{}: {} cannot be written for POV-Ray (its leaf type does not describe "
+                                              "its shape); remove it from the scene or export another scene",
+                                              where, n.leaf->describe()));
   const std::string modifiers = modifiersFor(material, n.transform);
-  switch (shape.kind) {
-    case LeafShape::Kind::Quartic: return quartic(out, shape.quartic, modifiers, depth);
-    case LeafShape::Kind::Capsule:
-      return tube(out, {Vec3d(0.0), Vec3d(0.0, 0.0, shape.length)}, shape.radius, modifiers, depth);
-    case LeafShape::Kind::Polyline: return tube(out, shape.points, shape.radius, modifiers, depth);
-    case LeafShape::Kind::Lattice: {
-      std::string placed;
-      if (!isIdentity(n.transform)) placed = fmt::format(" {}", povMatrix(n.transform));
-      if (!shape.castsShadows) placed += " no_shadow";
-      out += fmt::format("{}object {{ {}{} }}\n", indent(depth), latticeName(shape, material, where), placed);
-      return;
-    }
-    case LeafShape::Kind::Opaque: break;
-  }
-  throw Error(ErrorKind::Input, fmt::format("{}: {} cannot be written for POV-Ray (its leaf type does not describe "
-                                            "its shape); remove it from the scene or export another scene",
-                                            where, n.leaf->describe()));
+  // One case per shape and no default: a new shape fails to compile here.
+  std::visit(Overloaded{
+                 [&](const QuarticShape& s) { quartic(out, s, modifiers, depth); },
+                 [&](const CapsuleShape& s) {
+                   tube(out, {Vec3d(0.0), Vec3d(0.0, 0.0, s.length)}, s.radius, modifiers, depth);
+                 },
+                 [&](const PolylineShape& s) { tube(out, s.points, s.radius, modifiers, depth); },
+                 [&](const LatticeShape& s) {
+                   std::string placed;
+                   if (!isIdentity(n.transform)) placed = fmt::format(" {}", povMatrix(n.transform));
+                   if (!s.castsShadows) placed += " no_shadow";
+                   out += fmt::format("{}object {{ {}{} }}\n", indent(depth), latticeName(s, material, where), placed);
+                 },
+             },
+             *shape);
 }
 
 void PovObjectWriter::quartic(std::string& out, const QuarticShape& shape, const std::string& modifiers, int depth) {
@@ -103,7 +109,7 @@ void PovObjectWriter::quartic(std::string& out, const QuarticShape& shape, const
 }
 
 // Spheres of `radius` at the points joined by cylinders: exactly the union of
-// capsules Lattice builds (render/scene/polyline.hpp), POV-Ray's cylinders being capped.
+// capsules Lattice builds (render/shapes/polyline_shape.hpp), POV-Ray's cylinders being capped.
 void PovObjectWriter::tube(std::string& out, const std::vector<Vec3d>& points, double radius,
                            const std::string& modifiers, int depth) {
   const std::string pad = indent(depth), r = povNumber(radius);
@@ -125,7 +131,7 @@ void PovObjectWriter::tube(std::string& out, const std::vector<Vec3d>& points, d
   out += fmt::format("{}  {}\n{}}}\n", pad, modifiers, pad);
 }
 
-const std::string& PovObjectWriter::latticeName(const LeafShape& lattice, MaterialId material,
+const std::string& PovObjectWriter::latticeName(const LatticeShape& lattice, MaterialId material,
                                                 const std::string& where) {
   if (!lattice.object)
     throw Error(ErrorKind::Internal, fmt::format("{}: lattice '{}' without its object", where, lattice.name));

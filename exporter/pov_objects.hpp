@@ -31,7 +31,7 @@ class PovObjectWriter {
   void quartic(std::string& out, const QuarticShape& shape, const std::string& modifiers, int depth);
   void tube(std::string& out, const std::vector<Vec3d>& points, double radius, const std::string& modifiers,
             int depth);
-  const std::string& latticeName(const LeafShape& lattice, MaterialId material, const std::string& where);
+  const std::string& latticeName(const LatticeShape& lattice, MaterialId material, const std::string& where);
 
   std::filesystem::path source_;
   PovExportOptions options_;

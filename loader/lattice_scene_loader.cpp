@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <tuple>
 #include <type_traits>
@@ -71,13 +72,8 @@ class LatticeLeafDesc final : public LeafTemplate<LatticeLeafDesc> {
     return bakeLatticeUnion(baker, definition_->name, unionNode, parentToWorld, inherited);
   }
 
-  LeafShape shape() const override {
-    LeafShape s;
-    s.kind = LeafShape::Kind::Lattice;
-    s.object = &definition_->object;
-    s.name = definition_->name;
-    s.castsShadows = definition_->shadows;
-    return s;
+  std::optional<LeafShape> shape() const override {
+    return LatticeShape{&definition_->object, definition_->name, definition_->shadows};
   }
 
   const LatticeDefinitionPtr& definition() const { return definition_; }
@@ -237,7 +233,7 @@ SceneFormat latticeFormat(const std::shared_ptr<LatticeLoad>& load) {
   format.addSection("lattices", [load](const toml::node& section, ParseContext& context) {
     parseLatticeSection(section, context, *load);
   });
-  format.addNodeType("lattice", [load](const toml::table& table, ParseContext& context) {
+  format.addNodeType(std::string(LatticeShape::kName), [load](const toml::table& table, ParseContext& context) {
     return parseLatticeNode(table, context, *load);
   });
   format.addNodeType("lattice_scatter", [load](const toml::table& table, ParseContext& context) {

@@ -24,7 +24,7 @@
 //   seed = 1                     # random twist about that normal
 //
 // (`type = "polyline"`, spheres joined by cylinders, is a built-in shape:
-// render/scene/polyline.hpp.)
+// render/shapes/polyline_shape.hpp.)
 //
 // Every instance shares one rasterized table (loader/lattice_tables.hpp), built
 // under the TableSettings the scene was loaded or rebound with. With

@@ -1,7 +1,7 @@
 #pragma once
 // The table of built-in object types of scene files (loader/node_types.cpp).
-// builtinSceneFormat() is made from it; adding a primitive to the format
-// means adding one entry there.
+// builtinSceneFormat() is made from it. A set operation or a preset is one
+// entry there; a shape's type follows its row of render/shapes/leaf_shape.hpp.
 #include <map>
 #include <string>
 

@@ -32,7 +32,7 @@ std::string typeName(const toml::node& node) {
   }
 }
 
-std::string joinKeys(std::initializer_list<std::string_view> keys, bool withCommon) {
+std::string joinKeys(std::span<const std::string_view> keys, bool withCommon) {
   std::vector<std::string> all(keys.begin(), keys.end());
   if (withCommon)
     for (auto k : kCommonNodeKeys) all.emplace_back(k);
@@ -124,7 +124,7 @@ void ParseContext::fail(const toml::source_region& region, const std::string& me
 
 void ParseContext::fail(const toml::node& node, const std::string& message) const { fail(node.source(), message); }
 
-void ParseContext::checkKeys(const toml::table& table, std::initializer_list<std::string_view> allowed,
+void ParseContext::checkKeys(const toml::table& table, std::span<const std::string_view> allowed,
                              bool objectTable) const {
   for (auto&& [key, value] : table) {
     const std::string_view k = key.str();

@@ -21,6 +21,7 @@
 #include <initializer_list>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -78,7 +79,10 @@ class ParseContext {
   // Unknown keys are errors. `allowed` lists the keys this table may have
   // besides, for object tables, the common node keys.
   void checkKeys(const toml::table& table, std::initializer_list<std::string_view> allowed,
-                 bool objectTable = false) const;
+                 bool objectTable = false) const {
+    checkKeys(table, std::span<const std::string_view>(allowed.begin(), allowed.size()), objectTable);
+  }
+  void checkKeys(const toml::table& table, std::span<const std::string_view> allowed, bool objectTable = false) const;
 
   // Typed, located accessors. `required*` fail when the key is missing; the
   // others return nullopt. Numbers must be finite (integers are accepted).

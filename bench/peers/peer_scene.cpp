@@ -4,9 +4,12 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
+#include <variant>
 
 #include "exporter/quartic_forms.hpp"
 #include "foundation/error.hpp"
+#include "foundation/overloaded.hpp"
 
 namespace lattice::peers {
 
@@ -42,16 +45,18 @@ class Flattener {
       for (const NodeDesc& child : n.children) node(child, toWorld, material, into, inLattice);
       return;
     }
-    const LeafShape shape = n.leaf->shape();
-    switch (shape.kind) {
-      case LeafShape::Kind::Quartic: return quartic(n, shape.quartic, toWorld, material, into, inLattice);
-      case LeafShape::Kind::Capsule:
-        return tube(n, {Vec3d(0.0), Vec3d(0.0, 0.0, shape.length)}, shape.radius, toWorld, material, into);
-      case LeafShape::Kind::Polyline: return tube(n, shape.points, shape.radius, toWorld, material, into);
-      case LeafShape::Kind::Lattice: return lattice(n, shape, toWorld, material, inLattice);
-      case LeafShape::Kind::Opaque: break;
-    }
-    refuse(n, n.leaf->describe());
+    const std::optional<LeafShape> shape = n.leaf->shape();
+    if (!shape) refuse(n, n.leaf->describe());
+    // One case per shape and no default: a new shape fails to compile here.
+    std::visit(Overloaded{
+                   [&](const QuarticShape& s) { quartic(n, s, toWorld, material, into, inLattice); },
+                   [&](const CapsuleShape& s) {
+                     tube(n, {Vec3d(0.0), Vec3d(0.0, 0.0, s.length)}, s.radius, toWorld, material, into);
+                   },
+                   [&](const PolylineShape& s) { tube(n, s.points, s.radius, toWorld, material, into); },
+                   [&](const LatticeShape& s) { lattice(n, s, toWorld, material, inLattice); },
+               },
+               *shape);
   }
 
  private:
@@ -93,7 +98,7 @@ class Flattener {
     into.tubes.push_back(std::move(t));
   }
 
-  void lattice(const NodeDesc& n, const LeafShape& shape, const Mat4d& toWorld, std::optional<MaterialId> material,
+  void lattice(const NodeDesc& n, const LatticeShape& shape, const Mat4d& toWorld, std::optional<MaterialId> material,
                bool inLattice) {
     if (inLattice) refuse(n, "a lattice inside a lattice's object");
     if (!shape.castsShadows) refuse(n, fmt::format("lattice '{}' with shadows = false", shape.name));

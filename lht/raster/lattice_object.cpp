@@ -6,7 +6,7 @@
 
 #include "foundation/fnv1a.hpp"
 #include "render/shapes/composite_shapes.hpp"
-#include "render/scene/polyline.hpp"
+#include "render/shapes/polyline_shape.hpp"
 #include "render/shapes/quartic_presets.hpp"
 #include "foundation/error.hpp"
 

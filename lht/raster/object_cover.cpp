@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
-#include "render/shapes/leaf_geometry.hpp"
 #include "render/scene/scene.hpp"
 
 namespace lattice::lht {
@@ -36,22 +36,13 @@ ObjectCover boxCover(const Bounds<double>& box) {
   return cover;
 }
 
-ObjectCover capsuleCover(const Vec3d& a, const Vec3d& b, double radius) {
-  ObjectCover cover;
-  cover.capsules.push_back({a, b, radius});
-  return cover;
-}
-
+// A shape that states its balls (a capsule, a polyline) is covered by their
+// capsules; any other leaf by its box.
 ObjectCover leafCover(const LeafDesc& leaf) {
-  const LeafShape shape = leaf.shape();
-  switch (shape.kind) {
-    case LeafShape::Kind::Capsule:
-      return capsuleCover(Vec3d(0.0), Vec3d(0.0, 0.0, shape.length), shape.radius);
-    case LeafShape::Kind::Polyline:
-      return polylineCover(shape.points, shape.radius);
-    default:
-      return boxCover(leaf.objectBounds());
-  }
+  const std::optional<LeafShape> shape = leaf.shape();
+  if (const std::optional<BallChain> balls = shape ? ballsOf(*shape) : std::nullopt)
+    return polylineCover(balls->centres, balls->radius);
+  return boxCover(leaf.objectBounds());
 }
 
 }  // namespace

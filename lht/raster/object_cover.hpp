@@ -4,9 +4,9 @@
 // a miss without tracing it (lht/raster/cover_cull.hpp). Nothing here is traced: the
 // object's exact primitive still answers every pair that may touch it.
 //
-// Method: from the scene description (render/shapes/leaf_geometry.hpp), not from the
-// built primitive. A capsule or polyline leaf gives its capsules, a sphere
-// the capsule of length 0, any other leaf (quartics, lattices, leaf types
+// Method: from the scene description (render/shapes/leaf_shape.hpp), not from the
+// built primitive. A shape that states its balls (a capsule, a polyline) gives
+// their capsules, a sphere the capsule of length 0, any other leaf (quartics, lattices, leaf types
 // that do not say what they are) its box; a union covers with all its
 // operands' pieces, an intersection with the operand whose cover is
 // smallest, a difference with its first operand. A transform maps a capsule

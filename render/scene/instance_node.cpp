@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "render/scene/scene.hpp"
@@ -127,10 +128,9 @@ Bounds<double> ballsBounds(const std::vector<Vec3d>& points, double radius, cons
 Bounds<double> placedBounds(const NodeDesc& object, const Mat4d& objectToWorld) {
   const Mat4d toWorld = objectToWorld * object.transform;
   if (object.kind == NodeDesc::Kind::Leaf) {
-    const LeafShape shape = object.leaf->shape();
-    if (shape.kind == LeafShape::Kind::Polyline) return ballsBounds(shape.points, shape.radius, toWorld);
-    if (shape.kind == LeafShape::Kind::Capsule)
-      return ballsBounds({Vec3d(0.0), Vec3d(0.0, 0.0, shape.length)}, shape.radius, toWorld);
+    const std::optional<LeafShape> shape = object.leaf->shape();
+    if (const std::optional<BallChain> balls = shape ? ballsOf(*shape) : std::nullopt)
+      return ballsBounds(balls->centres, balls->radius, toWorld);
     return transformBounds(object.leaf->objectBounds(), toWorld);
   }
   const std::size_t operands = object.kind == NodeDesc::Kind::Difference ? 1 : object.children.size();

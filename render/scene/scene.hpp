@@ -17,9 +17,9 @@
 
 #include "foundation/bounds.hpp"
 #include "render/scene/camera.hpp"
-#include "render/shapes/leaf_geometry.hpp"
 #include "render/scene/light.hpp"
 #include "render/scene/material.hpp"
+#include "render/shapes/leaf_shape.hpp"
 #include "render/shapes/primitive.hpp"
 #include "foundation/vec.hpp"
 #include "foundation/arithmetics.hpp"
@@ -71,9 +71,10 @@ class LeafDesc {
   // each. Empty (the default): the union is baked node by node.
   virtual std::string bakeUnion(SceneBaker& baker, const NodeDesc& unionNode, const Mat4d& parentToWorld,
                                 MaterialId inherited) const;
-  // What it is made of, for writing the scene for another renderer
-  // (render/shapes/leaf_geometry.hpp); Opaque unless the leaf type says.
-  virtual LeafShape shape() const { return {}; }
+  // What it is made of (render/shapes/leaf_shape.hpp), for writing the scene
+  // for another renderer, covers and bounds; nothing for a leaf that does
+  // not say (a baked lattice).
+  virtual std::optional<LeafShape> shape() const { return std::nullopt; }
 
  protected:
   // Fills the slot `out` holds (its alternative names the arithmetic).

@@ -3,14 +3,9 @@
 // paraboloids, hyperboloids, toroids are all quartics). Each comes with an
 // object-space box that contains the solid (infinite where the solid is).
 // Axes: shapes with an axis of symmetry use z.
-#include "render/shapes/quartic.hpp"
+#include "render/shapes/quartic_shape.hpp"
 
 namespace lattice {
-
-struct QuarticShape {
-  QuarticPolynomial f;
-  Bounds<double> bounds;
-};
 
 // Errors: lattice::Error (Input) for non-positive radii/semi-axes, a zero
 // normal or non-finite parameters, naming the parameter.

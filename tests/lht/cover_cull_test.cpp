@@ -11,7 +11,6 @@
 #include "lht/raster/rasterize.hpp"
 #include "lht/raster/thesis_table1.hpp"
 #include "render/scene/builtin_leaves.hpp"
-#include "render/scene/polyline.hpp"
 #include "render/scene/scene.hpp"
 #include "render/shapes/quartic_presets.hpp"
 #include "tests/support/quiet_raster.hpp"

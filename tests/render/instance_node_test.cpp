@@ -11,7 +11,8 @@
 
 #include "geometry_checks.hpp"
 #include "render/scene/instance_node.hpp"
-#include "render/scene/polyline.hpp"
+#include "render/scene/builtin_leaves.hpp"
+#include "render/shapes/polyline_shape.hpp"
 #include "render/scene/scene.hpp"
 #include "foundation/error.hpp"
 

@@ -1,14 +1,15 @@
-#include "render/scene/polyline.hpp"
+// The polyline shape's build (render/shapes/polyline_shape.hpp): one capsule
+// per segment, each placed by the rigid map taking the z axis onto it, joined
+// by a CSG union.
+#include "render/shapes/polyline_shape.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
-#include "render/shapes/csg.hpp"
-#include "render/shapes/composite_shapes.hpp"
-#include "render/scene/scene_baker.hpp"
 #include "foundation/error.hpp"
-#include "foundation/arithmetics.hpp"
+#include "render/shapes/composite_shapes.hpp"
+#include "render/shapes/csg.hpp"
 
 namespace lattice {
 
@@ -27,28 +28,6 @@ Mat4d segmentFrame(const Vec3d& a, const Vec3d& b) {
   m[3] = glm::dvec4(a, 1.0);
   return m;
 }
-
-class PolylineLeafDesc final : public LeafTemplate<PolylineLeafDesc> {
- public:
-  PolylineLeafDesc(std::vector<Vec3d> points, double radius) : points_(std::move(points)), radius_(radius) {}
-  template <typename T>
-  PrimitivePtr<T> buildAs(const Mat4d& toWorld, MaterialId m, const BuildOptions&) const {
-    return makePolyline<T>(points_, radius_, toWorld, m);
-  }
-  Bounds<double> objectBounds() const override { return polylineBounds(points_, radius_); }
-  std::string describe() const override { return fmt::format("polyline of {} points", points_.size()); }
-  std::string bake(SceneBaker& baker) const override {
-    baker.include("render/scene/polyline.hpp");
-    std::string points;
-    for (const Vec3d& p : points_) points += (points.empty() ? "" : ", ") + baker.vec3(p);
-    return fmt::format("lattice::makePolylineLeafDesc({{{}}}, {})", points, baker.number(radius_));
-  }
-  LeafShape shape() const override { return LeafShape::ofPolyline(points_, radius_); }
-
- private:
-  std::vector<Vec3d> points_;
-  double radius_;
-};
 
 }  // namespace
 
@@ -81,8 +60,6 @@ Bounds<double> polylineBounds(const std::vector<Vec3d>& points, double radius) {
   return box;
 }
 
-LeafDescPtr makePolylineLeafDesc(std::vector<Vec3d> points, double radius) {
-  return std::make_shared<PolylineLeafDesc>(std::move(points), radius);
-}
+std::string PolylineShape::describe() const { return fmt::format("polyline of {} points", points.size()); }
 
 }  // namespace lattice
