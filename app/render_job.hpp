@@ -59,7 +59,7 @@ struct RenderJob {
   lht::TableSettings tables;
   quantize::PipelineOptions pipeline;  // quantize/pipeline_settings.hpp
   MemoryChoice memory;
-  std::optional<WireBudget> wire;  // choose colours, dithering and runs to fit (app/wire_settings.hpp)
+  std::optional<WireBudget> wire;  // choose colours, dithering and runs to fit (app/wire_budget_settings.hpp)
   // Rate-distortion runs at a fixed lambda (quantize/rate_distortion_runs.hpp;
   // 0: lossless): a benchmark's setting (bench/wire_bench.cpp), which a wire
   // budget chooses for a user.

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <cctype>
 #include <charconv>
 #include <cmath>
 
@@ -12,24 +11,27 @@ namespace lattice {
 
 namespace {
 
+char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
+
+// The suffix's scale: "" and "B" 1, "K", "KB", "KiB" 1024 (any case), and M
+// and G so; 0 for anything else.
+double scaleOf(std::string_view suffix) {
+  if (suffix.empty() || (suffix.size() == 1 && upper(suffix[0]) == 'B')) return 1.0;
+  const std::string_view units = "KMG";
+  const std::size_t power = units.find(upper(suffix[0]));
+  if (power == std::string_view::npos) return 0.0;
+  const std::string_view rest = suffix.substr(1);
+  const bool tail = rest.empty() || (rest.size() == 1 && upper(rest[0]) == 'B') ||
+                    (rest.size() == 2 && upper(rest[0]) == 'I' && upper(rest[1]) == 'B');
+  return tail ? std::pow(1024.0, static_cast<double>(power + 1)) : 0.0;
+}
+
 // The count, or 0 when `text` is not a size.
 std::uint64_t byteCountOf(std::string_view text) {
   double number = 0.0;
   const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
   if (ec != std::errc() || !(number > 0.0) || !std::isfinite(number)) return 0;
-  std::string suffix(ptr, text.data() + text.size());
-  for (char& c : suffix) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  double scale = 1.0;
-  if (suffix.empty() || suffix == "B")
-    scale = 1.0;
-  else if (suffix == "K" || suffix == "KB" || suffix == "KIB")
-    scale = 1024.0;
-  else if (suffix == "M" || suffix == "MB" || suffix == "MIB")
-    scale = 1024.0 * 1024.0;
-  else if (suffix == "G" || suffix == "GB" || suffix == "GIB")
-    scale = 1024.0 * 1024.0 * 1024.0;
-  else
-    return 0;
+  const double scale = scaleOf(std::string_view(ptr, static_cast<std::size_t>(text.data() + text.size() - ptr)));
   const double bytes = std::round(number * scale);
   if (bytes < 1.0 || bytes > 1e18) return 0;
   return static_cast<std::uint64_t>(bytes);

@@ -12,16 +12,6 @@
 
 namespace lattice {
 namespace settings_detail {
-namespace {
-
-// The choices, and the unset word after them (what an error lists).
-std::vector<std::string_view> withUnset(SettingChoices choices, std::string_view unset) {
-  std::vector<std::string_view> names(choices.begin(), choices.end());
-  if (!unset.empty()) names.push_back(unset);
-  return names;
-}
-
-}  // namespace
 
 double parseValue(std::string_view context, const RowType& type, const KeyValue& kv) {
   const std::string what = fmt::format("{}: {}", context, kv.key);
@@ -38,8 +28,9 @@ double parseValue(std::string_view context, const RowType& type, const KeyValue&
     case SettingKind::Choice:
       for (std::size_t i = 0; i < type.choices.size(); ++i)
         if (type.choices[i] == kv.value) return static_cast<double>(i);
-      throw Error(ErrorKind::Usage, fmt::format("{}: {}={} must be {}", context, kv.key, kv.value,
-                                                choicesOf(withUnset(type.choices, type.unset))));
+      throw Error(ErrorKind::Usage, fmt::format("{}: {}={} must be {}{}{}", context, kv.key, kv.value,
+                                                choicesOf(type.choices), type.unset.empty() ? "" : ", or ",
+                                                type.unset));
     case SettingKind::Reported:
       break;
   }

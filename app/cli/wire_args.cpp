@@ -2,19 +2,19 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/wire_settings.hpp"
+#include "app/wire_budget_settings.hpp"
 #include "foundation/error.hpp"
 
 namespace lattice::app {
 
 void addWireOptions(CLI::App* cmd, WireArgs& args) {
-  addSettingFlags(cmd, wireSettings(), wireSettings().initial(), args.given, settableKeys(wireSettings()),
-                  "Wire budget");
+  const SettingsSchema<WireBudget>& schema = wireBudgetSettings();
+  addSettingFlags(cmd, schema, schema.initial(), args.given, settableKeys(schema), "Wire budget");
 }
 
 void applyWireArgs(const WireArgs& args, const CLI::App& cmd, int baud, RenderJob& job) {
-  WireBudget budget = wireSettings().initial();
-  applySettingFlags(wireSettings(), budget, args.given);
+  WireBudget budget = wireBudgetSettings().initial();
+  applySettingFlags(wireBudgetSettings(), budget, args.given);
   const bool given = budget.seconds || budget.bytes;
   if (budget.shrink && !given)
     throw Error(ErrorKind::Usage, "--wire-shrink applies to a wire budget: add --wire-seconds S or --wire-bytes N");

@@ -1,6 +1,6 @@
 #pragma once
 // The flags of `lattice render` that fit a device's stream to the wire, read
-// from the wire budget's schema (app/wire_settings.hpp): --wire-seconds or
+// from the wire budget's schema (app/wire_budget_settings.hpp): --wire-seconds or
 // --wire-bytes (a budget the search of app/wire_budget.hpp fits),
 // --wire-quality (the floor of the size search, app/wire_size.hpp, which a
 // budget runs unless --width/--height fix the size) and --wire-shrink. The

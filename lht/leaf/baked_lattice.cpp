@@ -24,6 +24,7 @@ class BakedLatticeLeafDesc final : public LeafTemplate<BakedLatticeLeafDesc> {
   }
   Bounds<double> objectBounds() const override { return bounds_; }
   std::string describe() const override { return fmt::format("baked lattice '{}'", name_); }
+#ifndef LATTICE_NO_BAKER  // the firmware renders a baked scene and never bakes one (render/scene/scene.hpp)
   std::string bake(SceneBaker& baker) const override {
     return bakeLatticeLeaf(baker, *table_, shadows_, name_, bounds_);
   }
@@ -31,6 +32,7 @@ class BakedLatticeLeafDesc final : public LeafTemplate<BakedLatticeLeafDesc> {
                         MaterialId inherited) const override {
     return bakeLatticeUnion(baker, name_, unionNode, parentToWorld, inherited);
   }
+#endif
 
  private:
   std::shared_ptr<const LhtFile> table_;

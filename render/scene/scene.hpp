@@ -61,7 +61,9 @@ class LeafDesc {
   // A short human-readable name for messages ("sphere", "lattice 'hair'").
   virtual std::string describe() const = 0;
   // A C++ expression of type LeafDescPtr that rebuilds this leaf in a baked
-  // scene (render/scene/scene_baker.hpp, docs/firmware.md). The default refuses
+  // scene (render/scene/scene_baker.hpp, docs/firmware.md). A build that only
+  // renders scenes baked elsewhere (the firmware defines LATTICE_NO_BAKER)
+  // leaves the leaves' overrides out, so no baker is linked. The default refuses
   // with lattice::Error(Usage) naming the leaf.
   virtual std::string bake(SceneBaker& baker) const;
   // A C++ expression of type LeafDescPtr standing for the whole of

@@ -29,7 +29,9 @@ class ShapeLeaf final : public LeafTemplate<ShapeLeaf<Shape>> {
   }
   Bounds<double> objectBounds() const override { return shape_.objectBounds(); }
   std::string describe() const override { return name_; }
+#ifndef LATTICE_NO_BAKER  // the firmware renders a baked scene and never bakes one (render/scene/scene.hpp)
   std::string bake(SceneBaker& baker) const override { return shape_.bake(baker, name_); }
+#endif
   std::optional<LeafShape> shape() const override { return LeafShape{shape_}; }
 
  private:

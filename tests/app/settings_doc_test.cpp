@@ -2,7 +2,7 @@
 // table (foundation/settings_schema.hpp), and its tables of the quantizer's,
 // the lattice tables', the wire budget's and the serial line's flags are
 // their schemas' (quantize/pipeline_settings.hpp, loader/table_settings.hpp,
-// app/wire_settings.hpp, io/serial_settings.hpp), regenerated here and
+// app/wire_budget_settings.hpp, io/serial_settings.hpp), regenerated here and
 // compared with the doc's text between each table's markers, so a key
 // added, renamed or re-ranged in code and not in the doc fails this test. On
 // a difference it prints the block to paste; LATTICE_REGENERATE_GOLDENS=1
@@ -16,7 +16,7 @@
 #include <sstream>
 #include <string>
 
-#include "app/wire_settings.hpp"
+#include "app/wire_budget_settings.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/system/atomic_file.hpp"
 #include "io/serial_settings.hpp"
@@ -45,7 +45,7 @@ TEST_CASE("docs/cli.md lists each device's --set keys and each stage's flags as 
     tables.emplace_back(entry.name, entry.settings());
   tables.emplace_back("quantizer", lattice::settingInfos(lattice::quantize::pipelineSettings()));
   tables.emplace_back("lattice-tables", lattice::settingInfos(lattice::lht::tableSettings()));
-  tables.emplace_back("wire", lattice::settingInfos(lattice::app::wireSettings()));
+  tables.emplace_back("wire", lattice::settingInfos(lattice::app::wireBudgetSettings()));
   tables.emplace_back("serial", lattice::settingInfos(lattice::io::serialSettings()));
   for (const auto& [name, infos] : tables) {
     const std::string begin = fmt::format("<!-- settings:{} begin -->\n", name);

@@ -10,6 +10,6 @@
 
 namespace lattice::app {
 
-const SettingsSchema<WireBudget>& wireSettings();
+const SettingsSchema<WireBudget>& wireBudgetSettings();
 
 }  // namespace lattice::app

@@ -1,4 +1,4 @@
-#include "app/wire_settings.hpp"
+#include "app/wire_budget_settings.hpp"
 
 #include "foundation/error.hpp"
 
@@ -36,6 +36,6 @@ constexpr SettingsSchema<W> kWireSchema{"wire budget", kWireRows, [] { return W{
 
 }  // namespace
 
-const SettingsSchema<WireBudget>& wireSettings() { return kWireSchema; }
+const SettingsSchema<WireBudget>& wireBudgetSettings() { return kWireSchema; }
 
 }  // namespace lattice::app
