@@ -198,6 +198,9 @@ template <typename T>
 RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, const std::shared_ptr<RasterRoom>& room,
                         const PhaseTimer& start) {
   quantize::PipelineOptions pipeline = job.pipeline;
+  // A kept frame is counted and mapped on every thread; under a chosen memory
+  // budget on one, so the plan (and with it the picture) never depends on the count.
+  if (!job.memoryBudget) pipeline.threads = job.threads > 0 ? unsigned(job.threads) : hardwareThreads();
   std::optional<devices::Device> device;
   std::vector<std::string> wireAdded;  // profile settings the wire budget turned on
   if (!job.device.empty()) {
