@@ -1,3 +1,5 @@
+// The kept frame's histogram and mapping over bands of rows on every thread;
+// the method and why are in frame_bands.hpp.
 #include "quantize/frame_bands.hpp"
 
 #include <algorithm>
