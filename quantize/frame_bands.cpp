@@ -22,7 +22,7 @@ std::size_t shareStart(std::size_t n, unsigned w, unsigned workers) { return n *
 
 unsigned histogramWorkers(int height, unsigned threads) {
   const auto bands = std::max<std::size_t>(1, rowsOf(height) / static_cast<std::size_t>(kBandRows));
-  return static_cast<unsigned>(std::min<std::size_t>(std::max(threads, 1u), bands));
+  return static_cast<unsigned>(std::min<std::size_t>(std::min(std::max(threads, 1u), kMostHistogramParts), bands));
 }
 
 std::size_t partialHistogramBytes(int height, unsigned threads, HistogramForm form) {

@@ -3,8 +3,8 @@
 // thread: the histogram and the mapping to palette indices.
 //
 // Method. Histogram: the frame's rows are cut into one band a thread; each
-// thread counts its band into a histogram of its own (the first into the
-// pipeline's), and the parts are merged into the first: the full form by
+// thread (at most 8) counts its band into a histogram of its own (the first
+// into the pipeline's), and the parts are merged into the first: the full form by
 // disjoint ranges of the 18-bit cube, one a thread; the small form, at most
 // 64 KiB a part, on one. Counts are sums, so the palette is the one a single
 // thread finds. Mapping: bands of kBandRows rows are mapped on a pool of
@@ -19,7 +19,7 @@
 // Why: with the frame kept, these passes run after the trace, so on one
 // thread they are a serial tail of the render (docs/architecture.md, "How
 // the work is split"). The cost is memory: a 1 MiB full histogram for each
-// thread after the first and two bands of indices (partialHistogramBytes,
+// part after the first and two bands of indices (partialHistogramBytes,
 // indexBandBytes, which pipelineBuffers counts).
 #include <cstddef>
 #include <functional>
@@ -32,8 +32,12 @@
 namespace lattice::quantize {
 
 inline constexpr int kBandRows = 32;
+// At most this many histograms count a frame: 7 MiB more at most, while the
+// count of a 2048 x 2048 frame already takes under a millisecond in 8 parts.
+inline constexpr unsigned kMostHistogramParts = 8;
 
-// The threads that count a frame of `height` rows: no band under kBandRows rows.
+// The threads that count a frame of `height` rows: no band under kBandRows
+// rows, no more than kMostHistogramParts.
 unsigned histogramWorkers(int height, unsigned threads);
 // What the band passes hold beyond the one-thread pipeline's buffers.
 std::size_t partialHistogramBytes(int height, unsigned threads, HistogramForm form);

@@ -26,8 +26,8 @@
 // Histograms of parts of a picture merge into the whole's (merge, before
 // finish): a count is a saturating sum, so min(a + b, max) of the parts'
 // saturated counts equals the whole's, in either form and in any order of
-// parts. The pipeline counts bands of rows so on every thread
-// (quantize/frame_bands.hpp).
+// parts. The pipeline counts a kept frame's bands of rows this way, one a
+// thread (quantize/frame_bands.hpp).
 #include <cstdint>
 #include <span>
 #include <vector>

@@ -13,7 +13,7 @@
 //            With `threads` above 1 its histogram and (without
 //            Floyd-Steinberg) its mapping run over bands of rows on that
 //            many threads (quantize/frame_bands.hpp): the same output again,
-//            for 1 MiB a thread more (full histogram).
+//            for 1 MiB more a histogram band after the first (at most 7).
 //   Sample   the histogram pass renders every Nth row and takes every Nth
 //            column; the map pass renders all rows. ~1/N of the extra render
 //            cost, but the palette comes from a subset, so the output may

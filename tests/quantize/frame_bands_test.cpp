@@ -174,6 +174,7 @@ TEST_CASE("frame bands: the pipeline's buffers count a partial histogram a threa
   CHECK(four.rowBytes == one.rowBytes + 2 * std::size_t{kBandRows} * 100);
   CHECK(histogramWorkers(40, 8) == 1);  // no band under kBandRows rows
   CHECK(histogramWorkers(1000, 8) == 8);
+  CHECK(histogramWorkers(1000, 64) == kMostHistogramParts);  // the memory stays bounded on many cores
   options.mode = PipelineMode::TwoPass;  // one row at a time: no bands
   CHECK(pipelineBuffers(100, 1000, options).totalBytes() == pipelineBuffers(100, 1000, PipelineOptions{}).totalBytes());
   options.mode = PipelineMode::Frame;
