@@ -2,7 +2,8 @@
 // of parts merge into the whole's, the inverse colour map answers truly when
 // many threads resolve its cells at once, and the pipeline in Frame mode hands
 // the sink the same palette, rows and row order for 1, 2, 3 and 8 threads,
-// with every dither and both histogram forms.
+// with every dither and both histogram forms, and a sink's error comes out
+// of the pipeline with the mapping pool joined.
 #include <catch2/catch.hpp>
 
 #include <climits>
@@ -180,4 +181,26 @@ TEST_CASE("frame bands: the pipeline's buffers count a partial histogram a threa
   options.mode = PipelineMode::Frame;
   options.quantize.dither = Dither::FloydSteinberg;  // maps on one thread: no bands of indices
   CHECK(pipelineBuffers(100, 1000, options).rowBytes == one.rowBytes);
+}
+
+TEST_CASE("frame bands: a sink's error mid-picture comes out of the pipeline while the pool maps the next band") {
+  class Failing final : public IndexedSink {
+   public:
+    int maxColors() const override { return 16; }
+    void begin(const FrameInfo&) override {}
+    void row(int y, std::span<const PaletteIndex>) override {
+      if (y == kBandRows + 3) throw Error(ErrorKind::Output, "the line dropped");
+      ++rows;
+    }
+    void end() override {}
+    int rows = 0;
+  };
+  FunctionSource source(kWidth, kHeight, pixel);
+  PipelineOptions options;
+  options.mode = PipelineMode::Frame;
+  options.progress = false;
+  options.threads = 3;
+  Failing sink;
+  CHECK_THROWS_WITH(runPipeline(source, sink, options), "the line dropped");
+  CHECK(sink.rows == kBandRows + 3);  // every row before it, in order
 }
