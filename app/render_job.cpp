@@ -195,6 +195,9 @@ template <typename T>
 RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, const std::shared_ptr<RasterRoom>& room,
                         const PhaseTimer& start) {
   quantize::PipelineOptions pipeline = job.pipeline;
+  // A kept frame is counted and mapped on every thread; under a chosen memory
+  // budget on one, so the plan (and with it the picture) never depends on the count.
+  if (!job.memory.budget) pipeline.threads = job.render.threads > 0 ? unsigned(job.render.threads) : hardwareThreads();
   std::optional<devices::Device> device;
   std::vector<std::string> wireAdded;  // profile settings the wire budget turned on
   if (!job.output.device.empty()) {

@@ -13,6 +13,8 @@
 #                                 bench_size_args (--width W --height H)
 #   bench_workdir VAR             a temporary folder in VAR, removed on exit
 #   bench_loadavg                 the 1, 5 and 15 minute load averages
+#   bench_loaded COMMAND...       COMMAND between two lines of the load average
+#   bench_picture BUILD SCENE SIZE FILE  the scene rendered SIZE x SIZE to a PNG
 #   bench_median [-f FMT] X...    the median (the mean of the middle two when even)
 #   bench_range X...              "min-max"
 #   bench_write FILE COMMAND...   COMMAND's output to the terminal and, when
@@ -118,6 +120,20 @@ bench_workdir() {
 
 bench_loadavg() {
   cut -d' ' -f1-3 /proc/loadavg
+}
+
+# bench_picture BUILD SCENE SIZE FILE: the scene rendered by BUILD's lattice at
+# SIZE x SIZE on every thread into the PNG FILE, for a bench of a later stage.
+bench_picture() {
+  [[ -f $2 ]] || bench_die "no scene file $2 (give --scene FILE)"
+  "$1/app/lattice" render "$2" --width "$3" --height "$3" -q -o "$4" 2>/dev/null
+}
+
+# bench_loaded COMMAND...: runs it between two lines of the load average.
+bench_loaded() {
+  echo "load average before: $(bench_loadavg)"
+  "$@"
+  echo "load average after: $(bench_loadavg)"
 }
 
 bench_median() {

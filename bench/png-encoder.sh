@@ -21,12 +21,9 @@ bench_positive --size "$size"
 bench_positive --runs "$runs"
 bench_need_built "$build" lattice png_encoder_bench
 bench_workdir work
-[[ -f $scene ]] || bench_die "no scene file $scene (give --scene FILE)"
-"$build/app/lattice" render "$scene" --width "$size" --height "$size" -q -o "$work/picture.png" 2>/dev/null
+bench_picture "$build" "$scene" "$size" "$work/picture.png"
 report() {
-  echo "load average before: $(bench_loadavg)"
   echo "scene: ${scene#"$root"/}"
-  "$build/bench/png_encoder_bench" --runs "$runs" "$work/picture.png"
-  echo "load average after: $(bench_loadavg)"
+  bench_loaded "$build/bench/png_encoder_bench" --runs "$runs" "$work/picture.png"
 }
 bench_write "$out" report

@@ -48,9 +48,10 @@ lattice="$build/app/lattice"
 bench_workdir work
 
 # One line of phases: "size threads whole setup trace quantize output
-# cpu_whole cpu_setup cpu_trace cpu_output": wall seconds (the whole process
-# by the clock around it), then CPU seconds from lattice render's report (the
-# whole: the process's from its start to the report, all but its exit).
+# cpu_whole cpu_setup cpu_trace cpu_output cpu_quantize": wall seconds (the
+# whole process by the clock around it), then CPU seconds from lattice
+# render's report (the whole: the process's from its start to the report,
+# all but its exit; quantize: the sixel render's).
 measure() {
   local size=$1 threads=$2 start end whole line device
   start=$(date +%s.%N)
@@ -63,7 +64,8 @@ measure() {
   phase() { grep -o "($1 [0-9.]* s)" <<<"$2" | grep -o '[0-9.]*' || echo 0; }
   cpuphase() { grep -o "(CPU .*)" <<<"$2" | grep -o "$1 [0-9.]* s" | grep -o '[0-9.]*' || echo 0; }
   echo "$size $threads $whole $(phase set-up "$line") $(phase trace "$line") $(phase quantize "$device")" \
-    "$(phase output "$line") $(cpuphase process "$line") $(cpuphase set-up "$line") $(cpuphase trace "$line") $(cpuphase output "$line")"
+    "$(phase output "$line") $(cpuphase process "$line") $(cpuphase set-up "$line") $(cpuphase trace "$line") $(cpuphase output "$line")" \
+    "$(cpuphase quantize "$device")"
 }
 
 report() {
@@ -92,11 +94,11 @@ for (size, threads), runs in sorted(data.items()):
     w, s, t, q, o = (med(runs, i) for i in range(5))
     print(f"| {size} | {threads} | {w:.3f} | {s:.4f} | {t:.3f} | {q:.4f} | {o:.4f} | {meddiff(runs, 0, 2):.4f} |")
 print("\nCPU seconds (every thread's), medians; at one thread what a quiet machine's wall clock shows:\n")
-print("| size | threads | whole | set-up | trace | output | whole - trace |")
-print("|---:|---:|---:|---:|---:|---:|---:|")
+print("| size | threads | whole | set-up | trace | quantize | output | whole - trace |")
+print("|---:|---:|---:|---:|---:|---:|---:|---:|")
 for (size, threads), runs in sorted(data.items()):
-    w, s, t, o = (med(runs, i) for i in (5, 6, 7, 8))
-    print(f"| {size} | {threads} | {w:.3f} | {s:.4f} | {t:.3f} | {o:.4f} | {meddiff(runs, 5, 7):.4f} |")
+    w, s, t, o, q = (med(runs, i) for i in (5, 6, 7, 8, 9))
+    print(f"| {size} | {threads} | {w:.3f} | {s:.4f} | {t:.3f} | {q:.4f} | {o:.4f} | {meddiff(runs, 5, 7):.4f} |")
 print("\nSerial fraction and the speed-up it allows (Amdahl):\n")
 print("| size | threads N | speed-up T1/TN | e (Karp-Flatt) | at 16 | at 64 | non-trace share, wall | at 16 | at 64 "
       "| non-trace share, CPU | at 16 | at 64 |")

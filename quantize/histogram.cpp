@@ -40,14 +40,24 @@ void Histogram::growSmall() {
   pairs_ = std::move(grown);
 }
 
+void Histogram::checkAddable() const {
+  if (finished_) throw Error(ErrorKind::Internal, "histogram: colour added after finish()");
+  if (form_ == HistogramForm::Full && counts_.empty())
+    throw Error(ErrorKind::Internal, "histogram: used after releaseStorage()");
+}
+
 void Histogram::add(Color18 color) {
   if (color >= kCells)
     throw Error(ErrorKind::Internal,
                 fmt::format("histogram: colour {:#x} is not an 18-bit colour (a RowSource18 produced it)", color));
-  if (finished_) throw Error(ErrorKind::Internal, "histogram: colour added after finish()");
+  checkAddable();
+  addCount(color, 1);
+}
+
+// Saturating: a count stays at the 32-bit maximum once it gets there.
+void Histogram::addCount(Color18 color, std::uint32_t n) {
   std::uint32_t* cell = nullptr;
   if (form_ == HistogramForm::Full) {
-    if (counts_.empty()) throw Error(ErrorKind::Internal, "histogram: used after releaseStorage()");
     cell = &counts_[color];
   } else {
     std::size_t i = slotOf(color, pairs_.size());
@@ -55,7 +65,7 @@ void Histogram::add(Color18 color) {
     if (pairs_[i].color == kEmptySlot) {
       if ((used_ + 1) * 4 > pairs_.size() * 3) {
         growSmall();
-        add(color);  // into the grown table (total_ counted there)
+        addCount(color, n);  // into the grown table (total_ counted there)
         return;
       }
       pairs_[i].color = color;
@@ -63,12 +73,41 @@ void Histogram::add(Color18 color) {
     }
     cell = &pairs_[i].count;
   }
-  if (*cell != std::numeric_limits<std::uint32_t>::max()) ++*cell;
-  ++total_;
+  *cell = n > std::numeric_limits<std::uint32_t>::max() - *cell ? std::numeric_limits<std::uint32_t>::max() : *cell + n;
+  total_ += n;
 }
 
 void Histogram::addRow(std::span<const Color18> row) {
-  for (Color18 c : row) add(c);
+  if (form_ != HistogramForm::Full) {
+    for (Color18 c : row) add(c);
+    return;
+  }
+  checkAddable();  // once a row: the full form's per-pixel work is one bounds check and one count
+  for (Color18 c : row) {
+    if (c >= kCells) add(c);  // throws, naming the colour
+    std::uint32_t& cell = counts_[c];
+    cell += cell != std::numeric_limits<std::uint32_t>::max();
+  }
+  total_ += row.size();
+}
+
+void Histogram::merge(const Histogram& part, Color18 first, Color18 last) {
+  if (part.form_ != form_ || part.finished_)
+    throw Error(ErrorKind::Internal, "histogram: merged a part of another form, or a finished one");
+  checkAddable();
+  if (form_ == HistogramForm::Full) {
+    constexpr std::uint32_t kMax = std::numeric_limits<std::uint32_t>::max();
+    for (Color18 c = first; c < last; ++c) {
+      const std::uint32_t n = part.counts_[c];
+      counts_[c] = n > kMax - counts_[c] ? kMax : counts_[c] + n;
+    }
+    if (first == 0) total_ += part.total_;
+    return;
+  }
+  const std::uint64_t total = total_ + part.total_;  // addCount counts a saturated count's pixels once
+  for (const Pair& p : part.pairs_)
+    if (p.color != kEmptySlot) addCount(p.color, p.count);
+  total_ = total;
 }
 
 void Histogram::addRowSampled(std::span<const Color18> row, int step) {

@@ -22,6 +22,12 @@
 // 32-bit saturating counts, and forEach/forEachInBox visit colours in the
 // same ascending order in both forms, so the median cut's sums, and with
 // them the palette and the whole stream, are the same bit for bit.
+//
+// Histograms of parts of a picture merge into the whole's (merge, before
+// finish): a count is a saturating sum, so min(a + b, max) of the parts'
+// saturated counts equals the whole's, in either form and in any order of
+// parts. The pipeline counts a kept frame's bands of rows this way, one a
+// thread (quantize/frame_bands.hpp).
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -51,6 +57,11 @@ class Histogram {
   void addRow(std::span<const Color18> row);
   // Adds every step-th pixel of the row, starting at column 0.
   void addRowSampled(std::span<const Color18> row, int step);
+  // Adds the counts of a histogram of the same form (neither finished). Full
+  // form: only the cells [first, last) of the 18-bit cube, so threads can
+  // merge disjoint ranges at once; total pixels are added by the call that
+  // starts at cell 0. The small form merges every colour whatever the range.
+  void merge(const Histogram& part, Color18 first = 0, Color18 last = Color18(kCells));
   // No more colours follow: the small form sorts its pairs here, and reading
   // it before finish() is lattice::Error(Internal).
   void finish();
@@ -104,6 +115,8 @@ class Histogram {
   };
   static constexpr Color18 kEmptySlot = ~Color18{0};
   std::span<const Pair> sortedPairs() const;
+  void addCount(Color18 color, std::uint32_t n);
+  void checkAddable() const;
   void growSmall();
 
   HistogramForm form_;

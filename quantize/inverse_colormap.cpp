@@ -21,7 +21,8 @@ InverseColorMap::InverseColorMap(Palette palette, std::vector<std::uint32_t> sto
     : InverseColorMap(std::move(palette), true) {
   cache_ = std::move(storage);
   if (cache_.size() != kCells) cache_.assign(kCells, 0);
-  resolved_.assign(kCoarseCells, false);
+  resolved_ = std::make_unique<std::atomic<std::uint8_t>[]>(kCoarseCells);  // value-initialised: none resolved
+  resolving_ = std::make_unique<Mutex>();
   candidates_.reserve(palette_.size());
 }
 
@@ -37,10 +38,15 @@ void InverseColorMap::throwBadColor(Color18 color) {
 }
 
 std::size_t InverseColorMap::resolvedCoarseCells() const {
-  return static_cast<std::size_t>(std::count(resolved_.begin(), resolved_.end(), true));
+  if (!resolved_) return 0;
+  std::size_t n = 0;
+  for (int i = 0; i < kCoarseCells; ++i) n += resolved_[static_cast<std::size_t>(i)].load(kPublished) != 0;
+  return n;
 }
 
 void InverseColorMap::resolveCoarseCell(unsigned coarse) {
+  std::lock_guard lock(*resolving_);
+  if (resolved_[coarse].load(std::memory_order_relaxed)) return;  // another thread resolved it while we waited
   // The cell's corners in 6-bit and 8-bit units.
   std::array<unsigned, 3> base6{(coarse >> 8) * 4, ((coarse >> 4) & 15u) * 4, (coarse & 15u) * 4};
   std::array<int, 3> lo{}, hi{};
@@ -88,7 +94,7 @@ void InverseColorMap::resolveCoarseCell(unsigned coarse) {
         }
         cache_[c] = static_cast<std::uint32_t>(best);
       }
-  resolved_[coarse] = true;
+  resolved_[coarse].store(1, kHasThreads ? std::memory_order_release : std::memory_order_relaxed);
 }
 
 }  // namespace lattice::quantize

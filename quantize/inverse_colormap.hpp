@@ -14,10 +14,20 @@
 // histogram the same way), so the map costs no memory beyond the histogram
 // plus 4 KiB of "cell resolved" flags. Work is proportional to the colours
 // actually present, not to the whole cube.
+//
+// Any number of threads may call nearest() at once (the pipeline maps bands
+// of rows on every thread, quantize/frame_bands.hpp): a coarse cell is
+// resolved under a lock, then published by its flag (a release store), and
+// every later look-up reads the flag with an acquire load (a plain load on
+// x86-64) and the cache with no lock. Whoever resolves a cell writes the
+// same answers, so the map is the same whatever the threads' order.
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "foundation/scanline.hpp"
+#include "foundation/threads.hpp"
 
 namespace lattice::quantize {
 
@@ -39,7 +49,7 @@ class InverseColorMap {
     if (color >= kCells) throwBadColor(color);
     if (!cached_) return nearestInPalette(color);
     unsigned coarse = coarseCell(color);
-    if (!resolved_[coarse]) resolveCoarseCell(coarse);
+    if (!resolved_[coarse].load(kPublished)) resolveCoarseCell(coarse);
     return static_cast<PaletteIndex>(cache_[color]);
   }
 
@@ -49,6 +59,8 @@ class InverseColorMap {
 
  private:
   static constexpr std::size_t kCells = std::size_t{1} << 18;
+  // One flow of control needs no ordering (a Cortex-M3's acquire is a barrier).
+  static constexpr std::memory_order kPublished = kHasThreads ? std::memory_order_acquire : std::memory_order_relaxed;
   static unsigned coarseCell(Color18 c) { return (red6(c) >> 2) << 8 | (green6(c) >> 2) << 4 | (blue6(c) >> 2); }
   [[noreturn]] static void throwBadColor(Color18 color);
   void resolveCoarseCell(unsigned coarse);
@@ -58,8 +70,10 @@ class InverseColorMap {
   bool cached_ = true;
   Palette palette_;
   std::vector<std::uint32_t> cache_;
-  std::vector<bool> resolved_;
-  // Scratch reused by every coarse cell: (nearest distance, entry) pairs.
+  // Set once a coarse cell's answers are in cache_ (held by pointer: the map stays movable).
+  std::unique_ptr<std::atomic<std::uint8_t>[]> resolved_;
+  std::unique_ptr<Mutex> resolving_;
+  // Scratch reused by every coarse cell, under resolving_: (nearest distance, entry) pairs.
   std::vector<std::pair<int, int>> candidates_;
 };
 

@@ -3,7 +3,8 @@
 // optional dithering. Holds O(width) state: Floyd-Steinberg keeps ONE error
 // row of (width + 2) x 3 ints (the row being diffused into is written just
 // behind the pixel being read, so the current and next rows share it);
-// Bayer and no-dither keep nothing.
+// Bayer and no-dither keep nothing, so for them any number of threads may
+// map rows at once (the inverse colour map is safe to share).
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -21,6 +22,8 @@ class RowMapper {
   // Rows must come in order y = 0, 1, ... for Floyd-Steinberg (the error row
   // carries state); out.size() == in.size() == width.
   void mapRow(int y, std::span<const Color18> in, std::span<PaletteIndex> out);
+
+  Dither dither() const { return dither_; }
 
   static std::size_t errorRowBytes(int width) { return (static_cast<std::size_t>(width) + 2) * 3 * sizeof(int); }
 

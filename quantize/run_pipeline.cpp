@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "quantize/frame_bands.hpp"
 #include "quantize/histogram.hpp"
 #include "quantize/inverse_colormap.hpp"
 #include "quantize/median_cut.hpp"
@@ -44,7 +45,11 @@ PipelineReport pipelineBuffers(int width, int height, const PipelineOptions& opt
   PipelineReport report;
   report.histogramBytes = Histogram::bytesOf(options.quantize.histogram);
   report.rowBytes = w * (sizeof(Color18) + sizeof(PaletteIndex));
-  if (options.mode == PipelineMode::Frame) report.frameBytes = w * static_cast<std::size_t>(std::max(height, 0)) * sizeof(Color18);
+  if (options.mode == PipelineMode::Frame) {
+    report.frameBytes = w * static_cast<std::size_t>(std::max(height, 0)) * sizeof(Color18);
+    report.histogramBytes += partialHistogramBytes(height, options.threads, options.quantize.histogram);
+    report.rowBytes += indexBandBytes(width, options.threads, options.quantize.dither);
+  }
   if (options.quantize.dither == Dither::FloydSteinberg) report.errorRowBytes = RowMapper::errorRowBytes(width);
   return report;
 }
@@ -57,6 +62,7 @@ PipelineReport runPipeline(RowSource18& source, IndexedSink& sink, const Pipelin
 
   std::vector<Color18> row(w);
   std::vector<Color18> frame;  // Frame mode only
+  const bool bandsOfFrame = options.mode == PipelineMode::Frame && options.threads > 1;
   Histogram histogram(options.quantize.histogram);
   {
     const int rowStep = options.mode == PipelineMode::Sample ? options.sampleStep : 1;
@@ -73,11 +79,12 @@ PipelineReport runPipeline(RowSource18& source, IndexedSink& sink, const Pipelin
       ++report.rowsRendered;
       if (options.mode == PipelineMode::Sample)
         histogram.addRowSampled(out, options.sampleStep);
-      else
-        histogram.addRow(out);
+      else if (!bandsOfFrame)
+        histogram.addRow(out);  // while the renderer traces the rows ahead
       progress.advance();
     }
     progress.finish();
+    if (bandsOfFrame) countFrame(frame, width, histogram, options.threads);
   }
   histogram.finish();
   report.distinctColors = histogram.distinctColors();
@@ -116,20 +123,26 @@ PipelineReport runPipeline(RowSource18& source, IndexedSink& sink, const Pipelin
   sink.begin(info);
   Progress progress("quantize", static_cast<std::uint64_t>(height), "rows");
   if (!options.progress) progress.setEnabled(false);
-  for (int y = 0; y < height; ++y) {
-    std::span<const Color18> in;
-    if (options.mode == PipelineMode::Frame) {
-      in = std::span<const Color18>(frame).subspan(static_cast<std::size_t>(y) * w, w);
-    } else {
-      source.row(y, row);
-      ++report.rowsRendered;
-      in = row;
-    }
-    mapper.mapRow(y, in, indices);
+  auto deliver = [&](int y, std::span<const Color18> in, std::span<const PaletteIndex> mapped) {
     sink.truecolourRow(y, in);
-    sink.row(y, indices);
+    sink.row(y, mapped);
     progress.advance();
-  }
+  };
+  if (bandsOfFrame && options.quantize.dither != Dither::FloydSteinberg)
+    mapFrame(frame, width, mapper, options.threads, deliver);
+  else
+    for (int y = 0; y < height; ++y) {
+      std::span<const Color18> in;
+      if (options.mode == PipelineMode::Frame) {
+        in = std::span<const Color18>(frame).subspan(static_cast<std::size_t>(y) * w, w);
+      } else {
+        source.row(y, row);
+        ++report.rowsRendered;
+        in = row;
+      }
+      mapper.mapRow(y, in, indices);
+      deliver(y, in, indices);
+    }
   sink.end();
   progress.finish();
   return report;

@@ -10,6 +10,10 @@
 //            with Floyd-Steinberg, one error row (12 B/pixel). Least memory.
 //   Frame    render once into a 4 B/pixel frame and map from it. Fastest when
 //            rendering is the expensive part. Same output as TwoPass.
+//            With `threads` above 1 its histogram and (without
+//            Floyd-Steinberg) its mapping run over bands of rows on that
+//            many threads (quantize/frame_bands.hpp): the same output again,
+//            for 1 MiB more a histogram band after the first (at most 7).
 //   Sample   the histogram pass renders every Nth row and takes every Nth
 //            column; the map pass renders all rows. ~1/N of the extra render
 //            cost, but the palette comes from a subset, so the output may
@@ -36,6 +40,7 @@ struct PipelineOptions {
   int maxColors = 0;    // 0: what the sink can show; otherwise min(this, sink)
   QuantizeOptions quantize;
   bool progress = true;  // draw progress bars (only ever on a terminal)
+  unsigned threads = 1;  // Frame mode's passes over bands (1: all on the caller's thread)
 };
 
 struct PipelineReport {
