@@ -1,6 +1,8 @@
 #include "lht/raster/raster_estimate.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "foundation/threads.hpp"
@@ -44,26 +46,38 @@ RasterEstimate estimateRaster(const LatticeBox& box, const LatticeObject& object
         if (a == b) e.distinctPairs -= perFaces[a];  // p_i = p_o: a point, not a segment
       }
 
-  const PairTracer tracer(box, *object.primitive, object.cover ? &*object.cover : nullptr);
-  const auto tracePair = [&](std::size_t i, std::size_t j) {
-    if (i == j || LatticeBox::pairMultiplicity(faces[i], faces[j]) == 0) return false;
-    ++e.sampled;
-    RasterHit hit;
-    if (tracer.trace(points[i], points[j], hit)) ++e.sampledHits;
-    return true;
+  // The pairs to trace, drawn first and then traced grouped by entry point,
+  // so the cull aims one fan per point (lht/raster/cover_cull.hpp) as the
+  // rasterizer does instead of testing every piece for every pair; which
+  // pairs hit does not depend on the order.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> drawn;
+  const auto drawPair = [&](std::size_t i, std::size_t j) {
+    if (i == j || LatticeBox::pairMultiplicity(faces[i], faces[j]) == 0) return;
+    drawn.emplace_back(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
   };
   if (e.distinctPairs <= samples) {
     for (std::size_t i = 0; i < points.size(); ++i)
-      for (std::size_t j = 0; j < points.size(); ++j) tracePair(i, j);
+      for (std::size_t j = 0; j < points.size(); ++j) drawPair(i, j);
   } else {
     std::uint64_t state = 1988;
     // Pairs on a common face are drawn and skipped; they are a minority
     // (about a third on a cube), so the bound on draws is never reached.
-    for (std::uint64_t draws = 0; e.sampled < samples && draws < 16 * samples; ++draws) {
+    for (std::uint64_t draws = 0; drawn.size() < samples && draws < 16 * samples; ++draws) {
       const std::size_t i = nextRandom(state) % points.size(), j = nextRandom(state) % points.size();
-      tracePair(i, j);
+      drawPair(i, j);
     }
   }
+  std::sort(drawn.begin(), drawn.end());
+  const PairTracer tracer(box, *object.primitive, object.cover ? &*object.cover : nullptr);
+  CoverCull::Fan fan;
+  for (std::size_t k = 0; k < drawn.size(); ++k) {
+    const auto [i, j] = drawn[k];
+    if (k == 0 || drawn[k - 1].first != i) tracer.cull().aim(points[i].toVec(), faces[i], fan);
+    RasterHit hit;
+    bool traced = false;
+    if (tracer.trace(points[i], faces[i], points[j], faces[j], hit, traced, &fan)) ++e.sampledHits;
+  }
+  e.sampled = drawn.size();
   const double share = e.sampled ? double(e.sampledHits) / double(e.sampled) : 0.0;
   e.hits = std::min(e.distinctPairs, static_cast<std::uint64_t>(share * double(e.distinctPairs) + 0.5));
   e.fixedBytes = e.boundaryPoints * kPointBytes;
