@@ -93,7 +93,9 @@ class CompressedTable {
   std::uint64_t entryCount() const { return entries_; }
   // The bitmap's words (a copy: they are held as the body's bytes).
   std::vector<std::uint64_t> words() const;
-  std::span<const std::uint8_t> payloads() const { return std::span(body_).subspan(bitmapBytes()); }
+  std::span<const std::uint8_t> payloads() const {
+    return std::span(body_).subspan(static_cast<std::size_t>(bitmapBytes()));
+  }
   std::uint64_t bitmapBytes() const { return wordCount_ * sizeof(std::uint64_t); }
   std::uint64_t rankBytes() const { return ranks_.size() * sizeof(std::uint32_t); }
   // Everything held: bitmap, rank directory, payloads.
