@@ -34,23 +34,26 @@ const char* povOperation(NodeDesc::Kind kind) {
 
 void PovObjectWriter::write(const NodeDesc& root, MaterialId inherited) { node(objects_, root, inherited, 0); }
 
-void PovObjectWriter::node(std::string& out, const NodeDesc& n, MaterialId inherited, int depth) {
+void PovObjectWriter::node(std::string& out, const NodeDesc& n, MaterialId inherited, int depth,
+                           const std::string& parentOrigin) {
   const MaterialId material = n.material.value_or(inherited);
-  if (n.kind == NodeDesc::Kind::Leaf) return leaf(out, n, material, depth);
+  const std::string& origin = n.origin.empty() ? parentOrigin : n.origin;
+  if (n.kind == NodeDesc::Kind::Leaf) return leaf(out, n, material, depth, origin);
   if (n.children.empty()) {  // an empty union is empty space: nothing to write
     out += fmt::format("{}// an empty set operation ({})\n", indent(depth), n.origin);
     return;
   }
   out += fmt::format("{}{} {{ // {}\n", indent(depth), povOperation(n.kind), n.origin);
-  for (const NodeDesc& child : n.children) node(out, child, material, depth + 1);
+  for (const NodeDesc& child : n.children) node(out, child, material, depth + 1, origin);
   if (!isIdentity(n.transform)) out += fmt::format("{}{}\n", indent(depth + 1), povMatrix(n.transform));
   out += fmt::format("{}}}\n", indent(depth));
 }
 
-void PovObjectWriter::leaf(std::string& out, const NodeDesc& n, MaterialId material, int depth) {
-  if (!n.leaf) throw Error(ErrorKind::Internal, fmt::format("{}: leaf node without a leaf description", n.origin));
+void PovObjectWriter::leaf(std::string& out, const NodeDesc& n, MaterialId material, int depth,
+                           const std::string& origin) {
+  const std::string where = origin.empty() ? source_.string() : origin;
+  if (!n.leaf) throw Error(ErrorKind::Internal, fmt::format("{}: leaf node without a leaf description", where));
   const std::optional<LeafShape> shape = n.leaf->shape();
-  const std::string where = n.origin.empty() ? source_.string() : n.origin;
   if (!shape)
     throw Error(ErrorKind::Input, fmt::format("{}: {} cannot be written for POV-Ray (its leaf type does not describe "
                                               "its shape); remove it from the scene or export another scene",

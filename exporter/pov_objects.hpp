@@ -26,8 +26,10 @@ class PovObjectWriter {
   const std::vector<std::string>& notes() const { return notes_; }
 
  private:
-  void node(std::string& out, const NodeDesc& node, MaterialId inherited, int depth);
-  void leaf(std::string& out, const NodeDesc& node, MaterialId material, int depth);
+  // `parentOrigin`: where the parent was defined, a node's own when it has none.
+  void node(std::string& out, const NodeDesc& node, MaterialId inherited, int depth,
+            const std::string& parentOrigin = {});
+  void leaf(std::string& out, const NodeDesc& node, MaterialId material, int depth, const std::string& origin);
   void quartic(std::string& out, const QuarticShape& shape, const std::string& modifiers, int depth);
   void tube(std::string& out, const std::vector<Vec3d>& points, double radius, const std::string& modifiers,
             int depth);

@@ -203,7 +203,7 @@ NodeDesc parseScatterNode(const toml::table& table, ParseContext& context, const
   instances.reserve(static_cast<std::size_t>(count));
   const std::string where = context.where(table);
   for (const Vec3d& p : fibonacciSphere(static_cast<int>(count))) {
-    NodeDesc instance = NodeDesc::makeLeaf(leaf, where);
+    NodeDesc instance = NodeDesc::makeLeaf(leaf);  // the union's origin is theirs (NodeDesc::origin)
     const Mat4d spin = glm::rotate(Mat4d(1.0), twist(random), Vec3d(0, 0, 1));
     instance.transform = glm::translate(Mat4d(1.0), p * radius) * alignZ(p) * spin;
     instances.push_back(std::move(instance));

@@ -59,16 +59,17 @@ std::string transformProblem(const Mat4d& m) {
 // Transforms are checked one node at a time as they are read; their products
 // down the tree (a squashed union holding a squashed child) are checked here,
 // at every leaf, naming the leaf.
-void checkComposedTransforms(const NodeDesc& node, const Mat4d& parentToWorld) {
+void checkComposedTransforms(const NodeDesc& node, const Mat4d& parentToWorld, const std::string& parentOrigin = {}) {
   const Mat4d toWorld = parentToWorld * node.transform;
+  const std::string& origin = node.origin.empty() ? parentOrigin : node.origin;
   if (node.kind == NodeDesc::Kind::Leaf) {
     const std::string problem = transformProblem(toWorld);
     if (!problem.empty())
-      throw Error(ErrorKind::Input, fmt::format("{}: with the transforms of the objects around it, {}", node.origin,
+      throw Error(ErrorKind::Input, fmt::format("{}: with the transforms of the objects around it, {}", origin,
                                                 problem));
     return;
   }
-  for (const NodeDesc& child : node.children) checkComposedTransforms(child, toWorld);
+  for (const NodeDesc& child : node.children) checkComposedTransforms(child, toWorld, origin);
 }
 
 Mat4d rotation(const Vec3d& axis, double degrees) {

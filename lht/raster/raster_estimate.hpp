@@ -11,7 +11,10 @@
 // how many boundary points lie on each combination of faces, and it bounds
 // the entries. kEstimateSamples of them, drawn uniformly by a fixed-seed
 // generator (so every run estimates the same), or all of them for a small
-// lattice, are traced by the rasterizer's own PairTracer.
+// lattice, are traced by the rasterizer's own PairTracer, grouped by entry
+// point so each point's pairs share one fan of the cover cull as the
+// rasterizer's do (lht/raster/cover_cull.hpp), instead of testing every
+// cover piece for every drawn pair.
 #include <array>
 #include <cstdint>
 

@@ -61,43 +61,48 @@ CompressedTable::CompressedTable(const RasterHits& hits, const std::array<int, 3
     }
     std::sort(order.begin(), order.end());
   }
-  words_.assign((bits_ + 63) / 64, 0);
-  payloads_.resize(order.size() * stride_);
+  wordCount_ = (bits_ + 63) / 64;
+  body_.assign(bitmapBytes() + order.size() * stride_, 0);
+  std::uint8_t* payloads = body_.data() + bitmapBytes();
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::uint64_t bit = symmetric ? order[k].first / 2 : order[k].first;
-    words_[bit / 64] |= std::uint64_t(1) << (bit % 64);
-    encodePayload(hits[order[k].second], precision_, payloads_.data() + k * stride_);
+    // Bit b of a little-endian word is bit b % 8 of its byte b / 8.
+    body_[bit / 8] |= static_cast<std::uint8_t>(1u << (bit % 8));
+    encodePayload(hits[order[k].second], precision_, payloads + k * stride_);
   }
   entries_ = hits.size();
   buildRanks();
 }
 
 CompressedTable::CompressedTable(const std::array<int, 3>& cells, LhtPrecision precision, PairLayout layout,
-                                 std::vector<std::uint64_t> words, std::vector<std::uint8_t> payloads,
-                                 std::uint64_t entries)
+                                 std::vector<std::uint8_t> body, std::uint64_t entries)
     : index_(cells), precision_(precision), layout_(layout), stride_(payloadBytes(precision)),
-      bits_(bitmapBits(cells, layout)), entries_(entries), words_(std::move(words)), payloads_(std::move(payloads)) {
-  if (words_.size() != (bits_ + 63) / 64)
-    throw Error(ErrorKind::Input, fmt::format("the compressed LHT's bitmap has {} words, its lattice needs {}",
-                                              words_.size(), (bits_ + 63) / 64));
-  if (payloads_.size() != entries_ * stride_)
-    throw Error(ErrorKind::Input, fmt::format("the compressed LHT holds {} payload bytes, {} entries need {}",
-                                              payloads_.size(), entries_, entries_ * stride_));
+      bits_(bitmapBits(cells, layout)), entries_(entries), wordCount_((bits_ + 63) / 64), body_(std::move(body)) {
+  if (body_.size() / stride_ < entries_ || body_.size() != bitmapBytes() + entries_ * stride_)
+    throw Error(ErrorKind::Input,
+                fmt::format("the compressed LHT's body has {} bytes, its {}-word bitmap and {} entries need {}",
+                            body_.size(), wordCount_, entries_, bitmapBytes() + entries_ * stride_));
   // Bits past the pair space would be pairs that do not exist.
-  if (bits_ % 64 != 0 && !words_.empty() && (words_.back() >> (bits_ % 64)) != 0)
+  if (bits_ % 64 != 0 && wordCount_ > 0 && (word(wordCount_ - 1) >> (bits_ % 64)) != 0)
     throw Error(ErrorKind::Input, "the compressed LHT's bitmap has bits set past its pair space");
   buildRanks();
 }
 
+std::vector<std::uint64_t> CompressedTable::words() const {
+  std::vector<std::uint64_t> out(wordCount_);
+  for (std::uint64_t w = 0; w < wordCount_; ++w) out[w] = word(w);
+  return out;
+}
+
 void CompressedTable::buildRanks() {
-  ranks_.assign((words_.size() + kBlockWords - 1) / kBlockWords, 0);
+  ranks_.assign((wordCount_ + kBlockWords - 1) / kBlockWords, 0);
   std::uint64_t count = 0;
-  for (std::size_t w = 0; w < words_.size(); ++w) {
+  for (std::uint64_t w = 0; w < wordCount_; ++w) {
     if (w % kBlockWords == 0) {
       if (count > 0xFFFFFFFFull) throw Error(ErrorKind::Input, "the compressed LHT has more than 2^32 set bits");
       ranks_[w / kBlockWords] = static_cast<std::uint32_t>(count);
     }
-    count += static_cast<std::uint64_t>(std::popcount(words_[w]));
+    count += static_cast<std::uint64_t>(std::popcount(word(w)));
   }
   const std::uint64_t expected = layout_ == PairLayout::Symmetric ? 2 * count : count;
   if (expected != entries_)
@@ -113,14 +118,14 @@ const std::uint8_t* CompressedTable::findPayload(const LatticePoint& in, const L
   const bool symmetric = layout_ == PairLayout::Symmetric;
   const std::uint64_t bit = symmetric ? (i < o ? triangle(i, o) : triangle(o, i)) : i * index_.count() + o;
   const std::uint64_t w = bit / 64;
-  const std::uint64_t word = words_[w];
-  const std::uint64_t below = word & ((std::uint64_t(1) << (bit % 64)) - 1);
-  if (!((word >> (bit % 64)) & 1)) return nullptr;
+  const std::uint64_t bits = word(w);
+  const std::uint64_t below = bits & ((std::uint64_t(1) << (bit % 64)) - 1);
+  if (!((bits >> (bit % 64)) & 1)) return nullptr;
   std::uint64_t rank = ranks_[w / kBlockWords];
-  for (std::uint64_t k = w & ~(kBlockWords - 1); k < w; ++k) rank += static_cast<std::uint64_t>(std::popcount(words_[k]));
+  for (std::uint64_t k = w & ~(kBlockWords - 1); k < w; ++k) rank += static_cast<std::uint64_t>(std::popcount(word(k)));
   rank += static_cast<std::uint64_t>(std::popcount(below));
   const std::uint64_t slot = symmetric ? 2 * rank + (i > o ? 1 : 0) : rank;
-  return payloads_.data() + slot * stride_;
+  return body_.data() + bitmapBytes() + slot * stride_;
 }
 
 std::optional<LhtHit> CompressedTable::find(const LatticePoint& in, const LatticePoint& out) const {
@@ -138,7 +143,7 @@ std::vector<std::string> CompressedTable::describe(std::uint64_t hits) const {
       fmt::format("table bytes:   {} ({:.2f} bytes/entry, {:.2f} per N_iz): bitmap {}, rank directory {}, payloads {} "
                   "({} bytes each)",
                   bytes(), bytesPerEntry(), hits ? double(bytes()) / double(hits) : 0.0, bitmapBytes(), rankBytes(),
-                  payloads_.size(), payloadBytes(precision_)),
+                  payloads().size(), payloadBytes(precision_)),
   };
 }
 
@@ -148,15 +153,14 @@ LhtBodyHeader CompressedTable::bodyHeader() const {
   h.precision = precision_;
   h.entries = entries_;
   h.countA = bits_;
-  h.countB = words_.size();
+  h.countB = wordCount_;
   h.layout = static_cast<std::uint16_t>(layout_);
   return h;
 }
 
 void CompressedTable::appendBody(std::vector<std::uint8_t>& out) const {
-  out.reserve(out.size() + bitmapBytes() + payloads_.size() + 8);
-  for (std::uint64_t word : words_) appendLittleEndian(out, word, 8);
-  out.insert(out.end(), payloads_.begin(), payloads_.end());
+  out.reserve(out.size() + body_.size() + 8);  // and the checksum after it
+  out.insert(out.end(), body_.begin(), body_.end());
 }
 
 std::uint64_t CompressedTable::bodyBytes(const LhtBodyHeader& h, std::uint64_t room) {
@@ -180,12 +184,7 @@ std::uint64_t CompressedTable::bodyBytes(const LhtBodyHeader& h, std::uint64_t r
 }
 
 CompressedTable CompressedTable::fromBody(const LhtBodyHeader& h, std::vector<std::uint8_t> body) {
-  std::vector<std::uint64_t> words(h.countB);
-  for (std::size_t w = 0; w < words.size(); ++w) words[w] = readLittleEndian(body.data() + 8 * w, 8);
-  std::vector<std::uint8_t> payloads(body.begin() + static_cast<std::ptrdiff_t>(8 * words.size()), body.end());
-  std::vector<std::uint8_t>().swap(body);
-  return CompressedTable(h.cells, h.precision, static_cast<PairLayout>(h.layout), std::move(words),
-                         std::move(payloads), h.entries);
+  return CompressedTable(h.cells, h.precision, static_cast<PairLayout>(h.layout), std::move(body), h.entries);
 }
 
 }  // namespace lattice::lht

@@ -19,15 +19,22 @@
 // * Payloads: payloadBytes(precision) each (4, 6 or 3 bytes), the entry
 //   precision's bits unchanged, in bit order; identical bytes to the hashed
 //   table's payloads, so pictures are identical.
+// * Held as the .lht body is laid out (the words little-endian, then the
+//   payloads) in one array, so reading a file adopts its body, and writing
+//   one copies it out.
 // * kMaxBitmapBits = 2^34 (2 GiB of bitmap): a pair space beyond it is
 //   refused, naming the lattice's size. The table 1 shapes need under 2^23.
 #include <array>
+#include <bit>
 #include <cstdint>
+#include <cstring>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "foundation/little_endian.hpp"
 #include "lht/grid/boundary_index.hpp"
 #include "lht/table/entry_codec.hpp"
 #include "lht/table/lht_form.hpp"
@@ -64,13 +71,15 @@ class CompressedTable {
   static constexpr std::uint64_t kBlockWords = 8;  // rank directory granularity (512 bits)
 
   // An empty table of a one-cell box (28 pair bits, one word).
-  CompressedTable() : CompressedTable({1, 1, 1}, LhtPrecision::Thesis, PairLayout::Symmetric, {0}, {}, 0) {}
+  CompressedTable()
+      : CompressedTable({1, 1, 1}, LhtPrecision::Thesis, PairLayout::Symmetric, std::vector<std::uint8_t>(8, 0), 0) {}
   // From rasterized hits (distinct keys, all on the box's surface) of a box of `cells`.
   CompressedTable(const RasterHits& hits, const std::array<int, 3>& cells, LhtPrecision precision);
-  // Adopts a file's bitmap words and payload bytes; throws lattice::Error(Input)
-  // when their sizes or the number of set bits disagree with `entries`.
+  // Adopts a file's body (the bitmap's words, little-endian, then the
+  // payloads) as it is, without a copy; throws lattice::Error(Input) when its
+  // size or the number of set bits disagrees with `entries`.
   CompressedTable(const std::array<int, 3>& cells, LhtPrecision precision, PairLayout layout,
-                  std::vector<std::uint64_t> words, std::vector<std::uint8_t> payloads, std::uint64_t entries);
+                  std::vector<std::uint8_t> body, std::uint64_t entries);
 
   // The bits of the pair space of a box (throws Error(Input) above kMaxBitmapBits).
   static std::uint64_t bitmapBits(const std::array<int, 3>& cells, PairLayout layout);
@@ -82,16 +91,29 @@ class CompressedTable {
   LhtPrecision precision() const { return precision_; }
   PairLayout layout() const { return layout_; }
   std::uint64_t entryCount() const { return entries_; }
-  const std::vector<std::uint64_t>& words() const { return words_; }
-  const std::vector<std::uint8_t>& payloads() const { return payloads_; }
-  std::uint64_t bitmapBytes() const { return words_.size() * sizeof(std::uint64_t); }
+  // The bitmap's words (a copy: they are held as the body's bytes).
+  std::vector<std::uint64_t> words() const;
+  std::span<const std::uint8_t> payloads() const {
+    return std::span(body_).subspan(static_cast<std::size_t>(bitmapBytes()));
+  }
+  std::uint64_t bitmapBytes() const { return wordCount_ * sizeof(std::uint64_t); }
   std::uint64_t rankBytes() const { return ranks_.size() * sizeof(std::uint32_t); }
   // Everything held: bitmap, rank directory, payloads.
-  std::uint64_t bytes() const { return bitmapBytes() + rankBytes() + payloads_.size(); }
+  std::uint64_t bytes() const { return rankBytes() + body_.size(); }
   double bytesPerEntry() const { return entries_ ? double(bytes()) / double(entries_) : 0.0; }
 
  private:
   void buildRanks();
+  // Bitmap word w, from its little-endian bytes (one load on a little-endian host).
+  std::uint64_t word(std::uint64_t w) const {
+    if constexpr (std::endian::native == std::endian::little) {
+      std::uint64_t value;
+      std::memcpy(&value, body_.data() + 8 * w, sizeof value);
+      return value;
+    } else {
+      return readLittleEndian(body_.data() + 8 * w, 8);
+    }
+  }
 
   BoundaryIndex index_;
   LhtPrecision precision_;
@@ -99,9 +121,13 @@ class CompressedTable {
   std::size_t stride_;
   std::uint64_t bits_ = 0;
   std::uint64_t entries_ = 0;
-  std::vector<std::uint64_t> words_;
+  std::uint64_t wordCount_ = 0;
+  // The .lht body itself: the bitmap's words, little-endian, then the
+  // payloads. One array, so a table read from a file adopts the bytes read
+  // instead of copying them: the copy beside the body was a peak of a
+  // render from a cache (docs/memory.md).
+  std::vector<std::uint8_t> body_;
   std::vector<std::uint32_t> ranks_;  // set bits before each block of kBlockWords words
-  std::vector<std::uint8_t> payloads_;
 };
 
 }  // namespace lattice::lht

@@ -34,16 +34,16 @@ Bvh<T>::Bvh(const std::vector<Bounds<T>>& boxes) {
       throw Error(ErrorKind::Internal, "BVH built over an empty or infinite box; the union must keep those apart");
   items_.resize(boxes.size());
   std::iota(items_.begin(), items_.end(), 0u);
-  std::vector<Bounds<T>> centroids(boxes.size());
-  for (std::size_t n = 0; n < boxes.size(); ++n) {
-    centroids[n].lo = centroids[n].hi = boxes[n].center();
-  }
+  // Points, not boxes of zero size: half the bytes while the tree is built,
+  // the build's peak on a 5000-instance scatter (docs/memory.md).
+  std::vector<Vec3<T>> centroids(boxes.size());
+  for (std::size_t n = 0; n < boxes.size(); ++n) centroids[n] = boxes[n].center();
   nodes_.reserve(2 * boxes.size());
   build(centroids, boxes, 0, static_cast<std::uint32_t>(boxes.size()), 1);
 }
 
 template <typename T>
-std::uint32_t Bvh<T>::build(std::vector<Bounds<T>>& centroids, const std::vector<Bounds<T>>& boxes,
+std::uint32_t Bvh<T>::build(const std::vector<Vec3<T>>& centroids, const std::vector<Bounds<T>>& boxes,
                             std::uint32_t begin, std::uint32_t end, int depth) {
   depth_ = std::max(depth_, depth);
   const std::uint32_t index = static_cast<std::uint32_t>(nodes_.size());
@@ -76,7 +76,7 @@ std::uint32_t Bvh<T>::build(std::vector<Bounds<T>>& centroids, const std::vector
     Bin bins[kBins];
     const double lo = double(cbox.lo[axis]), scale = kBins / (double(cbox.hi[axis]) - lo);
     auto binOf = [&](std::uint32_t item) {
-      int b = static_cast<int>((double(centroids[item].lo[axis]) - lo) * scale);
+      int b = static_cast<int>((double(centroids[item][axis]) - lo) * scale);
       return std::clamp(b, 0, kBins - 1);
     };
     for (std::uint32_t n = begin; n < end; ++n) {
@@ -121,7 +121,7 @@ std::uint32_t Bvh<T>::build(std::vector<Bounds<T>>& centroids, const std::vector
     // are too many items for a leaf: split at the median.
     mid = begin + count / 2;
     std::nth_element(items_.data() + begin, items_.data() + mid, items_.data() + end,
-                     [&](std::uint32_t l, std::uint32_t r) { return centroids[l].lo[axis] < centroids[r].lo[axis]; });
+                     [&](std::uint32_t l, std::uint32_t r) { return centroids[l][axis] < centroids[r][axis]; });
   }
   build(centroids, boxes, begin, mid, depth + 1);
   std::uint32_t right = build(centroids, boxes, mid, end, depth + 1);

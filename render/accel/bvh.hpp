@@ -149,7 +149,7 @@ class Bvh {
   static constexpr int kMaxDepth = 60;
 
  private:
-  std::uint32_t build(std::vector<Bounds<T>>& centroids, const std::vector<Bounds<T>>& boxes, std::uint32_t begin,
+  std::uint32_t build(const std::vector<Vec3<T>>& centroids, const std::vector<Bounds<T>>& boxes, std::uint32_t begin,
                       std::uint32_t end, int depth);
 
   // A built tree's own arrays, or the view's (never both).

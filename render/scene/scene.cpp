@@ -55,15 +55,18 @@ MaterialId SceneDesc::addMaterial(const std::string& name, const Material<double
 
 namespace {
 
+const std::string kUnplaced = "scene";  // the root's place when it has none
+
 // Node: const NodeDesc (the tree is kept) or NodeDesc (each set operation's
 // operand descriptions are released once its operands are built).
 template <typename T, typename Node>
-PrimitivePtr<T> buildNode(Node& node, const Mat4d& parentToWorld, const BuildOptions& options, MaterialId inherited) {
+PrimitivePtr<T> buildNode(Node& node, const Mat4d& parentToWorld, const BuildOptions& options, MaterialId inherited,
+                          const std::string& parentWhere) {
   // Fig. 4: transforms on inner nodes are pushed down, so each leaf gets the
   // full object -> world matrix and the set operations hold none.
   const Mat4d toWorld = parentToWorld * node.transform;
   const MaterialId material = node.material.value_or(inherited);
-  const std::string where = node.origin.empty() ? std::string("scene") : node.origin;
+  const std::string& where = node.origin.empty() ? parentWhere : node.origin;
   if (node.kind == NodeDesc::Kind::Leaf) {
     if (!node.leaf) throw Error(ErrorKind::Internal, fmt::format("{}: leaf node without a leaf description", where));
     // Scene files are held to the limit of every arithmetic when loaded; an
@@ -88,7 +91,7 @@ PrimitivePtr<T> buildNode(Node& node, const Mat4d& parentToWorld, const BuildOpt
     throw Error(ErrorKind::Input, fmt::format("{}: a set operation needs at least one child object", where));
   std::vector<PrimitivePtr<T>> children;
   children.reserve(node.children.size());
-  for (Node& child : node.children) children.push_back(buildNode<T>(child, toWorld, options, material));
+  for (Node& child : node.children) children.push_back(buildNode<T>(child, toWorld, options, material, where));
   if constexpr (!std::is_const_v<Node>) std::vector<NodeDesc>().swap(node.children);  // before the BVH's build
   // A set operation of one operand is that operand; skipping the node saves
   // a span merge per ray.
@@ -104,12 +107,12 @@ PrimitivePtr<T> buildNode(Node& node, const Mat4d& parentToWorld, const BuildOpt
 template <typename T>
 PrimitivePtr<T> buildPrimitive(const NodeDesc& node, const Mat4d& parentToWorld, const BuildOptions& options,
                                MaterialId inherited) {
-  return buildNode<T>(node, parentToWorld, options, inherited);
+  return buildNode<T>(node, parentToWorld, options, inherited, kUnplaced);
 }
 template <typename T>
 PrimitivePtr<T> buildPrimitive(NodeDesc&& node, const Mat4d& parentToWorld, const BuildOptions& options,
                                MaterialId inherited) {
-  return buildNode<T>(node, parentToWorld, options, inherited);
+  return buildNode<T>(node, parentToWorld, options, inherited, kUnplaced);
 }
 
 #define LATTICE_INSTANTIATE(T)                                                                            \

@@ -128,7 +128,9 @@ struct NodeDesc {
   // Unset: inherited from the nearest ancestor that has one (the scene's
   // "default" material, id 0, at the root).
   std::optional<MaterialId> material;
-  // Where the node was defined ("scene.toml:12:3"), for messages.
+  // Where the node was defined ("scene.toml:12:3"), for messages; empty:
+  // where its parent was (a scatter's instances share their union's, held
+  // once instead of in each of thousands of nodes).
   std::string origin;
 
   static NodeDesc makeLeaf(LeafDescPtr leafDesc, std::string where = {});

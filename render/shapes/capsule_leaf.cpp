@@ -35,19 +35,38 @@ class CapsuleLeaf final : public Primitive<T> {
   const Bounds<T>& bounds() const override { return bounds_; }
 
   void spans(const Ray<T>& worldRay, T tmin, T tmax, SpanList<T>& out) const override {
+    Interval<T> whole;
+    if (!crossing(worldRay, tmin, tmax, whole)) return;
+    out.push_back({{whole.enter, toWorld(whole.enterNormal), material_}, {whole.leave, toWorld(whole.leaveNormal), material_}});
+  }
+
+  // What the default reads from spans(), without the span list or the leave's
+  // normal: a union asks its children for this (the rasterizer's hair traces).
+  bool firstEnter(const Ray<T>& worldRay, T tmin, T tmax, Hit<T>& hit, bool& inside) const override {
+    Interval<T> whole;
+    if (!crossing(worldRay, tmin, tmax, whole)) return false;
+    if (whole.enter <= tmin) {
+      inside = true;
+      return false;
+    }
+    hit = {whole.enter, toWorld(whole.enterNormal), material_};
+    return true;
+  }
+
+ private:
+  // The line's one interval through the capsule, if it overlaps (tmin, tmax).
+  bool crossing(const Ray<T>& worldRay, T tmin, T tmax, Interval<T>& whole) const {
     T c0, c1;
-    if (!bounds_.clip(worldRay, tmin, tmax, c0, c1)) return;
+    if (!bounds_.clip(worldRay, tmin, tmax, c0, c1)) return false;
     const Ray<T> ray = worldRay.transformed(worldToObject_);  // t is kept
-    Interval<T> whole = ball(ray, T(0));
+    whole = ball(ray, T(0));
     if (length_ > T(0)) {  // else a sphere
       widen(whole, ball(ray, length_));
       widen(whole, body(ray));
     }
-    if (whole.empty() || whole.leave <= tmin || whole.enter >= tmax) return;
-    out.push_back({{whole.enter, toWorld(whole.enterNormal), material_}, {whole.leave, toWorld(whole.leaveNormal), material_}});
+    return !(whole.empty() || whole.leave <= tmin || whole.enter >= tmax);
   }
 
- private:
   // The ball of radius r about (0, 0, z).
   Interval<T> ball(const Ray<T>& ray, T z) const {
     Interval<T> part;

@@ -139,6 +139,18 @@ TEST_CASE("exporter: CSG stays CSG, closed forms are POV's own, a lattice is dec
   CHECK(count(swept, "cylinder {") == 0);
 }
 
+TEST_CASE("exporter: a scatter's instances hold no place of their own and are written with the scatter's") {
+  const SceneDesc scene = lht::parseSceneWithLattices(kScene, "test.toml").scene;
+  const NodeDesc* scatter = nullptr;
+  for (const NodeDesc& object : scene.root.children)
+    if (object.children.size() == 3) scatter = &object;
+  REQUIRE(scatter);
+  CHECK(scatter->origin == "test.toml:35:1");
+  // One copy of the place, not one per instance (thousands on Plate 7).
+  for (const NodeDesc& instance : scatter->children) CHECK(instance.origin.empty());
+  CHECK_THAT(exportText(kScene).text, Catch::Contains("// lattice 'hair' (test.toml:35:1) as its exact object"));
+}
+
 TEST_CASE("exporter: what POV-Ray cannot express is refused, naming the file and line") {
   std::string negativeK = kScene;
   negativeK.replace(negativeK.find("K = 0.5"), 7, "K = -0.5");

@@ -3,6 +3,7 @@
 // .lht version 3 with the bounded reader's checks.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 
@@ -110,6 +111,21 @@ TEST_CASE("compressed LHT: a hit list that is not symmetric gets the ordered lay
   checkSameAnswers(hashed, back);
 }
 
+TEST_CASE("compressed LHT: a table read from its body holds those bytes, not a copy of them") {
+  const Raster r = rasterizeShape(capsuleObject(0.5, 10.0), 1.0);
+  const LhtFile file = fileOf(r, LhtForm::Compressed, LhtPrecision::Thesis);
+  const CompressedTable& built = file.compressed();
+  std::vector<std::uint8_t> body;
+  built.appendBody(body);
+  const std::uint8_t* bytes = body.data();
+  const CompressedTable read = CompressedTable::fromBody(built.bodyHeader(), std::move(body));
+  // The payloads sit where the body put them, after the bitmap's words.
+  CHECK(read.payloads().data() == bytes + built.bitmapBytes());
+  CHECK(read.bytes() == built.bytes());
+  CHECK(read.words() == built.words());
+  CHECK(std::ranges::equal(read.payloads(), built.payloads()));
+}
+
 TEST_CASE("compressed LHT: version-3 files round-trip, version 2 is refused") {
   const Raster r = rasterizeShape(capsuleObject(0.5, 10.0), 1.0);
   for (const LhtPrecisionInfo& p : kLhtPrecisions) {
@@ -122,12 +138,12 @@ TEST_CASE("compressed LHT: version-3 files round-trip, version 2 is refused") {
     CHECK(back.version == kLhtCompressedVersion);
     CHECK(back.form() == LhtForm::Compressed);
     CHECK(back.compressed().words() == compressed.compressed().words());
-    CHECK(back.compressed().payloads() == compressed.compressed().payloads());
+    CHECK(std::ranges::equal(back.compressed().payloads(), compressed.compressed().payloads()));
     CHECK(back.hits == compressed.hits);
     const lattice::testing::TempDir dir("lht-v3");
     writeLhtFile(dir / "c.lht", compressed);
     const LhtFile streamed = readLhtFile(dir / "c.lht", 42, p.precision, LhtForm::Compressed);
-    CHECK(streamed.compressed().payloads() == compressed.compressed().payloads());
+    CHECK(std::ranges::equal(streamed.compressed().payloads(), compressed.compressed().payloads()));
     // Asked for the other form: refused, saying which.
     try {
       parseLht(bytes, "c.lht", 42, p.precision, LhtForm::Hashed);

@@ -48,6 +48,13 @@ TEST_CASE("raster estimate: a sampled lattice's hits within a few per cent, the 
     CHECK(e.distinctPairs == raster.stats.distinctPairs);
     CHECK(std::abs(double(e.hits) - double(raster.hits.size())) <= 0.05 * double(raster.hits.size()));
     CHECK(estimateRaster(box, object, 0).hits == e.hits);
+    // The cover's cull (one fan per entry point) only skips certain misses:
+    // without a cover every drawn pair is traced, and the same ones hit.
+    LatticeObject uncovered = object;
+    uncovered.cover.reset();
+    const RasterEstimate traced = estimateRaster(box, uncovered, 0);
+    CHECK(traced.sampled == e.sampled);
+    CHECK(traced.sampledHits == e.sampledHits);
   }
 }
 

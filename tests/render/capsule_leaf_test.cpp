@@ -82,3 +82,43 @@ TEMPLATE_TEST_CASE("the closed-form capsule gives the quartic capsule's spans", 
     CHECK(c.grazes <= 4);
   }
 }
+
+TEMPLATE_TEST_CASE("the capsule's first enter is what its spans give, bit for bit", "[shapes][capsule]", float, double) {
+  // A union asks its children for firstEnter; the capsule answers it without
+  // a span list, and must answer as Primitive's default reads spans().
+  using T = TestType;
+  const Mat4d m =
+      glm::translate(Mat4d(1), Vec3d(0.5, -1, 2)) * glm::rotate(Mat4d(1), 0.7, glm::normalize(Vec3d(1, 2, 0.5)));
+  for (const double length : {2.0, 0.0}) {
+    auto capsule = makeCapsule<T>(0.4, length, m, 3);
+    const Vec3d a = Vec3d(m * glm::dvec4(0, 0, 0, 1)), b = Vec3d(m * glm::dvec4(0, 0, length, 1));
+    std::mt19937 rng(31);
+    std::uniform_real_distribution<double> along(0.0, 1.0);
+    int enters = 0, insides = 0;
+    for (int n = 0; n < 3000; ++n) {
+      // A third of the rays start inside the capsule (near its axis), the
+      // rest aim at it from afar; a fifth end before they reach it.
+      const Vec3d target = (a + b) * 0.5 + randomUnit(rng) * 0.9;
+      const Vec3d o = n % 3 == 0 ? a + (b - a) * along(rng) + randomUnit(rng) * 0.2 : target + randomUnit(rng) * 6.0;
+      const Ray<T> ray = makeRay<T>(o, n % 3 == 0 ? randomUnit(rng) : glm::normalize(target - o));
+      const T tmax = T(n % 5 == 0 ? 5.5 : 100.0);
+      Hit<T> hit;
+      bool inside = false;
+      const bool entered = capsule->firstEnter(ray, T(0), tmax, hit, inside);
+      SpanList<T> list;
+      capsule->spans(ray, T(0), tmax, list);
+      const bool expectInside = !list.empty() && list[0].enter.t <= T(0);
+      const bool expectEnter = !list.empty() && !expectInside && list[0].enter.t < tmax;
+      REQUIRE(entered == expectEnter);
+      REQUIRE(inside == expectInside);
+      if (inside) ++insides;
+      if (!entered) continue;
+      CHECK(hit.t == list[0].enter.t);
+      CHECK(hit.normal == list[0].enter.normal);
+      CHECK(hit.material == list[0].enter.material);
+      ++enters;
+    }
+    CHECK(enters > 100);
+    CHECK(insides > 500);
+  }
+}

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "foundation/error.hpp"
 #include "render/shapes/quartic.hpp"
 #include "render/scene/scene.hpp"
 #include "render/shapes/quartic_presets.hpp"
@@ -51,4 +52,30 @@ TEST_CASE("leaves: one template build serves every arithmetic") {
   REQUIRE(built->firstHit(Ray<double>{Vec3d(2, 0, -5), Vec3d(0, 0, 1)}, 0.0, 100.0, hit));
   CHECK(hit.t == Approx(4.0));
   CHECK(hit.material == 3);
+}
+
+namespace {
+
+class FailingLeaf final : public LeafTemplate<FailingLeaf> {
+ public:
+  template <typename T>
+  PrimitivePtr<T> buildAs(const Mat4d&, MaterialId, const BuildOptions&) const {
+    throw Error(ErrorKind::Input, "cannot be built");
+  }
+  Bounds<double> objectBounds() const override { return {Vec3d(-1.0), Vec3d(1.0)}; }
+  std::string describe() const override { return "failing leaf"; }
+};
+
+}  // namespace
+
+TEST_CASE("leaves: a leaf without a place of its own is named by its parent's") {
+  // A scatter's instances hold no origin: the union's is theirs (NodeDesc::origin).
+  std::vector<NodeDesc> instances;
+  instances.push_back(NodeDesc::makeLeaf(std::make_shared<FailingLeaf>()));
+  instances.push_back(NodeDesc::makeLeaf(std::make_shared<FailingLeaf>()));
+  const NodeDesc scatter = NodeDesc::makeOperation(NodeDesc::Kind::Union, std::move(instances), "hairs.toml:12:1");
+  CHECK_THROWS_WITH(buildPrimitive<double>(scatter, Mat4d(1.0), BuildOptions{}), "hairs.toml:12:1: cannot be built");
+  // With no place anywhere, the scene is named.
+  CHECK_THROWS_WITH(buildPrimitive<double>(scatter.children[0], Mat4d(1.0), BuildOptions{}),
+                    "scene: cannot be built");
 }
