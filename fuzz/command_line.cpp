@@ -12,7 +12,8 @@
 //   picks a flag of it, and the flag's value comes from the next bytes: a
 //   number from the number pool for numeric flags (in-range values kept
 //   small so a legal render or rasterization stays cheap, and every kind of
-//   number the parser must refuse), or for others a pool word, a scratch
+//   number the parser must refuse), one of the names a flag's check lists
+//   (its settings table's choices and unset word), or for others a pool word, a scratch
 //   file, a `--set` key=value, or up to 12 raw bytes of the input. A 0xFF
 //   byte ends the argv; the bytes after it are the input file (@in).
 // * Files: a scratch directory per process holds @in (the input's tail), a
@@ -43,6 +44,7 @@
 #include <string>
 #include <vector>
 
+#include "app/cli/help_export.hpp"
 #include "app/commands/run_lattice.hpp"
 #include "devices/device_table.hpp"
 #include "foundation/error.hpp"
@@ -58,6 +60,7 @@ struct Command {
     std::string name;  // "--width"
     bool numeric = false;
     bool takesValue = true;
+    std::vector<std::string> values;  // the names it takes, where its check lists them
   };
   std::vector<Flag> flags;
   std::vector<std::string> positionals;  // how many positional words it takes, named
@@ -92,7 +95,8 @@ void collect(CLI::App& app, std::vector<std::string> path, std::vector<Command>&
       if (name == "--help" || name == "--wait" || name == "--baud") continue;
       const std::string type = option->get_type_name();
       const std::string base = type.substr(0, type.find(':'));
-      command.flags.push_back({name, base == "INT" || base == "UINT" || base == "FLOAT", option->get_expected_max() > 0});
+      command.flags.push_back({name, base == "INT" || base == "UINT" || base == "FLOAT", option->get_expected_max() > 0,
+                               app::flagValueNames(*option)});
     }
     if (sub->get_subcommands([](const CLI::App*) { return true; }).empty()) out.push_back(command);
     collect(*sub, here, out);
@@ -186,6 +190,7 @@ void commandLine(std::span<const std::uint8_t> bytes) {
     else if (flag.name == "--set") argv.push_back(table.setItems[(how * 256u + in.next()) % table.setItems.size()]);
     else if (flag.name == "--port") argv.push_back(how % 2 ? "virtual:tek4125" : "/nonexistent/port");
     else if (flag.name == "--scene") argv.push_back(files[1]);
+    else if (!flag.values.empty() && how < 64) argv.push_back(flag.values[how % flag.values.size()]);
     else if (how < 96) argv.push_back(kWords[how % std::size(kWords)]);
     else if (how < 160) argv.push_back(files[how % std::size(files)]);
     else argv.push_back(in.raw());

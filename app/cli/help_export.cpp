@@ -74,10 +74,20 @@ void describeCommand(std::string& page, const CLI::App& command, const std::stri
   for (const CLI::App* sub : subcommandsOf(command)) describeCommand(page, *sub, path + " " + sub->get_name());
 }
 
-// The names a flag takes, where its check lists them: CLI11 writes an
-// IsMember check into the type name as "TEXT:{a,b,c}" (the settings tables'
-// choices reach it so, app/cli/setting_flags.hpp).
-std::vector<std::string> valueNames(const CLI::Option& option) {
+// `case "$prev" in` arms completing the values of `command`'s flags that name them.
+std::string valueArms(const CLI::App& command) {
+  std::string arms;
+  for (const CLI::Option* option : command.get_options()) {
+    const std::vector<std::string> names = flagValueNames(*option);
+    if (names.empty() || option->get_lnames().empty()) continue;
+    arms += fmt::format("        --{}) values=\"{}\" ;;\n", option->get_lnames().front(), fmt::join(names, " "));
+  }
+  return arms;
+}
+
+}  // namespace
+
+std::vector<std::string> flagValueNames(const CLI::Option& option) {
   const std::string type = option.get_type_name();
   const std::size_t open = type.find('{'), close = type.find('}', open);
   std::vector<std::string> names;
@@ -94,19 +104,6 @@ std::vector<std::string> valueNames(const CLI::Option& option) {
   names.push_back(name);
   return names;
 }
-
-// `case "$prev" in` arms completing the values of `command`'s flags that name them.
-std::string valueArms(const CLI::App& command) {
-  std::string arms;
-  for (const CLI::Option* option : command.get_options()) {
-    const std::vector<std::string> names = valueNames(*option);
-    if (names.empty() || option->get_lnames().empty()) continue;
-    arms += fmt::format("        --{}) values=\"{}\" ;;\n", option->get_lnames().front(), fmt::join(names, " "));
-  }
-  return arms;
-}
-
-}  // namespace
 
 std::string manPage(const CLI::App& root, const std::string& version) {
   std::string page = fmt::format(".TH LATTICE 1 \"\" \"lattice {}\" \"User Commands\"\n", roff(version));

@@ -7,10 +7,20 @@
 // command line is parsed) and `cmake --install` installs them.
 
 #include <string>
+#include <vector>
 
 #include "app/cli/cli_forward.hpp"
 
+namespace CLI {
+class Option;
+}  // namespace CLI
+
 namespace lattice::app {
+
+// The names a flag takes, where its check lists them (CLI11 writes an
+// IsMember check into the type name, "TEXT:{a,b,c}"; the settings tables'
+// choices reach it so): what completion offers and the CLI fuzzer tries.
+std::vector<std::string> flagValueNames(const CLI::Option& option);
 
 std::string manPage(const CLI::App& root, const std::string& version);
 std::string bashCompletion(const CLI::App& root);
