@@ -1,0 +1,148 @@
+// The oriented-box cull of a BVH leaf's items (method and why:
+// render/accel/oriented_cull.hpp): the scalar reference, the AVX2 lanes for
+// double, and the choice between them made once per process.
+#include "render/accel/oriented_cull.hpp"
+
+#include <atomic>
+#include <limits>
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
+namespace lattice {
+
+namespace {
+
+std::atomic<CullPath> forcedPath{CullPath::Auto};
+
+bool cpuHasAvx2() {
+#if defined(__x86_64__)
+  static const bool has = __builtin_cpu_supports("avx2");
+  return has;
+#else
+  return false;
+#endif
+}
+
+#if defined(__x86_64__)
+// Four positions from `first`: the scalar reference's operations lane by lane
+// (no fused multiply-add: "fma" is not among the targets).
+__attribute__((target("avx2"))) unsigned keep4Avx2(const double* data, std::size_t stride, std::uint32_t first,
+                                                    const Ray<double>& ray, double tmin, double tmax) {
+  const double* base = data + first;
+#define LATTICE_ROW(r) _mm256_loadu_pd(base + std::size_t(r) * stride)  // a lambda would need the target too
+  const __m256d ox = _mm256_set1_pd(ray.origin.x), oy = _mm256_set1_pd(ray.origin.y),
+                oz = _mm256_set1_pd(ray.origin.z);
+  const __m256d dx = _mm256_set1_pd(ray.direction.x), dy = _mm256_set1_pd(ray.direction.y),
+                dz = _mm256_set1_pd(ray.direction.z);
+  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+  __m256d t0 = _mm256_set1_pd(-std::numeric_limits<double>::infinity());
+  __m256d t1 = _mm256_set1_pd(std::numeric_limits<double>::infinity());
+  __m256d reject = zero;
+  for (int a = 0; a < 3; ++a) {
+    const __m256d c0 = LATTICE_ROW(a), c1 = LATTICE_ROW(3 + a), c2 = LATTICE_ROW(6 + a), c3 = LATTICE_ROW(9 + a),
+                  extent = LATTICE_ROW(12 + a);
+    const __m256d o = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(c0, ox), _mm256_mul_pd(c1, oy)),
+                                    _mm256_add_pd(_mm256_mul_pd(c2, oz), c3));
+    const __m256d d = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(c0, dx), _mm256_mul_pd(c1, dy)), _mm256_mul_pd(c2, dz));
+    const __m256d flat = _mm256_cmp_pd(d, zero, _CMP_EQ_OQ);
+    const __m256d outside = _mm256_or_pd(_mm256_cmp_pd(o, zero, _CMP_LT_OQ), _mm256_cmp_pd(o, extent, _CMP_GT_OQ));
+    reject = _mm256_or_pd(reject, _mm256_and_pd(flat, outside));
+    const __m256d inv = _mm256_div_pd(one, d);
+    const __m256d toLow = _mm256_mul_pd(_mm256_sub_pd(zero, o), inv);
+    const __m256d toHigh = _mm256_mul_pd(_mm256_sub_pd(extent, o), inv);
+    const __m256d swap = _mm256_cmp_pd(toLow, toHigh, _CMP_GT_OQ);
+    const __m256d ta = _mm256_blendv_pd(toLow, toHigh, swap), tb = _mm256_blendv_pd(toHigh, toLow, swap);
+    // A flat axis leaves the interval as it is (the scalar clip skips it).
+    t0 = _mm256_blendv_pd(t0, ta, _mm256_andnot_pd(flat, _mm256_cmp_pd(ta, t0, _CMP_GT_OQ)));
+    t1 = _mm256_blendv_pd(t1, tb, _mm256_andnot_pd(flat, _mm256_cmp_pd(tb, t1, _CMP_LT_OQ)));
+  }
+#undef LATTICE_ROW
+  // The leaf's chord test: t1 > t0, not ending by tmin, not starting at tmax.
+  const __m256d chord = _mm256_cmp_pd(t1, t0, _CMP_GT_OQ);
+  const __m256d before = _mm256_cmp_pd(t1, _mm256_set1_pd(tmin), _CMP_LE_OQ);
+  const __m256d after = _mm256_cmp_pd(t0, _mm256_set1_pd(tmax), _CMP_GE_OQ);
+  const __m256d dropped = _mm256_or_pd(_mm256_or_pd(reject, before), after);
+  return static_cast<unsigned>(_mm256_movemask_pd(_mm256_andnot_pd(dropped, chord)));
+}
+#endif
+
+}  // namespace
+
+void setCullPath(CullPath path) { forcedPath.store(path, std::memory_order_relaxed); }
+
+CullPath activeCullPath() {
+  const CullPath forced = forcedPath.load(std::memory_order_relaxed);
+  if (forced == CullPath::Portable || forced == CullPath::None) return forced;
+  return cpuHasAvx2() ? CullPath::Avx2 : CullPath::None;
+}
+
+template <typename T>
+OrientedCull<T>::OrientedCull(const std::vector<OrientedBox<T>>& boxes, const std::vector<bool>& has)
+    : positions_(static_cast<std::uint32_t>(boxes.size())), stride_(boxes.size() + 4),
+      data_(std::size_t(kRows) * (boxes.size() + 4), T(0)), has_(boxes.size() + 4, 0), path_(activeCullPath()) {
+  for (std::size_t p = 0; p < boxes.size(); ++p) {
+    if (!has[p]) continue;
+    has_[p] = 1;
+    for (int c = 0; c < 4; ++c)
+      for (int a = 0; a < 3; ++a) data_[std::size_t(3 * c + a) * stride_ + p] = boxes[p].column[c][a];
+    for (int a = 0; a < 3; ++a) data_[std::size_t(12 + a) * stride_ + p] = boxes[p].extent[a];
+  }
+}
+
+template <typename T>
+bool OrientedCull<T>::keepOne(std::uint32_t p, const Ray<T>& ray, T tmin, T tmax) const {
+  if (!has_[p]) return true;
+  T o[3], d[3];
+  for (int a = 0; a < 3; ++a) {
+    const T c0 = row(a)[p], c1 = row(3 + a)[p], c2 = row(6 + a)[p], c3 = row(9 + a)[p];
+    o[a] = (c0 * ray.origin.x + c1 * ray.origin.y) + (c2 * ray.origin.z + c3);
+    d[a] = (c0 * ray.direction.x + c1 * ray.direction.y) + c2 * ray.direction.z;
+  }
+  T t0 = -std::numeric_limits<T>::infinity(), t1 = std::numeric_limits<T>::infinity();
+  for (int a = 0; a < 3; ++a) {
+    const T extent = row(12 + a)[p];
+    if (d[a] == T(0)) {
+      if (o[a] < T(0) || o[a] > extent) return false;
+      continue;
+    }
+    const T inv = T(1) / d[a];
+    const T toLow = (T(0) - o[a]) * inv, toHigh = (extent - o[a]) * inv;
+    const bool swap = toLow > toHigh;
+    const T ta = swap ? toHigh : toLow, tb = swap ? toLow : toHigh;
+    t0 = ta > t0 ? ta : t0;
+    t1 = tb < t1 ? tb : t1;
+    if (t0 > t1) return false;
+  }
+  if (!(t1 > t0)) return false;
+  return !(t1 <= tmin || t0 >= tmax);
+}
+
+template <typename T>
+unsigned OrientedCull<T>::keepEach(std::uint32_t first, std::uint32_t count, const Ray<T>& ray, T tmin, T tmax) const {
+  unsigned mask = 0;
+  for (std::uint32_t k = 0; k < count; ++k)
+    if (keepOne(first + k, ray, tmin, tmax)) mask |= 1u << k;
+  return mask;
+}
+
+template <typename T>
+unsigned OrientedCull<T>::keepLanes(std::uint32_t first, std::uint32_t count, const Ray<T>& ray, T tmin, T tmax) const {
+  const unsigned all = (1u << count) - 1u;
+#if defined(__x86_64__)
+  if constexpr (std::is_same_v<T, double>) {
+    unsigned boxless = 0;  // positions without a box are always kept
+    for (std::uint32_t k = 0; k < count; ++k)
+      if (!has_[first + k]) boxless |= 1u << k;
+    return (keep4Avx2(data_.data(), stride_, first, ray, tmin, tmax) | boxless) & all;
+  }
+#endif
+  (void)first, (void)ray, (void)tmin, (void)tmax;
+  return all;
+}
+
+template class OrientedCull<float>;
+template class OrientedCull<double>;
+
+}  // namespace lattice
