@@ -37,7 +37,7 @@ class OccupancyFilter {
   OccupancyFilter() = default;
   // Room for `entries` keys, every bit clear.
   explicit OccupancyFilter(std::uint64_t entries)
-      : shift_(64 - std::countr_zero(bitsFor(entries))), words_(bitsFor(entries) / 64, 0) {}
+      : shift_(64 - std::countr_zero(bitsFor(entries))), words_(static_cast<std::size_t>(bitsFor(entries) / 64), 0) {}
 
   // The bits a filter for `entries` keys has, and its bytes (the memory plan counts them).
   static std::uint64_t bitsFor(std::uint64_t entries) {
@@ -47,13 +47,13 @@ class OccupancyFilter {
 
   void add(std::uint64_t key) {
     const std::uint64_t b = bucket(key);
-    words_[b / 64] |= std::uint64_t(1) << (b % 64);
+    words_[static_cast<std::size_t>(b / 64)] |= std::uint64_t(1) << (b % 64);
   }
   // False only when no key added falls in key's bucket.
   bool mayHold(std::uint64_t key) const {
     if (words_.empty()) return true;
     const std::uint64_t b = bucket(key);
-    return (words_[b / 64] >> (b % 64)) & 1u;
+    return (words_[static_cast<std::size_t>(b / 64)] >> (b % 64)) & 1u;
   }
   bool empty() const { return words_.empty(); }
   std::uint64_t bits() const { return words_.size() * 64; }
