@@ -110,8 +110,10 @@ class UnionCore : public Base {
   bool walkAll(const Ray<T>& ray, T tmin, T tmax, Visit&& visit) const {
     if constexpr (kCulls) {
       if (const OrientedCull<T>* c = derived().cull())
-        return derived().bvh().visitAll(ray, tmin, tmax, visit, [&](std::uint32_t first, std::uint32_t count, T lo,
-                                                                     T hi) { return c->keep(first, count, ray, lo, hi); });
+        return derived().bvh().visitAll(ray, tmin, tmax, visit,
+                                        [&](std::uint32_t first, std::uint32_t count, T lo, T hi) {
+                                          return c->keep(first, count, ray, lo, hi);
+                                        });
     }
     return derived().bvh().visitAll(ray, tmin, tmax, visit);
   }
