@@ -10,9 +10,8 @@
 
 #include "lht/leaf/lattice_leaf.hpp"
 #include "lht/raster/lattice_object.hpp"
-#include "loader/lattice_scene_loader.hpp"
-#include "render/renderer.hpp"
 #include "tests/lht/raster_support.hpp"
+#include "tests/lht/scene_render_support.hpp"
 #include "tests/support/hair_scene.hpp"
 
 using namespace lattice;
@@ -90,17 +89,14 @@ void checkCull() {
   CHECK(keptAnswering > 500);
 }
 
+template <typename T>
 RgbImage renderHair(CullPath path) {
   const ForcedCull forced(path);
   testing::HairScene hair;
   hair.size = 48;
   hair.hairs = 300;
   hair.floor = true;
-  const auto loaded = parseSceneWithLattices(hair.toml(), "hair.toml");
-  RenderSettings settings;
-  settings.threads = 2;
-  Renderer<double> renderer(loaded.scene, settings);
-  return renderImage(renderer);
+  return testing::renderLatticeScene<T>(hair.toml(), "hair.toml");
 }
 
 }  // namespace
@@ -111,10 +107,9 @@ TEST_CASE("oriented cull: drops only what a lattice leaf answers nothing for, in
 }
 
 TEST_CASE("oriented cull: a hair scene's pixels are the same with the cull off, scalar and in lanes") {
-  const RgbImage off = renderHair(CullPath::None);
-  const RgbImage scalar = renderHair(CullPath::Portable);
-  const RgbImage lanes = renderHair(CullPath::Auto);
+  const RgbImage off = renderHair<double>(CullPath::None);
   REQUIRE(off.width == 48);
-  CHECK(scalar.rgb == off.rgb);
-  CHECK(lanes.rgb == off.rgb);
+  CHECK(renderHair<double>(CullPath::Portable).rgb == off.rgb);
+  CHECK(renderHair<double>(CullPath::Auto).rgb == off.rgb);
+  CHECK(renderHair<float>(CullPath::Portable).rgb == renderHair<float>(CullPath::None).rgb);
 }
