@@ -1,6 +1,6 @@
 // The oriented-box cull of a BVH leaf's items (method and why:
-// render/accel/oriented_cull.hpp): the scalar reference, the AVX2 lanes for
-// double, and the choice between them made once per process.
+// render/accel/oriented_cull.hpp): the scalar reference, the lanes (AVX2 for
+// double, SSE2 for float), and the choice between them.
 #include "render/accel/oriented_cull.hpp"
 
 #include <atomic>
@@ -66,16 +66,56 @@ __attribute__((target("avx2"))) unsigned keep4Avx2(const double* data, std::size
   const __m256d dropped = _mm256_or_pd(_mm256_or_pd(reject, before), after);
   return static_cast<unsigned>(_mm256_movemask_pd(_mm256_andnot_pd(dropped, chord)));
 }
+
+// The same four lanes in float, SSE2 (every x86-64 has it): blends as and/or.
+unsigned keep4Sse(const float* data, std::size_t stride, std::uint32_t first, const Ray<float>& ray, float tmin,
+                  float tmax) {
+  const float* base = data + first;
+  const auto row = [&](int r) { return _mm_loadu_ps(base + std::size_t(r) * stride); };
+  const auto pick = [](__m128 mask, __m128 a, __m128 b) { return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b)); };
+  const __m128 ox = _mm_set1_ps(ray.origin.x), oy = _mm_set1_ps(ray.origin.y), oz = _mm_set1_ps(ray.origin.z);
+  const __m128 dx = _mm_set1_ps(ray.direction.x), dy = _mm_set1_ps(ray.direction.y), dz = _mm_set1_ps(ray.direction.z);
+  const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
+  __m128 t0 = _mm_set1_ps(-std::numeric_limits<float>::infinity());
+  __m128 t1 = _mm_set1_ps(std::numeric_limits<float>::infinity());
+  __m128 reject = zero;
+  for (int a = 0; a < 3; ++a) {
+    const __m128 c0 = row(a), c1 = row(3 + a), c2 = row(6 + a), c3 = row(9 + a), extent = row(12 + a);
+    const __m128 o = _mm_add_ps(_mm_add_ps(_mm_mul_ps(c0, ox), _mm_mul_ps(c1, oy)), _mm_add_ps(_mm_mul_ps(c2, oz), c3));
+    const __m128 d = _mm_add_ps(_mm_add_ps(_mm_mul_ps(c0, dx), _mm_mul_ps(c1, dy)), _mm_mul_ps(c2, dz));
+    const __m128 flat = _mm_cmpeq_ps(d, zero);
+    const __m128 outside = _mm_or_ps(_mm_cmplt_ps(o, zero), _mm_cmpgt_ps(o, extent));
+    reject = _mm_or_ps(reject, _mm_and_ps(flat, outside));
+    const __m128 inv = _mm_div_ps(one, d);
+    const __m128 toLow = _mm_mul_ps(_mm_sub_ps(zero, o), inv);
+    const __m128 toHigh = _mm_mul_ps(_mm_sub_ps(extent, o), inv);
+    const __m128 swap = _mm_cmpgt_ps(toLow, toHigh);
+    const __m128 ta = pick(swap, toHigh, toLow), tb = pick(swap, toLow, toHigh);
+    t0 = pick(_mm_andnot_ps(flat, _mm_cmpgt_ps(ta, t0)), ta, t0);
+    t1 = pick(_mm_andnot_ps(flat, _mm_cmplt_ps(tb, t1)), tb, t1);
+  }
+  const __m128 chord = _mm_cmpgt_ps(t1, t0);
+  const __m128 before = _mm_cmple_ps(t1, _mm_set1_ps(tmin));
+  const __m128 after = _mm_cmpge_ps(t0, _mm_set1_ps(tmax));
+  const __m128 dropped = _mm_or_ps(_mm_or_ps(reject, before), after);
+  return static_cast<unsigned>(_mm_movemask_ps(_mm_andnot_ps(dropped, chord)));
+}
 #endif
 
 }  // namespace
 
 void setCullPath(CullPath path) { forcedPath.store(path, std::memory_order_relaxed); }
 
+bool doubleLanesRun() { return cpuHasAvx2(); }
+
 CullPath activeCullPath() {
   const CullPath forced = forcedPath.load(std::memory_order_relaxed);
   if (forced == CullPath::Portable || forced == CullPath::None) return forced;
-  return cpuHasAvx2() ? CullPath::Avx2 : CullPath::None;
+#if defined(__x86_64__)
+  return CullPath::Lanes;
+#else
+  return CullPath::None;
+#endif
 }
 
 template <typename T>
@@ -131,11 +171,13 @@ template <typename T>
 unsigned OrientedCull<T>::keepLanes(std::uint32_t first, std::uint32_t count, const Ray<T>& ray, T tmin, T tmax) const {
   const unsigned all = (1u << count) - 1u;
 #if defined(__x86_64__)
+  unsigned boxless = 0;  // positions without a box are always kept
+  for (std::uint32_t k = 0; k < count; ++k)
+    if (!has_[first + k]) boxless |= 1u << k;
   if constexpr (std::is_same_v<T, double>) {
-    unsigned boxless = 0;  // positions without a box are always kept
-    for (std::uint32_t k = 0; k < count; ++k)
-      if (!has_[first + k]) boxless |= 1u << k;
-    return (keep4Avx2(data_.data(), stride_, first, ray, tmin, tmax) | boxless) & all;
+    if (cpuHasAvx2()) return (keep4Avx2(data_.data(), stride_, first, ray, tmin, tmax) | boxless) & all;
+  } else {
+    return (keep4Sse(data_.data(), stride_, first, ray, tmin, tmax) | boxless) & all;
   }
 #endif
   (void)first, (void)ray, (void)tmin, (void)tmax;

@@ -12,16 +12,17 @@
 //   LatticeAffine::apply and clipToCells and the leaf's chord test
 //   (t1 > t0, overlapping (tmin, tmax)), so the culled items are exactly the
 //   ones that would have answered nothing. An item without a box is kept.
-// * Lanes: the AVX2 path tests four double items in one 256-bit pass. It is
-//   compiled with target("avx2") and chosen at run time
-//   (__builtin_cpu_supports), so the binary runs on any x86-64; "fma" is not
-//   enabled, so no multiply and add are fused and every lane rounds as the
-//   scalar leaf does. Eight float lanes would need eight items a leaf, and a
-//   BVH leaf holds four or fewer, so float keeps its visits uncut.
-// * Without AVX2 (an older x86-64, the Cortex-M3, ARM hosts, float, fixed
-//   point) nothing is culled and every item is visited as before: the same
-//   answers. The scalar reference cull (CullPath::Portable) does the lane
-//   arithmetic one item at a time; tests force it and compare.
+// * Lanes: four items a pass. Double: one 256-bit AVX2 pass, compiled with
+//   target("avx2") and chosen at run time (__builtin_cpu_supports), so the
+//   binary runs on any x86-64; "fma" is not enabled, so no multiply and add
+//   are fused and every lane rounds as the scalar leaf does. Float: one SSE2
+//   pass (every x86-64 has SSE2). Eight float lanes would need eight items a
+//   leaf, and a BVH leaf holds four or fewer.
+// * Where there are no lanes (double on an x86-64 without AVX2, the
+//   Cortex-M3, ARM hosts, fixed point) nothing is culled and every item is
+//   visited as before: the same answers. The scalar reference cull
+//   (CullPath::Portable) does the lane arithmetic one item at a time; tests
+//   force it and compare.
 // * A cull may keep an item the leaf then rejects (the limit of a
 //   front-to-back walk shrinks while a leaf's items are visited; the cull
 //   used the larger one), never the other way: which hit wins is unchanged.
@@ -43,14 +44,16 @@ struct OrientedBox {
   Vec3<T> extent;
 };
 
-// Which cull the walks use: Auto (Avx2 where the CPU has it, else None),
-// Avx2 (four double lanes; None where the CPU lacks it), Portable (the scalar
-// reference, for tests), None (every item visited, as before the cull).
-enum class CullPath { Auto, Avx2, Portable, None };
+// Which cull the walks use: Auto (Lanes on x86-64, else None), Lanes (four
+// items a pass; uncut for double where the CPU has no AVX2), Portable (the
+// scalar reference, for tests), None (every item visited, as before the cull).
+enum class CullPath { Auto, Lanes, Portable, None };
 // For tests and benchmarks; the default is Auto.
 void setCullPath(CullPath path);
-// The path in use: Avx2, Portable or None.
+// The path in use: Lanes, Portable or None.
 CullPath activeCullPath();
+// Whether the lanes run for double on this CPU (AVX2).
+bool doubleLanesRun();
 
 template <typename T>
 class OrientedCull {
@@ -64,8 +67,7 @@ class OrientedCull {
   // Bit k set (k < count <= 4) when the item at position first + k may answer
   // a query over (tmin, tmax), by the path in use when the cull was made.
   unsigned keep(std::uint32_t first, std::uint32_t count, const Ray<T>& ray, T tmin, T tmax) const {
-    if constexpr (std::is_same_v<T, double>)
-      if (path_ == CullPath::Avx2) return keepLanes(first, count, ray, tmin, tmax);
+    if (path_ == CullPath::Lanes) return keepLanes(first, count, ray, tmin, tmax);
     if (path_ == CullPath::Portable) return keepEach(first, count, ray, tmin, tmax);
     return (1u << count) - 1u;
   }
@@ -86,7 +88,7 @@ class OrientedCull {
   std::size_t stride_ = 0;
   std::vector<T> data_;
   std::vector<std::uint8_t> has_;  // 1 where the position has a box
-  CullPath path_ = CullPath::None;  // resolved when made: Avx2, Portable or None
+  CullPath path_ = CullPath::None;  // resolved when made: Lanes, Portable or None
 };
 
 extern template class OrientedCull<float>;

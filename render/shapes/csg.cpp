@@ -155,10 +155,11 @@ class UnionNode final : public UnionCore<T, UnionNode<T>, CsgNode<T>> {
  private:
   // The children's oriented boxes in the BVH's item order, kept only where
   // the path in use reads them (render/accel/oriented_cull.hpp) and some
-  // child has one: 120 bytes an item in double.
+  // child has one: 120 bytes an item in double, 60 in float.
   void keepOrientedBoxes() {
     const CullPath path = activeCullPath();
-    if (!(path == CullPath::Portable || (path == CullPath::Avx2 && std::is_same_v<T, double>))) return;
+    const bool lanesRun = path == CullPath::Lanes && (!std::is_same_v<T, double> || doubleLanesRun());
+    if (!(path == CullPath::Portable || lanesRun)) return;
     const auto& items = bvh_.items();
     std::vector<OrientedBox<T>> boxes(items.size());
     std::vector<bool> has(items.size(), false);
