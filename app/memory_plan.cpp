@@ -135,12 +135,12 @@ MemoryPlan planMemory(const MemoryPlanRequest& request) {
 TablePacking chooseTablePacking(std::uint64_t budget, std::uint64_t resident, std::uint64_t hitListBytes,
                                 std::uint64_t leastOutput, std::uint64_t entries, lht::LhtPrecision requested) {
   const auto fits = [&](lht::LhtPrecision form) {
-    const std::uint64_t table = lht::LatticeHashTable::expectedBytes(entries, form);
+    const std::uint64_t table = lht::LatticeHashTable::expectedMemory(entries, form);
     const std::uint64_t later = (resident > hitListBytes ? resident - hitListBytes : 0) + table + leastOutput;
     return resident + table <= budget && later <= budget;
   };
   const auto packing = [&](lht::LhtPrecision form) {
-    return TablePacking{form, lht::LatticeHashTable::expectedBytes(entries, form)};
+    return TablePacking{form, lht::LatticeHashTable::expectedMemory(entries, form)};
   };
   if (fits(requested)) return packing(requested);
   // The forms no larger than the one asked for, smallest first.
@@ -155,7 +155,7 @@ TablePacking chooseTablePacking(std::uint64_t budget, std::uint64_t resident, st
 
 std::uint64_t expectedTableBytes(lht::LhtForm form, lht::LhtPrecision precision, std::uint64_t entries,
                                  const std::array<int, 3>& cells) {
-  if (form != lht::LhtForm::Compressed) return lht::LatticeHashTable::expectedBytes(entries, precision);
+  if (form != lht::LhtForm::Compressed) return lht::LatticeHashTable::expectedMemory(entries, precision);
   const std::uint64_t words = (lht::CompressedTable::bitmapBits(cells, lht::PairLayout::Symmetric) + 63) / 64;
   const std::uint64_t ranks = (words + lht::CompressedTable::kBlockWords - 1) / lht::CompressedTable::kBlockWords;
   constexpr std::uint64_t kBuildPairBytes = sizeof(std::pair<std::uint64_t, std::uint32_t>);

@@ -8,7 +8,7 @@
 # trace by each side's own timer, and each picture's PSNR against ours --full.
 #
 #   bench/peers.sh --build-dir DIR [--runs N] [--threads "1 2"] [--scenes "a b"]
-#                  [--sphere-sweep] [--out FILE.md] [--images DIR]
+#                  [--programs "lattice embree"] [--sphere-sweep] [--out FILE.md] [--images DIR]
 #
 # DIR: a Release build with the `lattice` target, and `embree_peer` when
 # configured with -DLATTICE_EMBREE_PEER=ON (else the Embree rows say so).
@@ -19,6 +19,9 @@
 # rasterizes the lattice table; POV-Ray parses the exported file), and its
 # CPU time (user + system) when GNU time is installed.
 # --sphere-sweep adds POV-Ray rows for the export with sphere_sweep hair.
+# --programs keeps only the named contenders (of lattice, full, povray,
+# povray-sweep, embree), so a pair can be timed without the slow ones; the
+# PSNR column needs `full` among them.
 # A scene a peer cannot trace (Embree: CSG, tori) gets a row saying why.
 # Peers: povray, libembree-dev (scripts/setup.sh --bench); python3 for the table.
 set -euo pipefail
@@ -30,9 +33,10 @@ runs=5
 threads_list="1 2"
 scenes="fuzzy-sphere-1000 fuzzy-sphere-5000 thistle torus-floor sphere-hole thesis-camera"
 sweep=0
+only=""
 out=""
 images=""
-bench_parse --build-dir=build --runs=runs --threads=threads_list --scenes=scenes --sphere-sweep:sweep=1 --out=out --images=images -- "$@"
+bench_parse --build-dir=build --runs=runs --threads=threads_list --scenes=scenes --sphere-sweep:sweep=1 --programs=only --out=out --images=images -- "$@"
 [[ -n "$build" ]] || bench_die "give --build-dir DIR (a Release build with the lattice target)"
 bench_positive --runs "$runs"
 lattice="$build/app/lattice"
@@ -80,11 +84,18 @@ for scene in $scenes; do
   ((sweep == 0)) || "$lattice" export pov "$file" -o "$images/$scene-sweep.pov" -q --sphere-sweep
 done
 
-programs() {
+all_programs() {
   echo lattice full
   ((have_povray == 0)) || echo povray
   ((have_povray == 0 || sweep == 0)) || echo povray-sweep
   ((have_embree == 0)) || echo embree
+}
+programs() {
+  local p
+  for p in $(all_programs); do
+    [[ -z "$only" || " $only " == *" $p "* ]] && echo "$p"
+  done
+  return 0
 }
 
 # One run of one program: appends "scene threads program run whole cpu trace" to raw.
@@ -134,6 +145,7 @@ psnr="$images/psnr.tsv"
 for scene in $scenes; do
   threads=${threads_list%% *}
   reference="$images/$scene-full-$threads.png"
+  [[ -f "$reference" ]] || continue
   for program in $(programs); do
     picture="$images/$scene-$program-$threads.png"
     [[ $program != full && -f "$picture" ]] || continue

@@ -61,6 +61,13 @@ class LatticeLeafBase : public Primitive<T> {
         bounds_(p.bounds) {}
 
   const Bounds<T>& bounds() const override { return bounds_; }
+  // The box clip() tests: its rejects are the union's cull's (the same
+  // operations: render/accel/oriented_cull.hpp).
+  bool orientedBox(OrientedBox<T>& box) const override {
+    for (int c = 0; c < 4; ++c) box.column[c] = worldToLattice_.column(c);
+    box.extent = cells_;
+    return true;
+  }
   LatticePlacement<T> placement() const {
     return {worldToLattice_, reader_.normalMap(), bounds_, material_, castsShadows_};
   }

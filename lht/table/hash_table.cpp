@@ -30,6 +30,7 @@ LatticeHashTable::LatticeHashTable(LhtPrecision precision, std::uint64_t entries
   capacity_ = capacityFor(entries, maxLoad);
   if (capacity_ >= kMaxCapacity) throw Error(ErrorKind::Input, "too many lattice hits for one table (2^32 slots)");
   slots_.assign(static_cast<std::size_t>(capacity_ * stride_), 0);
+  filter_ = OccupancyFilter(entries);
 }
 
 LatticeHashTable::LatticeHashTable(const RasterHits& hits, LhtPrecision precision, double maxLoad)
@@ -56,6 +57,7 @@ void LatticeHashTable::insert(const std::uint8_t* entry) {
   std::uint64_t key = loadKey(entry);
   if (key == 0) throw Error(ErrorKind::Input, "an LHT entry with the empty key (0,0,0)->(0,0,0)");
   if (entries_ + 1 >= capacity_) throw Error(ErrorKind::Input, "more LHT entries than the table was sized for");
+  filter_.add(key);  // before the loop carries smaller keys on under `key`
   std::uint8_t carried[32];  // the entry being placed: the new one, then each smaller one it displaces
   static_assert(sizeof carried >= 16);
   std::memcpy(carried, entry, stride_);
@@ -81,6 +83,14 @@ LatticeHashTable::LatticeHashTable(LhtPrecision precision, std::vector<std::uint
     : precision_(precision), stride_(slotStride(precision)), slots_(std::move(slotBytes)), capacity_(capacity),
       entries_(entryCount) {
   checkSlots();
+  fillFilter();
+}
+
+void LatticeHashTable::fillFilter() {
+  filter_ = OccupancyFilter(entries_);
+  const std::uint8_t* base = slotView().data();
+  for (std::uint64_t i = 0; i < capacity_; ++i)
+    if (const std::uint64_t key = loadKey(base + i * stride_)) filter_.add(key);
 }
 
 LatticeHashTable LatticeHashTable::inPlace(LhtPrecision precision, std::span<const std::uint8_t> slotBytes,
@@ -175,6 +185,8 @@ std::vector<std::string> LatticeHashTable::describe(std::uint64_t /*hits*/) cons
   const ProbeStats probes = probeStats();
   lines.push_back(fmt::format("probes:        a hit reads {:.2f} slots on average, a miss {:.2f}; longest displacement {}",
                               probes.meanHitSlots, probes.meanMissSlots, probes.longestProbe));
+  lines.push_back(fmt::format("occupancy:     a bitmap of {} bits ({} bytes) in front of the slots, built on load",
+                              filter_.bits(), filter_.bytes()));
   for (std::size_t k = 0; k < probes.displacementHistogram.size(); ++k)
     if (probes.displacementHistogram[k])
       lines.push_back(fmt::format("  {:>3} past home: {} entries", k, probes.displacementHistogram[k]));

@@ -36,6 +36,9 @@
 //   brings a miss to about the same (unordered: (1 + 1/(1-a)^2)/2, 6.1).
 // * The same layout in memory, in a version-4 .lht file and in the
 //   firmware's flash (read in place, docs/firmware.md).
+// * An occupancy bitmap in front of the slots (lht/table/occupancy_filter.hpp,
+//   built with the table, never stored in a file): a miss whose bit is clear
+//   reads no slot. A table read in place has none (the firmware's RAM).
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -47,6 +50,7 @@
 #include "lht/table/entry_codec.hpp"
 #include "lht/grid/lattice_box.hpp"
 #include "lht/table/lht_precision.hpp"
+#include "lht/table/occupancy_filter.hpp"
 #include "lht/raster/rasterize.hpp"
 
 namespace lattice::lht {
@@ -104,7 +108,9 @@ class LatticeHashTable {
   // if absent): fixed-point rendering decodes the payload with
   // decodePayloadIntegers() instead of through LhtHit's doubles.
   const std::uint8_t* findEntry(const LatticePoint& in, const LatticePoint& out) const {
-    return in == out ? nullptr : findKey(keyOf(in, out));
+    if (in == out) return nullptr;
+    const std::uint64_t key = keyOf(in, out);
+    return filter_.mayHold(key) ? findKey(key) : nullptr;
   }
   // The same for a key as one integer (keyOf); never the empty key 0. Out
   // of line: inlined into the lattice leaf it measured no faster (Plate 7,
@@ -149,6 +155,13 @@ class LatticeHashTable {
   // budget chooses the precision with it): exact, the layout depending on
   // the count alone.
   static std::uint64_t expectedBytes(std::uint64_t entries, LhtPrecision precision, double maxLoad = kMaxLoad);
+  // What a table built for `entries` holds in memory: the slots and the
+  // occupancy bitmap in front of them (the memory plan's figure).
+  static std::uint64_t expectedMemory(std::uint64_t entries, LhtPrecision precision) {
+    return expectedBytes(entries, precision) + OccupancyFilter::bytesFor(entries);
+  }
+  // The occupancy bitmap (empty for a table read in place).
+  const OccupancyFilter& filter() const { return filter_; }
 
   // The key's six bytes as one integer (slot byte b in bits 8b..8b+7).
   static std::uint64_t keyOf(const LatticePoint& in, const LatticePoint& out) {
@@ -166,6 +179,7 @@ class LatticeHashTable {
  private:
   std::uint8_t* slot(std::uint64_t index) { return slots_.data() + index * stride_; }
   void checkSlots() const;
+  void fillFilter();
 
   LhtPrecision precision_ = LhtPrecision::Thesis;
   std::size_t stride_ = slotStride(LhtPrecision::Thesis);
@@ -173,6 +187,7 @@ class LatticeHashTable {
   std::span<const std::uint8_t> inPlace_;  // instead of slots_, for a table read in place
   std::uint64_t capacity_ = 0;
   std::uint64_t entries_ = 0;
+  OccupancyFilter filter_;  // every held key's bit set; empty for a table read in place
 };
 
 }  // namespace lattice::lht

@@ -22,6 +22,7 @@
 //    is at or beyond the caller's limit is skipped when popped.
 //  * Stack: a node pushes at most four entries and pops one, so the stack
 //    never holds more than 3 * depth + 1 entries; kStack is 4 * kMaxDepth.
+#include <algorithm>
 #include <cstdint>
 #include <type_traits>
 #include <vector>
@@ -57,6 +58,13 @@ class WideBvh {
   // true. Returns whether it stopped.
   template <typename Visit>
   bool visitAll(const Ray<T>& ray, T tmin, T tmax, Visit&& visit) const {
+    return visitAll(ray, tmin, tmax, visit, KeepAll{});
+  }
+  // The same, a leaf's items first put to keep(first, count, tmin, limit),
+  // which returns bit k set when the item at position first + k of items()
+  // may answer (count <= 4; render/accel/oriented_cull.hpp).
+  template <typename Visit, typename Keep>
+  bool visitAll(const Ray<T>& ray, T tmin, T tmax, Visit&& visit, Keep&& keep) const {
     if (nodes_.empty()) return false;
     const WideRay wray(ray);
     const float t0 = floatBelow(tmin), t1 = floatAbove(tmax);
@@ -73,8 +81,12 @@ class WideBvh {
           stack[top++] = node.ref[lane];
           continue;
         }
-        for (std::uint32_t n = 0; n < node.count[lane]; ++n)
-          if (visit(items_[node.ref[lane] + n])) return true;
+        for (std::uint32_t n = 0; n < node.count[lane]; n += 4) {
+          const std::uint32_t first = node.ref[lane] + n, count = std::min<std::uint32_t>(4, node.count[lane] - n);
+          const unsigned kept = keep(first, count, tmin, tmax);
+          for (std::uint32_t k = 0; k < count; ++k)
+            if ((kept >> k & 1u) && visit(items_[first + k])) return true;
+        }
       }
     }
     return false;
@@ -85,6 +97,12 @@ class WideBvh {
   // beyond it are skipped. Setting limit to tmin or below stops the walk.
   template <typename Visit>
   void visitFrontToBack(const Ray<T>& ray, T tmin, T& limit, Visit&& visit) const {
+    visitFrontToBack(ray, tmin, limit, visit, KeepAll{});
+  }
+  // The same with a leaf's items put to keep() first (as visitAll's), with
+  // the limit of the moment: it may only shrink while they are visited.
+  template <typename Visit, typename Keep>
+  void visitFrontToBack(const Ray<T>& ray, T tmin, T& limit, Visit&& visit, Keep&& keep) const {
     if (nodes_.empty()) return;
     struct Entry {
       std::uint32_t ref, count;
@@ -100,9 +118,14 @@ class WideBvh {
       const Entry e = stack[--top];
       if (!(T(e.t) < limit)) continue;  // starts at or beyond the nearest hit found since it was pushed
       if (e.count > 0) {
-        for (std::uint32_t n = 0; n < e.count; ++n) {
-          visit(items_[e.ref + n], limit);
-          if (!(limit > tmin)) return;
+        for (std::uint32_t n = 0; n < e.count; n += 4) {
+          const std::uint32_t first = e.ref + n, count = std::min<std::uint32_t>(4, e.count - n);
+          const unsigned kept = keep(first, count, tmin, limit);
+          for (std::uint32_t k = 0; k < count; ++k) {
+            if (!(kept >> k & 1u)) continue;
+            visit(items_[first + k], limit);
+            if (!(limit > tmin)) return;
+          }
         }
         continue;
       }
@@ -124,6 +147,10 @@ class WideBvh {
   static constexpr int kStack = 4 * Bvh<T>::kMaxDepth;
 
  private:
+  struct KeepAll {
+    unsigned operator()(std::uint32_t, std::uint32_t, T, T) const { return ~0u; }
+  };
+
   std::uint32_t collapse(const Bvh<T>& binary, std::uint32_t index, int depth);
 
   std::vector<Node> nodes_;

@@ -97,7 +97,7 @@ struct WideRay {
   int nearSide[3];  // 0: the near plane is lo (direction >= +0); 1: hi
 
   template <typename T>
-  explicit WideRay(const Ray<T>& ray) {
+  [[gnu::always_inline]] explicit WideRay(const Ray<T>& ray) {
     for (int a = 0; a < 3; ++a) {
       const double d = double(ray.direction[a]);
       inverse[a] = static_cast<float>(1.0 / d);
@@ -132,7 +132,10 @@ inline unsigned slabTest4Scalar(const BoxLanes& b, const WideRay& r, float tmin,
 }
 
 #if defined(__SSE2__)
-inline unsigned slabTest4Sse(const BoxLanes& b, const WideRay& r, float tmin, float limit, float entry[4]) {
+// Always inlined (as slabTest4 and WideRay's constructor): in the walks that
+// also call a leaf cull, GCC otherwise made them calls of their own.
+[[gnu::always_inline]] inline unsigned slabTest4Sse(const BoxLanes& b, const WideRay& r, float tmin, float limit,
+                                                    float entry[4]) {
   const __m128 sign = _mm_set1_ps(-0.0f), k = _mm_set1_ps(kRelativeMargin), m = _mm_set1_ps(kAbsoluteMargin),
                big = _mm_set1_ps(FLT_MAX);
   const __m128 tmin4 = _mm_set1_ps(tmin);
@@ -152,7 +155,8 @@ inline unsigned slabTest4Sse(const BoxLanes& b, const WideRay& r, float tmin, fl
 }
 #endif
 
-inline unsigned slabTest4(const BoxLanes& b, const WideRay& r, float tmin, float limit, float entry[4]) {
+[[gnu::always_inline]] inline unsigned slabTest4(const BoxLanes& b, const WideRay& r, float tmin, float limit,
+                                                 float entry[4]) {
 #if defined(__SSE2__)
   return slabTest4Sse(b, r, tmin, limit, entry);
 #else

@@ -125,6 +125,7 @@ class UnionNode final : public UnionCore<T, UnionNode<T>, CsgNode<T>> {
       boxes.clear();
     }
     bvh_ = UnionBvh<T>(boxes);
+    if constexpr (std::is_floating_point_v<T>) keepOrientedBoxes();
   }
 
   // What UnionCore asks.
@@ -149,9 +150,26 @@ class UnionNode final : public UnionCore<T, UnionNode<T>, CsgNode<T>> {
   decltype(auto) withItem(std::uint32_t item, F f) const {
     return f(*finite_[item]);
   }
+  const OrientedCull<T>* cull() const { return cull_.empty() ? nullptr : &cull_; }
 
  private:
+  // The children's oriented boxes in the BVH's item order, kept only where
+  // the path in use reads them (render/accel/oriented_cull.hpp) and some
+  // child has one: 120 bytes an item in double, 60 in float.
+  void keepOrientedBoxes() {
+    const CullPath path = activeCullPath();
+    const bool lanesRun = path == CullPath::Lanes && (!std::is_same_v<T, double> || doubleLanesRun());
+    if (!(path == CullPath::Portable || lanesRun)) return;
+    const auto& items = bvh_.items();
+    std::vector<OrientedBox<T>> boxes(items.size());
+    std::vector<bool> has(items.size(), false);
+    bool any = false;
+    for (std::size_t p = 0; p < items.size(); ++p) any |= has[p] = finite_[items[p]]->orientedBox(boxes[p]);
+    if (any) cull_ = OrientedCull<T>(boxes, has);
+  }
+
   UnionBvh<T> bvh_;
+  OrientedCull<T> cull_;  // empty: every item the walk reaches is visited
   std::vector<const Primitive<T>*> finite_;  // BVH item -> child
   std::vector<std::uint32_t> unbounded_;  // children every ray visits: the unbounded ones, or a lone bounded one
 };

@@ -14,6 +14,7 @@
 
 #include "foundation/bounds.hpp"
 #include "foundation/ray.hpp"
+#include "render/accel/oriented_cull.hpp"
 #include "render/shapes/span_list.hpp"
 
 namespace lattice {
@@ -93,6 +94,13 @@ class Primitive {
     hit = list[0].enter;
     return true;
   }
+
+  // A box in the primitive's own coordinates such that it answers nothing
+  // (no span, hit or enter) for a ray whose line, mapped into them, misses
+  // the box or crosses it outside (tmin, tmax), by the exact test of
+  // render/accel/oriented_cull.hpp; a union's BVH then culls such a child
+  // without calling it. False (no such box) unless a leaf says otherwise.
+  virtual bool orientedBox(OrientedBox<T>& /*box*/) const { return false; }
 
   // Shadow rays: is there any crossing in (tmin, tmax)? Subclasses make this
   // cheaper than firstHit where they can (stop at the first crossing found).

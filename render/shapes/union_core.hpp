@@ -11,6 +11,8 @@
 //   template <typename F> decltype(auto) withUnbounded(std::size_t k, F f) const;  // f(const Primitive<T>&)
 //   const UnionBvh<T>& bvh() const;                        // the finite children
 //   template <typename F> decltype(auto) withItem(std::uint32_t item, F f) const;  // f(const Primitive<T>&)
+// and, optionally, const OrientedCull<T>* cull() const: the items' oriented
+// boxes in the BVH's item order (render/accel/oriented_cull.hpp), or null.
 // and Base is the class UnionCore derives from (Primitive<T>, or a CSG node
 // base holding the children).
 //
@@ -21,6 +23,7 @@
 //
 // Tunables: none.
 #include <cstdint>
+#include <type_traits>
 
 #include "render/accel/wide_bvh.hpp"
 #include "render/shapes/primitive.hpp"
@@ -43,7 +46,7 @@ class UnionCore : public Base {
       for (const Span<T>& s : list) all.push_back(s);
     };
     for (std::size_t k = 0; k < self.unboundedCount(); ++k) self.withUnbounded(k, add);
-    self.bvh().visitAll(ray, tmin, tmax, [&](std::uint32_t item) {
+    walkAll(ray, tmin, tmax, [&](std::uint32_t item) {
       self.withItem(item, add);
       return false;
     });
@@ -82,7 +85,7 @@ class UnionCore : public Base {
     for (std::size_t k = 0; k < self.unboundedCount(); ++k)
       self.withUnbounded(k, [&](const Primitive<T>& c) { visit(c, limit); });
     if (!inside)
-      self.bvh().visitFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) {
+      walkFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) {
         self.withItem(item, [&](const Primitive<T>& c) { visit(c, lim); });
       });
     return found && !inside;
@@ -95,12 +98,39 @@ class UnionCore : public Base {
       if (self.withUnbounded(k, [&](const Primitive<T>& c) { return c.anyHit(ray, tmin, tmax); })) return true;
     // In tree order, not nearest first: with a handful of children per shadow
     // ray, sorting them cost as much as it saved (docs/benchmarks.md, Step 4).
-    return self.bvh().visitAll(ray, tmin, tmax, [&](std::uint32_t item) {
+    return walkAll(ray, tmin, tmax, [&](std::uint32_t item) {
       return self.withItem(item, [&](const Primitive<T>& c) { return c.anyHit(ray, tmin, tmax); });
     });
   }
 
  private:
+  // The BVH's walks, through the oriented-box cull where Derived keeps one.
+  static constexpr bool kCulls = std::is_floating_point_v<T> && requires(const Derived& d) { d.cull(); };
+  template <typename Visit>
+  bool walkAll(const Ray<T>& ray, T tmin, T tmax, Visit&& visit) const {
+    if constexpr (kCulls) {
+      if (const OrientedCull<T>* c = derived().cull())
+        return derived().bvh().visitAll(ray, tmin, tmax, visit,
+                                        [&](std::uint32_t first, std::uint32_t count, T lo, T hi) {
+                                          return c->keep(first, count, ray, lo, hi);
+                                        });
+    }
+    return derived().bvh().visitAll(ray, tmin, tmax, visit);
+  }
+  template <typename Visit>
+  void walkFrontToBack(const Ray<T>& ray, T tmin, T& limit, Visit&& visit) const {
+    if constexpr (kCulls) {
+      if (const OrientedCull<T>* c = derived().cull()) {
+        derived().bvh().visitFrontToBack(ray, tmin, limit, visit,
+                                         [&](std::uint32_t first, std::uint32_t count, T lo, T hi) {
+                                           return c->keep(first, count, ray, lo, hi);
+                                         });
+        return;
+      }
+    }
+    derived().bvh().visitFrontToBack(ray, tmin, limit, visit);
+  }
+
   const Derived& derived() const { return static_cast<const Derived&>(*this); }
 };
 

@@ -16,6 +16,7 @@
 #include "lht/leaf/lookup_stats.hpp"
 #include "loader/table_build.hpp"
 #include "render/renderer.hpp"
+#include "tests/lht/scene_render_support.hpp"
 #include "tests/support/hair_scene.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -32,12 +33,7 @@ std::string hairScene(const std::string& latticeKeys) {
 
 template <typename T>
 RgbImage renderScene(const std::string& text, const std::filesystem::path& file, TableSettings tables = {}) {
-  tables.progress = false;
-  const SceneWithLattices loaded = parseSceneWithLattices(text, file, tables);
-  RenderSettings settings;
-  settings.threads = 2;
-  Renderer<T> renderer(loaded.scene, settings);
-  return renderImage(renderer);
+  return testing::renderLatticeScene<T>(text, file, tables);
 }
 
 }  // namespace

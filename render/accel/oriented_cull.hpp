@@ -1,0 +1,97 @@
+#pragma once
+// The leaves of a union's BVH tested against their items' own oriented boxes,
+// four items at once, before any item is called: on the hair plates four
+// visits in five reach a lattice whose box the ray's line misses
+// (docs/benchmarks.md), and each such visit was a virtual call and a scalar
+// clip of its own.
+//
+// Method:
+// * An item that offers an OrientedBox (a lattice leaf: its world -> lattice
+//   map and its cells) is culled when its own clip would reject the ray: the
+//   same operations in the same order as lht/grid/lattice_chord.hpp's
+//   LatticeAffine::apply and clipToCells and the leaf's chord test
+//   (t1 > t0, overlapping (tmin, tmax)), so the culled items are exactly the
+//   ones that would have answered nothing. An item without a box is kept.
+// * Lanes: four items a pass. Double: one 256-bit AVX2 pass, compiled with
+//   target("avx2") and chosen at run time (__builtin_cpu_supports), so the
+//   binary runs on any x86-64; "fma" is not enabled, so no multiply and add
+//   are fused and every lane rounds as the scalar leaf does. Float: one SSE2
+//   pass (every x86-64 has SSE2). Eight float lanes would need eight items a
+//   leaf, and a BVH leaf holds four or fewer.
+// * Where there are no lanes (double on an x86-64 without AVX2, the
+//   Cortex-M3, ARM hosts, fixed point) nothing is culled and every item is
+//   visited as before: the same answers. The scalar reference cull
+//   (CullPath::Portable) does the lane arithmetic one item at a time; tests
+//   force it and compare.
+// * A cull may keep an item the leaf then rejects (the limit of a
+//   front-to-back walk shrinks while a leaf's items are visited; the cull
+//   used the larger one), never the other way: which hit wins is unchanged.
+#include <cstdint>
+#include <type_traits>
+#include <vector>
+
+#include "foundation/ray.hpp"
+#include "foundation/vec.hpp"
+
+namespace lattice {
+
+// A box in an item's own coordinates: world -> box as three columns and a
+// translation, applied as (c0 x + c1 y) + (c2 z + c3) to a point and
+// (c0 x + c1 y) + c2 z to a direction; the box is [0, extent].
+template <typename T>
+struct OrientedBox {
+  Vec3<T> column[4];
+  Vec3<T> extent;
+};
+
+// Which cull the walks use: Auto (Lanes on x86-64, else None), Lanes (four
+// items a pass; uncut for double where the CPU has no AVX2), Portable (the
+// scalar reference, for tests), None (every item visited, as before the cull).
+enum class CullPath { Auto, Lanes, Portable, None };
+// For tests and benchmarks; the default is Auto.
+void setCullPath(CullPath path);
+// The path in use: Lanes, Portable or None.
+CullPath activeCullPath();
+// Whether the lanes run for double on this CPU (AVX2).
+bool doubleLanesRun();
+
+template <typename T>
+class OrientedCull {
+ public:
+  OrientedCull() = default;
+  // boxes[p], has[p]: the box of the item at position p of the BVH's item
+  // order, and whether it has one.
+  OrientedCull(const std::vector<OrientedBox<T>>& boxes, const std::vector<bool>& has);
+
+  bool empty() const { return positions_ == 0; }
+  // Bit k set (k < count <= 4) when the item at position first + k may answer
+  // a query over (tmin, tmax), by the path in use when the cull was made.
+  unsigned keep(std::uint32_t first, std::uint32_t count, const Ray<T>& ray, T tmin, T tmax) const {
+    if (path_ == CullPath::Lanes) return keepLanes(first, count, ray, tmin, tmax);
+    if (path_ == CullPath::Portable) return keepEach(first, count, ray, tmin, tmax);
+    return (1u << count) - 1u;
+  }
+  // The scalar reference of one position (every path agrees with it).
+  bool keepOne(std::uint32_t position, const Ray<T>& ray, T tmin, T tmax) const;
+
+  // Structure of arrays, one row per quantity, padded by 4 positions so a
+  // lane group may read past the last item: rows 0-11 the columns (c0.xyz,
+  // c1.xyz, c2.xyz, c3.xyz), 12-14 the extent.
+  static constexpr int kRows = 15;
+
+ private:
+  const T* row(int r) const { return data_.data() + std::size_t(r) * stride_; }
+  unsigned keepLanes(std::uint32_t first, std::uint32_t count, const Ray<T>& ray, T tmin, T tmax) const;
+  unsigned keepEach(std::uint32_t first, std::uint32_t count, const Ray<T>& ray, T tmin, T tmax) const;
+
+  std::uint32_t positions_ = 0;
+  std::size_t stride_ = 0;
+  std::vector<T> data_;
+  std::vector<std::uint8_t> has_;  // 1 where the position has a box
+  CullPath path_ = CullPath::None;  // resolved when made: Lanes, Portable or None
+};
+
+extern template class OrientedCull<float>;
+extern template class OrientedCull<double>;
+
+}  // namespace lattice
