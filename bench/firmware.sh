@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Plate 6 (scenes/fuzzy-sphere-1000.toml, 1000 lattice hairs) at 512x512 on
-# an emulated board (docs/firmware.md, "Benchmark"), beside the thesis's
+# an emulated board (docs/firmware.md, "Measured"), beside the thesis's
 # 12.1 hours on a Sun 3/60.
 #   bench/firmware.sh [--board NAME] [--ram budget|board] [--size WxH] [--scene FILE] [--mode sample|passes]
 #                     [--sample N] [--set key=value ...]

@@ -2,10 +2,12 @@
 // Command-line flags read from a settings schema (foundation/settings_schema.hpp):
 // one `--key` a row, its help the row's help line, its check the row's
 // range, names or sizes, its default the schema's initial value; a switch
-// is a flag without a value. The flags only collect text; applySettingFlags then writes
-// each given value through the schema's own parser (applySetting), so a
-// flag and `--set key=value` are read by the same code and a key is spelled
-// once, in the schema.
+// is a flag without a value. Each given value is written through the
+// schema's own parser (applySetting): at once (addSettingFlagsInto), or
+// collected and written once every flag is read (addSettingFlags, then
+// applySettingFlags), where a row's value depends on another's. So a flag
+// and `--set key=value` are read by the same code and a key is spelled once,
+// in the schema.
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
