@@ -119,17 +119,26 @@ CullPath activeCullPath() {
 }
 
 template <typename T>
-OrientedCull<T>::OrientedCull(const std::vector<OrientedBox<T>>& boxes, const std::vector<bool>& has)
-    : positions_(static_cast<std::uint32_t>(boxes.size())), stride_(boxes.size() + 4),
-      data_(std::size_t(kRows) * (boxes.size() + 4), T(0)), has_(boxes.size() + 4, 0), path_(activeCullPath()) {
-  for (std::size_t p = 0; p < boxes.size(); ++p) {
-    if (!has[p]) continue;
+OrientedCull<T>::OrientedCull(std::uint32_t positions, const BoxAt& boxAt)
+    : positions_(positions), stride_(std::size_t(positions) + 4),
+      data_(std::size_t(kRows) * (std::size_t(positions) + 4), T(0)), has_(std::size_t(positions) + 4, 0),
+      path_(activeCullPath()) {
+  OrientedBox<T> box;
+  for (std::uint32_t p = 0; p < positions; ++p) {
+    if (!boxAt(p, box)) continue;
     has_[p] = 1;
     for (int c = 0; c < 4; ++c)
-      for (int a = 0; a < 3; ++a) data_[std::size_t(3 * c + a) * stride_ + p] = boxes[p].column[c][a];
-    for (int a = 0; a < 3; ++a) data_[std::size_t(12 + a) * stride_ + p] = boxes[p].extent[a];
+      for (int a = 0; a < 3; ++a) data_[std::size_t(3 * c + a) * stride_ + p] = box.column[c][a];
+    for (int a = 0; a < 3; ++a) data_[std::size_t(12 + a) * stride_ + p] = box.extent[a];
   }
 }
+
+template <typename T>
+OrientedCull<T>::OrientedCull(const std::vector<OrientedBox<T>>& boxes, const std::vector<bool>& has)
+    : OrientedCull(static_cast<std::uint32_t>(boxes.size()), [&](std::uint32_t p, OrientedBox<T>& box) {
+        box = boxes[p];
+        return bool(has[p]);
+      }) {}
 
 template <typename T>
 bool OrientedCull<T>::keepOne(std::uint32_t p, const Ray<T>& ray, T tmin, T tmax) const {

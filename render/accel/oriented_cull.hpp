@@ -27,6 +27,7 @@
 //   front-to-back walk shrinks while a leaf's items are visited; the cull
 //   used the larger one), never the other way: which hit wins is unchanged.
 #include <cstdint>
+#include <functional>
 #include <type_traits>
 #include <vector>
 
@@ -59,8 +60,12 @@ template <typename T>
 class OrientedCull {
  public:
   OrientedCull() = default;
-  // boxes[p], has[p]: the box of the item at position p of the BVH's item
-  // order, and whether it has one.
+  // boxAt(p, box): fills the box of the item at position p of the BVH's item
+  // order and says whether it has one. Each box goes straight into the rows,
+  // so no second copy of them is held while the cull is made.
+  using BoxAt = std::function<bool(std::uint32_t position, OrientedBox<T>& box)>;
+  OrientedCull(std::uint32_t positions, const BoxAt& boxAt);
+  // boxes[p], has[p]: the same from lists (tests).
   OrientedCull(const std::vector<OrientedBox<T>>& boxes, const std::vector<bool>& has);
 
   bool empty() const { return positions_ == 0; }

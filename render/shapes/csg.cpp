@@ -161,11 +161,13 @@ class UnionNode final : public UnionCore<T, UnionNode<T>, CsgNode<T>> {
     const bool lanesRun = path == CullPath::Lanes && (!std::is_same_v<T, double> || doubleLanesRun());
     if (!(path == CullPath::Portable || lanesRun)) return;
     const auto& items = bvh_.items();
-    std::vector<OrientedBox<T>> boxes(items.size());
-    std::vector<bool> has(items.size(), false);
+    const auto boxAt = [&](std::uint32_t p, OrientedBox<T>& box) { return finite_[items[p]]->orientedBox(box); };
+    // Rows only where some item has a box; each box is then read again
+    // rather than held twice (a scatter of 5000 lattices: 600 KB a copy).
+    OrientedBox<T> probe;
     bool any = false;
-    for (std::size_t p = 0; p < items.size(); ++p) any |= has[p] = finite_[items[p]]->orientedBox(boxes[p]);
-    if (any) cull_ = OrientedCull<T>(boxes, has);
+    for (std::uint32_t p = 0; p < items.size() && !any; ++p) any = boxAt(p, probe);
+    if (any) cull_ = OrientedCull<T>(static_cast<std::uint32_t>(items.size()), boxAt);
   }
 
   UnionBvh<T> bvh_;
