@@ -81,11 +81,16 @@ class WideBvh {
           stack[top++] = node.ref[lane];
           continue;
         }
-        for (std::uint32_t n = 0; n < node.count[lane]; n += 4) {
-          const std::uint32_t first = node.ref[lane] + n, count = std::min<std::uint32_t>(4, node.count[lane] - n);
-          const unsigned kept = keep(first, count, tmin, tmax);
-          for (std::uint32_t k = 0; k < count; ++k)
-            if ((kept >> k & 1u) && visit(items_[first + k])) return true;
+        if constexpr (kKeepsAll<Keep>) {  // no cull: the plain loop (the firmware counts its instructions)
+          for (std::uint32_t n = 0; n < node.count[lane]; ++n)
+            if (visit(items_[node.ref[lane] + n])) return true;
+        } else {
+          for (std::uint32_t n = 0; n < node.count[lane]; n += 4) {
+            const std::uint32_t first = node.ref[lane] + n, count = std::min<std::uint32_t>(4, node.count[lane] - n);
+            const unsigned kept = keep(first, count, tmin, tmax);
+            for (std::uint32_t k = 0; k < count; ++k)
+              if ((kept >> k & 1u) && visit(items_[first + k])) return true;
+          }
         }
       }
     }
@@ -118,13 +123,20 @@ class WideBvh {
       const Entry e = stack[--top];
       if (!(T(e.t) < limit)) continue;  // starts at or beyond the nearest hit found since it was pushed
       if (e.count > 0) {
-        for (std::uint32_t n = 0; n < e.count; n += 4) {
-          const std::uint32_t first = e.ref + n, count = std::min<std::uint32_t>(4, e.count - n);
-          const unsigned kept = keep(first, count, tmin, limit);
-          for (std::uint32_t k = 0; k < count; ++k) {
-            if (!(kept >> k & 1u)) continue;
-            visit(items_[first + k], limit);
+        if constexpr (kKeepsAll<Keep>) {
+          for (std::uint32_t n = 0; n < e.count; ++n) {
+            visit(items_[e.ref + n], limit);
             if (!(limit > tmin)) return;
+          }
+        } else {
+          for (std::uint32_t n = 0; n < e.count; n += 4) {
+            const std::uint32_t first = e.ref + n, count = std::min<std::uint32_t>(4, e.count - n);
+            const unsigned kept = keep(first, count, tmin, limit);
+            for (std::uint32_t k = 0; k < count; ++k) {
+              if (!(kept >> k & 1u)) continue;
+              visit(items_[first + k], limit);
+              if (!(limit > tmin)) return;
+            }
           }
         }
         continue;
@@ -150,6 +162,8 @@ class WideBvh {
   struct KeepAll {
     unsigned operator()(std::uint32_t, std::uint32_t, T, T) const { return ~0u; }
   };
+  template <typename Keep>
+  static constexpr bool kKeepsAll = std::is_same_v<std::decay_t<Keep>, KeepAll>;
 
   std::uint32_t collapse(const Bvh<T>& binary, std::uint32_t index, int depth);
 
