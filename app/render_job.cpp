@@ -35,8 +35,8 @@ namespace {
 // (keeping its shape) to fit the device's screen (a SizeFitted event).
 RenderSettings renderSettings(const RenderJob& job, const SceneDesc& scene, int deviceWidth, int deviceHeight) {
   RenderSettings s = job.render;
-  s.width = job.render.width > 0 ? job.render.width : scene.options.width;
-  s.height = job.render.height > 0 ? job.render.height : scene.options.height;
+  if (s.width <= 0) s.width = scene.options.width;
+  if (s.height <= 0) s.height = scene.options.height;
   if (deviceWidth > 0 && (s.width > deviceWidth || s.height > deviceHeight)) {
     if (job.render.width > 0 || job.render.height > 0)
       throw Error(ErrorKind::Usage,

@@ -41,7 +41,6 @@ struct RenderFlags {
   std::string device = "png";
   bool noLatticeShadows = false;
   bool lhtStats = false;
-  SettingFlagValues tables;  // the lattice tables' flags, as typed (loader/table_settings.hpp)
   std::string memoryBudget;  // as typed
   PipelineArgs pipeline;
   io::SerialOptions serial;
@@ -146,8 +145,8 @@ void defineFlags(CLI::App& cmd, RenderFlags& f) {
                "compared with")->group(kLatticeGroup);
   cmd.add_flag("--no-lattice-shadows", f.noLatticeShadows, "Lattices cast no shadows, as particles (thesis plate 3)")
       ->group(kLatticeGroup);
-  addSettingFlags(&cmd, lht::tableSettings(), lht::tableSettings().initial(), f.tables,
-                  settableKeys(lht::tableSettings()), kLatticeGroup);
+  // The lattice tables' flags write j.tables as they are read (loader/table_settings.hpp).
+  addSettingFlagsInto(&cmd, lht::tableSettings(), j.tables, settableKeys(lht::tableSettings()), kLatticeGroup);
   cmd.add_flag("--lht-stats", f.lhtStats,
                "After rendering, print per lattice: look-ups, hits, misses, distinct (p_i, p_o) asked, entries "
                "referenced (share of N_iz) and look-ups per entry: how much of a table a render uses, to choose "
@@ -191,7 +190,6 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
   RenderJob job = f.job;
   if (f.device != "png") job.output.device = f.device;
   job.render.build.latticeShadows = !f.noLatticeShadows;
-  applySettingFlags(lht::tableSettings(), job.tables, f.tables);
   if (f.lhtStats) job.tables.stats = std::make_shared<lht::LookupStatsBook>();
   if (cmd.count("--lht-cache") > 0 && job.tables.form != lht::LhtForm::OnDemand)
     fmt::print(stderr,
