@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <string_view>
 
 #include "foundation/error.hpp"
 #include "foundation/system/atomic_file.hpp"
@@ -48,14 +49,15 @@ void checkOutputPath(const std::string& path, const std::string& flag, bool forc
 namespace {
 
 // An option checked with CLI::ExistingFile reads a file (`term --stream`
-// plays one): it is an input, whatever its name.
-bool namesExistingFile(CLI::Option& option) {
-  try {
-    option.get_validator("FILE");
-    return true;
-  } catch (const CLI::OptionNotFound&) {
-    return false;
-  }
+// plays one): it is an input, whatever its name. Read from the type name,
+// where CLI11 appends each validator's description (":FILE" for that one),
+// not from get_validator, which throws for every option without it: the
+// first exception a static build throws makes the unwinder read all of
+// .eh_frame and keep a sorted index of it on the heap (docs/memory.md).
+bool namesExistingFile(const CLI::Option& option) {
+  const std::string type = option.get_type_name();
+  const std::string_view marker = ":FILE";
+  return type.size() >= marker.size() && std::string_view(type).substr(type.size() - marker.size()) == marker;
 }
 
 }  // namespace

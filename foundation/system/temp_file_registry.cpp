@@ -11,11 +11,14 @@ namespace lattice {
 namespace {
 
 // state: 0 free, 1 being filled, 2 live (the handler reads only live slots).
+// constinit with a zeroed path: all zero bits, so the table is .bss that no
+// start-up code writes (without it GCC stores each state at start-up, one
+// per page: 256 KiB resident before main).
 struct Slot {
   std::atomic<int> state{0};
-  char path[TempFileRegistry::kPathBytes];
+  char path[TempFileRegistry::kPathBytes]{};
 };
-Slot slots[TempFileRegistry::kSlots];
+constinit Slot slots[TempFileRegistry::kSlots];
 constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
 
 extern "C" void unlinkTemporariesAndReraise(int signal) {
