@@ -57,34 +57,7 @@ peak() {  # command... -> the largest max RSS (KiB) of $runs runs
 
 # Where the peak is: resident KiB per mapping at the sampled maximum.
 breakdown() {
-  python3 - "$@" <<'EOF'
-import re, subprocess, sys, time
-proc = subprocess.Popen(sys.argv[1:], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-best_total, best = 0, ""
-while proc.poll() is None:
-    try:
-        with open(f"/proc/{proc.pid}/smaps") as f:
-            smaps = f.read()
-    except OSError:
-        break
-    total = sum(int(k) for k in re.findall(r"^Rss:\s+(\d+)", smaps, re.M))
-    if total > best_total:
-        best_total, best = total, smaps
-    time.sleep(0.01)
-if proc.wait() != 0:
-    sys.exit("memory.sh: the sampled run failed")
-per, name = {}, None
-for line in best.splitlines():
-    if re.match(r"^[0-9a-f]+-[0-9a-f]+ ", line):
-        fields = line.split()
-        name = fields[5] if len(fields) > 5 else "[anonymous]"
-    elif line.startswith("Rss:"):
-        per[name] = per.get(name, 0) + int(line.split()[1])
-code = sum(v for k, v in per.items() if k.startswith("/"))
-print(f"    sampled peak {best_total} KiB = code {code} KiB + data {best_total - code} KiB")
-for k, v in sorted(per.items(), key=lambda kv: -kv[1])[:10]:
-    print(f"    {v:>6} KiB  {k}")
-EOF
+  python3 "$root/bench/peak_mappings.py" "$@"
 }
 
 report() {  # label kib

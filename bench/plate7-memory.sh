@@ -5,7 +5,7 @@
 # rendered at 512x512 on one thread through the Tek 4125 driver into a stream
 # file, quantizer mode passes, no dither, the small histogram: the board's
 # lowest-memory way to render it. The target is 8 MiB (8192 KiB).
-#   bench/plate7-memory.sh [--lattice BIN] [--before BIN] [--runs N] [--out FILE]
+#   bench/plate7-memory.sh [--lattice BIN] [--before BIN] [--runs N] [--mappings] [--out FILE]
 # --lattice: the binary measured (default build-static/app/lattice, the static
 # build bench/memory.sh configures; build it with that script or
 # `cmake -S . -B build-static -DLATTICE_STATIC=ON ...`). --before: a second
@@ -13,6 +13,9 @@
 # a change of the machine's state hits both alike. Prints each binary's
 # "Maximum resident set size" (/usr/bin/time) for every run, the median and
 # range, and whether every stream of both binaries is the same file (cmp).
+# --mappings: then, for each binary, one more run sampled by
+# bench/peak_mappings.py: its mappings at the sampled peak (the executable's
+# code and read-only data apart from the heap and the other anonymous memory).
 # The page cache's folio sizes make a binary's code pages count differently
 # by a few hundred KiB from copy to copy, so both binaries are copied into
 # the work folder the same way before they run.
@@ -23,7 +26,8 @@ lattice="$root/build-static/app/lattice"
 before=""
 runs=5
 out=""
-bench_parse --lattice=lattice --before=before --runs=runs --out=out -- "$@"
+mappings=0
+bench_parse --lattice=lattice --before=before --runs=runs --mappings:mappings=1 --out=out -- "$@"
 bench_positive --runs "$runs"
 bench_need_time
 [[ -x $lattice ]] || bench_die "no lattice binary at $lattice (give --lattice BIN; bench/memory.sh builds build-static/)"
@@ -70,6 +74,12 @@ run() {
     printf '| %s | %s| %s | %s | %+d |\n' "$n" "${kib[$n]}" "$median" "$range" "$((${median%.*} - 8192))"
   done
   echo "every stream the same file: yes"
+  if ((mappings)); then
+    for n in "${names[@]}"; do
+      echo "$n, mappings at the sampled peak:"
+      python3 "$root/bench/peak_mappings.py" "$work/$n" render "$work/plate7.toml" "${args[@]}" --stream "$work/$n.tek"
+    done
+  fi
   echo "# load at the end $(bench_loadavg)"
 }
 
