@@ -20,6 +20,18 @@ if ldd "$static" >/dev/null 2>&1; then
   ldd "$static" >&2
   exit 1
 fi
+# The code a render runs sits together (app/CMakeLists.txt links with lld and
+# app/hot-code.order; docs/memory.md, "Code pages"): the listed functions span
+# at most 1.5 times their own bytes (1.2 linked so, 3.7 without the order).
+if command -v ld.lld >/dev/null; then
+  nm --defined-only -S -t d "$static" | awk -v bin="$static" 'NR == FNR { if ($0 !~ /^#/ && NF) want[$1] = 1; next }
+    NF == 4 && ($4 in want) && !seen[$4]++ { a = $1 + 0; s = $2 + 0; sum += s; if (n++ == 0 || a < lo) lo = a; if (a + s > hi) hi = a + s }
+    END { printf "check-static.sh: %d hot functions, %d bytes, spanning %d bytes of %s\n", n, sum, hi - lo, bin
+          if (n == 0 || hi - lo > 1.5 * sum) { print "check-static.sh: the hot code is scattered; is app/hot-code.order passed to lld?"; exit 1 } }' \
+    app/hot-code.order - || exit 1
+else
+  echo "check-static.sh: ld.lld is missing, so the hot code is not grouped and not checked (scripts/setup.sh installs lld)"
+fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 args=(render "$root/scenes/hook.toml" --device tek4125 --width 256 --height 256 --quiet)

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Lattice builds and tests with, only those
-# missing, so it is safe to run again and again. gnuplot-nox: the Tek 4125
+# missing, so it is safe to run again and again. lld links the static build
+# with its hot code side by side (docs/memory.md, "Code pages"). gnuplot-nox: the Tek 4125
 # emulator's tests decode the streams its tek410x and tek40xx terminals
 # write. `--terminals` adds the terminals people own and the programs that
 # check our pictures of them: libsixel-bin (sixel2png, img2sixel), xterm, xvfb
@@ -27,7 +28,7 @@
 set -euo pipefail
 
 packages=(cmake ninja-build g++ make pkg-config git catch2 libglm-dev libpng-dev zlib1g-dev libusb-1.0-0-dev
-          libtomlplusplus-dev libcli11-dev libfmt-dev gnuplot-nox)
+          libtomlplusplus-dev libcli11-dev libfmt-dev gnuplot-nox lld)
 for option in "$@"; do
   case $option in
     --terminals) packages+=(libsixel-bin xterm xvfb x11-apps plotutils) ;;
