@@ -1,4 +1,4 @@
-// The 4-wide float BVH against a brute-force loop over every box, tested the
+// The 4- and 8-wide float BVHs against a brute-force loop over every box, tested the
 // way the binary double walk tested them (SlabTest<double>): on thousands of
 // random rays, rays lying in box faces and along box edges, axis-parallel
 // rays with +0 and -0 direction components, and rays starting inside boxes,
@@ -143,9 +143,9 @@ bool nearHit(const Bounds<double>& b, const TestRay& r) {
 }
 
 template <typename T>
-void checkAgainstBruteForce(const Boxes& source, unsigned seed) {
+void checkAgainstBruteForce(const Boxes& source, unsigned seed, WideForm form) {
   const std::vector<Bounds<T>> boxes = asT<T>(source);
-  const WideBvh<T> bvh(boxes);
+  const WideBvh<T> bvh(boxes, form);
   Boxes exact;  // the boxes as T holds them, in double
   for (const auto& b : boxes) exact.push_back({Vec3d(b.lo), Vec3d(b.hi)});
   std::size_t bruteHits = 0, extras = 0, nearestFound = 0;
@@ -211,7 +211,7 @@ void checkAgainstBruteForce(const Boxes& source, unsigned seed) {
 
 TEMPLATE_TEST_CASE("the wide BVH visits every box a brute-force loop hits, on random and grazing rays", "[bvh]", float,
                    double) {
-  checkAgainstBruteForce<TestType>(randomBoxes(3000, 3), 11);
+  for (WideForm form : {WideForm::Four, WideForm::Eight}) checkAgainstBruteForce<TestType>(randomBoxes(3000, 3), 11, form);
 }
 
 TEMPLATE_TEST_CASE("the wide BVH loses no box of hair-like long thin boxes", "[bvh]", float, double) {
@@ -225,20 +225,20 @@ TEMPLATE_TEST_CASE("the wide BVH loses no box of hair-like long thin boxes", "[b
     Vec3d a = d * 3.0, b = d * 4.5;
     boxes.push_back({componentMin(a, b) - 0.02, componentMax(a, b) + 0.02});
   }
-  checkAgainstBruteForce<TestType>(boxes, 12);
+  for (WideForm form : {WideForm::Four, WideForm::Eight}) checkAgainstBruteForce<TestType>(boxes, 12, form);
 }
 
-TEMPLATE_TEST_CASE("wide BVH lanes hold their items' boxes rounded outwards, each item once", "[bvh]", float, double) {
-  using T = TestType;
-  const std::vector<Bounds<T>> boxes = asT<T>(randomBoxes(3000, 5));
-  const WideBvh<T> bvh(boxes);
+// Every lane's box holds its subtree's item boxes, and each item is reached once.
+template <typename T, typename NodeT>
+void checkLanes(const WideBvh<T>& bvh, const std::vector<NodeT>& nodes, const std::vector<Bounds<T>>& boxes) {
+  REQUIRE(!nodes.empty());
   std::multiset<std::uint32_t> items(bvh.items().begin(), bvh.items().end());
   REQUIRE(items.size() == boxes.size());
   std::size_t reached = 0;
   std::function<void(std::uint32_t)> check = [&](std::uint32_t index) {
-    const auto& node = bvh.nodes()[index];
+    const auto& node = nodes[index];
     REQUIRE(node.used != 0);
-    for (int lane = 0; lane < 4; ++lane) {
+    for (int lane = 0; lane < NodeT::kLanes; ++lane) {
       if (!(node.used & (1u << lane))) continue;
       auto inside = [&](const Bounds<T>& b) {
         for (int a = 0; a < 3; ++a) {
@@ -261,6 +261,26 @@ TEMPLATE_TEST_CASE("wide BVH lanes hold their items' boxes rounded outwards, eac
   REQUIRE(bvh.depth() < 20);  // 3000 boxes: a wide log-depth tree, not a list
 }
 
+TEMPLATE_TEST_CASE("wide BVH lanes hold their items' boxes rounded outwards, each item once", "[bvh]", float, double) {
+  using T = TestType;
+  const std::vector<Bounds<T>> boxes = asT<T>(randomBoxes(3000, 5));
+  const WideBvh<T> four(boxes, WideForm::Four);
+  REQUIRE(four.form() == WideForm::Four);
+  checkLanes(four, four.nodes(), boxes);
+#if LATTICE_WIDE8
+  if (!eightWideRuns()) {
+    WARN("skipped: this CPU has no AVX2, so no 8-wide tree is built");
+    return;
+  }
+  const WideBvh<T> eight(boxes, WideForm::Eight);
+  REQUIRE(eight.form() == WideForm::Eight);
+  REQUIRE(eight.nodes().empty());
+  checkLanes(eight, eight.nodes8(), boxes);
+  REQUIRE(eight.depth() <= four.depth());
+  REQUIRE(eight.nodes8().size() < four.nodes().size());
+#endif
+}
+
 TEMPLATE_TEST_CASE("the wide BVH's depth bound holds on degenerate inputs", "[bvh]", float, double) {
   using T = TestType;
   const int n = 20000;
@@ -270,12 +290,14 @@ TEMPLATE_TEST_CASE("the wide BVH's depth bound holds on degenerate inputs", "[bv
     line.push_back({Vec3<T>(T(i), T(0), T(0)), Vec3<T>(T(i + 1), T(1), T(1))});  // touching, in a row
     point.push_back({Vec3<T>(T(0)), Vec3<T>(T(0))});                            // zero volume, all equal
   }
-  for (const auto* boxes : {&equal, &line, &point}) {
-    const WideBvh<T> bvh(*boxes);
-    // The stack holds at most 3 * depth + 1 entries.
+  for (const auto* boxes : {&equal, &line, &point})
+  for (WideForm form : {WideForm::Four, WideForm::Eight}) {
+    const WideBvh<T> bvh(*boxes, form);
+    // The stack holds at most (lanes - 1) * depth + 1 entries.
     REQUIRE(bvh.depth() <= bvh.binaryDepth());
     REQUIRE(bvh.binaryDepth() <= Bvh<T>::kMaxDepth);
     REQUIRE(3 * bvh.depth() + 1 <= WideBvh<T>::kStack);
+    REQUIRE(7 * bvh.depth() + 1 <= WideBvh<T>::kStack8);
     REQUIRE(bvh.depth() <= 2 * int(std::ceil(std::log2(double(n)))));
     // A ray through every box visits each exactly once, in either walk.
     const Ray<T> ray{Vec3<T>(T(-1), T(0.5), T(0.5)), Vec3<T>(T(1), T(0), T(0))};
