@@ -18,6 +18,17 @@ double halfArea(const Bounds<T>& b) {
   return e.x * e.y + e.y * e.z + e.z * e.x;
 }
 
+// The number of items under each binary node (a subtree's items are one run
+// of items(), starting at its leftmost leaf's first).
+template <typename T>
+std::vector<std::uint32_t> subtreeSizes(const Bvh<T>& binary) {
+  const auto& bn = binary.nodes();
+  std::vector<std::uint32_t> size(bn.size(), 0);
+  for (std::size_t n = bn.size(); n-- > 0;)  // children come after their parent
+    size[n] = bn[n].count > 0 ? bn[n].count : size[n + 1] + size[bn[n].first];
+  return size;
+}
+
 }  // namespace
 
 void setWideForm(WideForm form) { autoForm.store(form, std::memory_order_relaxed); }
@@ -46,22 +57,29 @@ WideBvh<T>::WideBvh(const std::vector<Bounds<T>>& boxes, WideForm form) {
 #if LATTICE_WIDE8
   if (resolveWideForm(form) == WideForm::Eight) {
     nodes8_.reserve(binary.nodes().size() / 4 + 1);
-    collapse(nodes8_, binary, 0, 1);
+    collapse(nodes8_, binary, subtreeSizes(binary), 0, 1);
     return;
   }
 #else
   (void)form;
 #endif
   nodes_.reserve(binary.nodes().size() / 2 + 1);
-  collapse(nodes_, binary, 0, 1);
+  collapse(nodes_, binary, {}, 0, 1);
 }
 
 template <typename T>
 template <typename NodeT>
-std::uint32_t WideBvh<T>::collapse(std::vector<NodeT>& out, const Bvh<T>& binary, std::uint32_t index, int depth) {
+std::uint32_t WideBvh<T>::collapse(std::vector<NodeT>& out, const Bvh<T>& binary,
+                                   const std::vector<std::uint32_t>& sizes, std::uint32_t index, int depth) {
   constexpr int kLanes = NodeT::kLanes;
   depth_ = std::max(depth_, depth);
   const auto& bn = binary.nodes();
+  // A subtree of at most kLaneItems items is one leaf lane (sizes given).
+  const auto isLeaf = [&](std::uint32_t k) { return bn[k].count > 0 || (!sizes.empty() && sizes[k] <= kLaneItems); };
+  const auto firstItem = [&](std::uint32_t k) {
+    while (bn[k].count == 0) k = k + 1;  // the leftmost leaf
+    return bn[k].first;
+  };
   // The binary children this wide node takes; a binary leaf at the root is
   // its one lane.
   std::uint32_t kids[kLanes];
@@ -75,7 +93,7 @@ std::uint32_t WideBvh<T>::collapse(std::vector<NodeT>& out, const Bvh<T>& binary
   while (n < kLanes) {
     int open = -1;
     for (int k = 0; k < n; ++k)
-      if (bn[kids[k]].count == 0 && (open < 0 || halfArea(bn[kids[k]].box) > halfArea(bn[kids[open]].box))) open = k;
+      if (!isLeaf(kids[k]) && (open < 0 || halfArea(bn[kids[k]].box) > halfArea(bn[kids[open]].box))) open = k;
     if (open < 0) break;
     const std::uint32_t opened = kids[open];
     kids[open] = opened + 1;  // keeps left before right, the binary tree's order
@@ -98,11 +116,12 @@ std::uint32_t WideBvh<T>::collapse(std::vector<NodeT>& out, const Bvh<T>& binary
       out[self].lanes.box[1][a][lane] = floatAbove(child.box.hi[a]);
     }
     out[self].used |= 1u << lane;
-    if (child.count > 0) {
-      out[self].ref[lane] = child.first;
-      out[self].count[lane] = static_cast<std::remove_reference_t<decltype(out[self].count[lane])>>(child.count);
+    if (isLeaf(kids[lane])) {
+      out[self].ref[lane] = firstItem(kids[lane]);
+      out[self].count[lane] =
+          static_cast<std::remove_reference_t<decltype(out[self].count[lane])>>(child.count > 0 ? child.count : sizes[kids[lane]]);
     } else {
-      const std::uint32_t wide = collapse(out, binary, kids[lane], depth + 1);  // may reallocate out
+      const std::uint32_t wide = collapse(out, binary, sizes, kids[lane], depth + 1);  // may reallocate out
       out[self].ref[lane] = wide;
       out[self].count[lane] = 0;
     }

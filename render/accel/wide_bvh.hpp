@@ -13,7 +13,11 @@
 //    there are four (eight) or only binary leaves remain (the usual collapse
 //    of a binary SAH tree, as Embree's BVH4 and BVH8 builders and Wald et al.,
 //    "Getting rid of packets", 2008, describe). Binary leaves (up to 4 items)
-//    become leaf lanes. Each wide level eats at least one binary level, so
+//    become leaf lanes; in the 8-wide form a whole binary subtree of at most
+//    kLaneItems (4) items does too (its items are one run of items()): the
+//    SAH splits pairs and triples the leaf cull (four items a pass) answers
+//    at once, so a lane and a cull pass replace a node test and up to four
+//    one-item passes. Each wide level eats at least one binary level, so
 //    the depth is at most the binary tree's (Bvh::kMaxDepth).
 //  * Width, chosen at run time: eight where the CPU has AVX2
 //    (__builtin_cpu_supports, once), else four; the firmware and other
@@ -134,6 +138,9 @@ class WideBvh {
   // A node pushes at most kLanes entries and pops one.
   static constexpr int kStack = 4 * Bvh<T>::kMaxDepth;
   static constexpr int kStack8 = 8 * Bvh<T>::kMaxDepth;
+  // An 8-wide leaf lane holds a whole binary subtree of at most this many items
+  // (one leaf cull pass; 8 measured slower on Plate 6, bench/results/2026-12-04-bvh8.md).
+  static constexpr std::uint32_t kLaneItems = 4;
 
  private:
   struct KeepAll {
@@ -252,7 +259,8 @@ class WideBvh {
 #endif
 
   template <typename NodeT>
-  std::uint32_t collapse(std::vector<NodeT>& out, const Bvh<T>& binary, std::uint32_t index, int depth);
+  std::uint32_t collapse(std::vector<NodeT>& out, const Bvh<T>& binary, const std::vector<std::uint32_t>& sizes,
+                         std::uint32_t index, int depth);
 
   std::vector<Node> nodes_;
 #if LATTICE_WIDE8

@@ -183,11 +183,20 @@ TEST_CASE("the width is chosen at run time and falls back to four lanes", "[bvh]
   REQUIRE(!forced.nodes().empty());
   const WideBvh<double> chosen(boxes);
   REQUIRE(chosen.form() == (eightWideRuns() ? WideForm::Eight : WideForm::Four));
-  // Either answers: the walk follows the form the tree was built in.
+  // Either answers (the items whose own box the ray meets): the walk follows
+  // the form the tree was built in.
   const Ray<double> ray{Vec3d(-20, 0.1, 0.2), (boxes[3].lo + boxes[3].hi) * 0.5 - Vec3d(-20, 0.1, 0.2)};
+  const SlabTest<double> slab(ray);
   std::vector<std::uint32_t> a, b;
-  forced.visitAll(ray, 0.0, 1e9, [&](std::uint32_t item) { return a.push_back(item), false; });
-  chosen.visitAll(ray, 0.0, 1e9, [&](std::uint32_t item) { return b.push_back(item), false; });
+  auto metBy = [&](std::vector<std::uint32_t>& met) {
+    return [&](std::uint32_t item) {
+      double t;
+      if (slab.clip(boxes[item], 0.0, 1e9, t)) met.push_back(item);
+      return false;
+    };
+  };
+  forced.visitAll(ray, 0.0, 1e9, metBy(a));
+  chosen.visitAll(ray, 0.0, 1e9, metBy(b));
   std::sort(a.begin(), a.end());
   std::sort(b.begin(), b.end());
   REQUIRE(!a.empty());

@@ -247,6 +247,7 @@ void checkLanes(const WideBvh<T>& bvh, const std::vector<NodeT>& nodes, const st
         }
       };
       if (node.count[lane] > 0) {
+        REQUIRE(node.count[lane] <= 4);  // one leaf cull pass
         for (std::uint32_t n = 0; n < node.count[lane]; ++n) inside(boxes[bvh.items()[node.ref[lane] + n]]);
         reached += node.count[lane];
       } else {
