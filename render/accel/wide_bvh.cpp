@@ -49,7 +49,7 @@ WideForm resolveWideForm(WideForm form) {
 }
 
 template <typename T>
-WideBvh<T>::WideBvh(const std::vector<Bounds<T>>& boxes, WideForm form) {
+WideBvh<T>::WideBvh(const std::vector<Bounds<T>>& boxes, WideForm form, LeafItems leaves) {
   if (boxes.empty()) return;
   const Bvh<T> binary(boxes);
   items_.assign(binary.items().begin(), binary.items().end());
@@ -57,11 +57,11 @@ WideBvh<T>::WideBvh(const std::vector<Bounds<T>>& boxes, WideForm form) {
 #if LATTICE_WIDE8
   if (resolveWideForm(form) == WideForm::Eight) {
     nodes8_.reserve(binary.nodes().size() / 4 + 1);
-    collapse(nodes8_, binary, subtreeSizes(binary), 0, 1);
+    collapse(nodes8_, binary, leaves == LeafItems::Culled ? subtreeSizes(binary) : std::vector<std::uint32_t>{}, 0, 1);
     return;
   }
 #else
-  (void)form;
+  (void)form, (void)leaves;
 #endif
   nodes_.reserve(binary.nodes().size() / 2 + 1);
   collapse(nodes_, binary, {}, 0, 1);

@@ -13,11 +13,13 @@
 //    there are four (eight) or only binary leaves remain (the usual collapse
 //    of a binary SAH tree, as Embree's BVH4 and BVH8 builders and Wald et al.,
 //    "Getting rid of packets", 2008, describe). Binary leaves (up to 4 items)
-//    become leaf lanes; in the 8-wide form a whole binary subtree of at most
+//    become leaf lanes; in the 8-wide form, where the caller culls a leaf's
+//    items (LeafItems::Culled), a whole binary subtree of at most
 //    kLaneItems (4) items does too (its items are one run of items()): the
 //    SAH splits pairs and triples the leaf cull (four items a pass) answers
 //    at once, so a lane and a cull pass replace a node test and up to four
-//    one-item passes. Each wide level eats at least one binary level, so
+//    one-item passes. Without a cull the merged items would each be visited,
+//    and that measured slower, so those trees keep the binary leaves. Each wide level eats at least one binary level, so
 //    the depth is at most the binary tree's (Bvh::kMaxDepth).
 //  * Width, chosen at run time: eight where the CPU has AVX2
 //    (__builtin_cpu_supports, once), else four; the firmware and other
@@ -61,6 +63,10 @@ bool eightWideRuns();
 // What a tree built now with `form` gets: Four or Eight.
 WideForm resolveWideForm(WideForm form);
 
+// How a leaf's items are answered: Visited (each one the walk reaches), or
+// Culled (four at a time by the caller's keep(): render/accel/oriented_cull.hpp).
+enum class LeafItems { Visited, Culled };
+
 template <typename T>
 class WideBvh {
  public:
@@ -85,7 +91,8 @@ class WideBvh {
 
   WideBvh() = default;
   // boxes[n] is the box of item n; every box must be finite and non-empty.
-  explicit WideBvh(const std::vector<Bounds<T>>& boxes, WideForm form = WideForm::Auto);
+  explicit WideBvh(const std::vector<Bounds<T>>& boxes, WideForm form = WideForm::Auto,
+                   LeafItems leaves = LeafItems::Visited);
 
   bool empty() const { return nodes_.empty() && nodes8Empty(); }
   WideForm form() const { return nodes8Empty() ? WideForm::Four : WideForm::Eight; }
@@ -138,8 +145,9 @@ class WideBvh {
   // A node pushes at most kLanes entries and pops one.
   static constexpr int kStack = 4 * Bvh<T>::kMaxDepth;
   static constexpr int kStack8 = 8 * Bvh<T>::kMaxDepth;
-  // An 8-wide leaf lane holds a whole binary subtree of at most this many items
-  // (one leaf cull pass; 8 measured slower on Plate 6, bench/results/2026-12-04-bvh8.md).
+  // An 8-wide leaf lane of a culled tree holds a whole binary subtree of at most
+  // this many items (one leaf cull pass; 8 measured slower on Plate 6,
+  // bench/results/2026-12-04-bvh8.md).
   static constexpr std::uint32_t kLaneItems = 4;
 
  private:

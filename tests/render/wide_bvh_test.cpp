@@ -273,12 +273,24 @@ TEMPLATE_TEST_CASE("wide BVH lanes hold their items' boxes rounded outwards, eac
     WARN("skipped: this CPU has no AVX2, so no 8-wide tree is built");
     return;
   }
-  const WideBvh<T> eight(boxes, WideForm::Eight);
+  const WideBvh<T> eight(boxes, WideForm::Eight), culled(boxes, WideForm::Eight, LeafItems::Culled);
   REQUIRE(eight.form() == WideForm::Eight);
   REQUIRE(eight.nodes().empty());
   checkLanes(eight, eight.nodes8(), boxes);
+  checkLanes(culled, culled.nodes8(), boxes);
   REQUIRE(eight.depth() <= four.depth());
   REQUIRE(eight.nodes8().size() < four.nodes().size());
+  // Leaf lanes: the binary leaves, or (culled) whole subtrees of up to four.
+  const auto leafLanes = [](const auto& nodes) {
+    std::size_t lanes = 0;
+    for (const auto& node : nodes)
+      for (int lane = 0; lane < 8; ++lane) lanes += (node.used >> lane & 1u) && node.count[lane] > 0;
+    return lanes;
+  };
+  std::size_t binaryLeaves = 0;
+  for (const auto& node : Bvh<T>(boxes).nodes()) binaryLeaves += node.count > 0;
+  REQUIRE(leafLanes(eight.nodes8()) == binaryLeaves);
+  REQUIRE(leafLanes(culled.nodes8()) < binaryLeaves * 3 / 4);
 #endif
 }
 
