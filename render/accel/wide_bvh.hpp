@@ -164,7 +164,7 @@ class WideBvh {
                                       Visit& visit, Keep& keep) const {
     constexpr int kLanes = NodeT::kLanes;
     if (nodes.empty()) return false;
-    const WideRay wray(ray);
+    const WideRay wray = wideRayFor(nodes.front().lanes, ray);
     const float t0 = floatBelow(tmin), t1 = floatAbove(tmax);
     std::uint32_t stack[kLanes * Bvh<T>::kMaxDepth];
     int top = 0;
@@ -205,7 +205,7 @@ class WideBvh {
       std::uint32_t ref, count;
       float t;
     };
-    const WideRay wray(ray);
+    const WideRay wray = wideRayFor(nodes.front().lanes, ray);
     const float t0 = floatBelow(tmin);
     Entry stack[kLanes * Bvh<T>::kMaxDepth];
     int top = 0;

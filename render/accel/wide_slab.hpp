@@ -97,6 +97,7 @@ struct WideRay {
   float originNear[3], originFar[3], inverse[3];
   int nearSide[3];  // 0: the near plane is lo (direction >= +0); 1: hi
 
+  WideRay() = default;  // filled by wideRayAvx2 (render/accel/wide_slab8.hpp)
   template <typename T>
   [[gnu::always_inline]] explicit WideRay(const Ray<T>& ray) {
     for (int a = 0; a < 3; ++a) {
@@ -170,7 +171,12 @@ inline unsigned slabTest4Scalar(const BoxLanes& b, const WideRay& r, float tmin,
 #endif
 }
 
-// The walks of render/accel/wide_bvh.hpp name the test by the lanes' type.
+// The walks of render/accel/wide_bvh.hpp name the ray's set-up and the test
+// by the lanes' type.
+template <typename T>
+[[gnu::always_inline]] inline WideRay wideRayFor(const BoxLanes&, const Ray<T>& ray) {
+  return WideRay(ray);
+}
 [[gnu::always_inline]] inline unsigned slabTestLanes(const BoxLanes& b, const WideRay& r, float tmin, float limit,
                                                      float entry[4]) {
   return slabTest4(b, r, tmin, limit, entry);

@@ -5,17 +5,19 @@
 // duplicated boxes here) the first visited wins, and which that is depends on
 // how the binary tree's nodes are grouped (the 4-wide walk differs from the
 // binary one there too): the 8-wide winner must then be one of the tied
-// items, and the test counts how often it is not the 4-wide one's. Also: the AVX slab
-// test agrees bit for bit with the scalar reference lane by lane, and the
-// run-time choice of the width falls back to four lanes when asked to or
-// when the CPU has no AVX2 (checked against /proc/cpuinfo's flags).
+// items, and the test counts how often it is not the 4-wide one's. Also: the
+// AVX slab test and the AVX set-up of a ray agree bit for bit with the scalar
+// references, and the run-time choice of the width falls back to four lanes
+// when asked to or when the CPU has no AVX2 (checked against /proc/cpuinfo).
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <random>
 #include <sstream>
 #include <string>
+#include <type_traits>
 
 #include "render/accel/wide_bvh.hpp"
 
@@ -210,7 +212,47 @@ __attribute__((target("avx2"))) unsigned slabTest8(const BoxLanes8& b, const Wid
                                                    float entry[8]) {
   return slabTest8Avx2(b, r, tmin, limit, entry);
 }
+template <typename T>
+__attribute__((target("avx2"))) WideRay wideRay8(const Ray<T>& ray) {
+  return wideRayAvx2(ray);
+}
+
+// Every field of the AVX set-up equals the scalar constructor's, bit for bit.
+template <typename T>
+void checkWideRays() {
+  std::mt19937 rng(43);
+  std::uniform_real_distribution<double> pos(-10, 10), unit(0, 1);
+  std::uniform_int_distribution<int> exponent(-160, 130);  // below float subnormals to beyond float range
+  int rounded = 0;
+  for (int i = 0; i < 50000; ++i) {
+    Vec3d o, d;
+    for (int a = 0; a < 3; ++a) {
+      o[a] = pos(rng) * std::ldexp(1.0, i % 7 == 0 ? exponent(rng) : 0);
+      d[a] = pos(rng) * std::ldexp(1.0, i % 5 == 0 ? exponent(rng) : 0);
+      if (i % 9 == a) d[a] = unit(rng) < 0.5 ? 0.0 : -0.0;
+      if (i % 11 == a) o[a] = unit(rng) < 0.5 ? 0.0 : -0.0;
+      if (i % 13 == a) o[a] = double(float(o[a]));  // exactly a float
+    }
+    const Ray<T> ray{Vec3<T>(o), Vec3<T>(d)};
+    const WideRay scalar(ray), lanes = wideRay8(ray);
+    INFO("ray " << i);
+    REQUIRE(std::memcmp(scalar.inverse, lanes.inverse, sizeof scalar.inverse) == 0);
+    REQUIRE(std::memcmp(scalar.originNear, lanes.originNear, sizeof scalar.originNear) == 0);
+    REQUIRE(std::memcmp(scalar.originFar, lanes.originFar, sizeof scalar.originFar) == 0);
+    REQUIRE(std::memcmp(scalar.nearSide, lanes.nearSide, sizeof scalar.nearSide) == 0);
+    for (int a = 0; a < 3; ++a) rounded += scalar.originNear[a] != scalar.originFar[a];
+  }
+  if constexpr (std::is_same_v<T, double>) REQUIRE(rounded > 50000);  // the outward steps were taken
+}
 }  // namespace
+
+TEMPLATE_TEST_CASE("the AVX set-up of a ray is the scalar one's, bit for bit", "[bvh]", float, double) {
+  if (!eightWideRuns()) {
+    WARN("skipped: this CPU has no AVX2");
+    return;
+  }
+  checkWideRays<TestType>();
+}
 
 TEST_CASE("the AVX slab test of eight boxes is the scalar reference's, bit for bit", "[bvh]") {
   if (!eightWideRuns()) {
