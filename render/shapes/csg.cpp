@@ -87,7 +87,7 @@ class DifferenceNode final : public CsgNode<T> {
   }
 };
 
-// Inside any child. Children with finite boxes live in a BVH (4-wide with
+// Inside any child. Children with finite boxes live in a BVH (4- or 8-wide with
 // float boxes for float and double, binary for fixed point: UnionBvh), the
 // others (half-spaces, cylinders...) in a flat list that every ray visits.
 // The queries are render/shapes/union_core.hpp's.
