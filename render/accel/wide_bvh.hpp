@@ -19,8 +19,9 @@
 //    SAH splits pairs and triples the leaf cull (four items a pass) answers
 //    at once, so a lane and a cull pass replace a node test and up to four
 //    one-item passes. Without a cull the merged items would each be visited,
-//    and that measured slower, so those trees keep the binary leaves. Each wide level eats at least one binary level, so
-//    the depth is at most the binary tree's (Bvh::kMaxDepth).
+//    and that measured slower, so those trees keep the binary leaves. Each
+//    wide level eats at least one binary level, so the depth is at most the
+//    binary tree's (Bvh::kMaxDepth).
 //  * Width, chosen at run time: eight where the CPU has AVX2
 //    (__builtin_cpu_supports, once), else four; the firmware and other
 //    non-x86 builds have only the 4-wide form (LATTICE_WIDE8 is 0 there, so
@@ -78,8 +79,9 @@ class WideBvh {
     unsigned used = 0;            // bit n set when lane n holds a child
   };
 #if LATTICE_WIDE8
-  // The same for eight lanes; a leaf lane holds at most kLeafSize (4) items,
-  // so a byte counts them and the node is four cache lines.
+  // The same for eight lanes; a leaf lane holds at most four items (a binary
+  // leaf, or a grouped subtree), so a byte counts them and the node is four
+  // cache lines.
   struct Node8 {
     static constexpr int kLanes = 8;
     BoxLanes8 lanes;
