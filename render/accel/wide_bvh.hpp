@@ -79,14 +79,14 @@ class WideBvh {
     unsigned used = 0;            // bit n set when lane n holds a child
   };
 #if LATTICE_WIDE8
-  // The same for eight lanes; a leaf lane holds at most four items (a binary
-  // leaf, or a grouped subtree), so a byte counts them and the node is four
-  // cache lines.
+  // The same for eight lanes. A binary leaf holds four items or fewer except
+  // at the depth cap, where it takes whatever is left (hundreds of items for
+  // boxes spaced exponentially), so the counts are full words.
   struct Node8 {
     static constexpr int kLanes = 8;
     BoxLanes8 lanes;
     std::uint32_t ref[8] = {};
-    std::uint8_t count[8] = {};
+    std::uint32_t count[8] = {};
     unsigned used = 0;
   };
 #endif
