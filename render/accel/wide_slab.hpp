@@ -37,9 +37,10 @@
 //  * The entry returned per box is a lower bound of the exact entry (at least
 //    tmin), so a caller may skip a box whose entry is at or beyond its best
 //    hit so far.
-// The SSE path (x86-64, behind __SSE2__) and the scalar path (the Cortex-M3
-// firmware) do the same float operations in the same order, lane by lane, so
-// they cull the same boxes; tests/render/wide_bvh_test.cpp checks that.
+// The SSE path (x86-64, behind __SSE2__), the 8-lane AVX path
+// (render/accel/wide_slab8.hpp) and the scalar path (the Cortex-M3 firmware)
+// do the same float operations in the same order, lane by lane, so they cull
+// the same boxes; tests/render/wide_bvh_test.cpp and wide_bvh8_test.cpp check that.
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -96,6 +97,7 @@ struct WideRay {
   float originNear[3], originFar[3], inverse[3];
   int nearSide[3];  // 0: the near plane is lo (direction >= +0); 1: hi
 
+  WideRay() = default;  // filled by wideRayAvx2 (render/accel/wide_slab8.hpp)
   template <typename T>
   [[gnu::always_inline]] explicit WideRay(const Ray<T>& ray) {
     for (int a = 0; a < 3; ++a) {
@@ -110,15 +112,17 @@ struct WideRay {
   }
 };
 
-// Lane by lane, as the SSE path does: bit n of the result set when box n may
-// meet the segment, entry[n] a lower bound of where it does.
-inline unsigned slabTest4Scalar(const BoxLanes& b, const WideRay& r, float tmin, float limit, float entry[4]) {
+// Lane by lane, as the SSE and AVX paths do: bit n of the result set when box
+// n of W may meet the segment, entry[n] a lower bound of where it does.
+template <int W>
+inline unsigned slabTestScalar(const float (&box)[2][3][W], const WideRay& r, float tmin, float limit,
+                               float entry[W]) {
   unsigned mask = 0;
-  for (int lane = 0; lane < 4; ++lane) {
+  for (int lane = 0; lane < W; ++lane) {
     float c = tmin, e = limit;
     for (int a = 0; a < 3; ++a) {
-      const float tn = (b.box[r.nearSide[a]][a][lane] - r.originNear[a]) * r.inverse[a];
-      const float tf = (b.box[1 - r.nearSide[a]][a][lane] - r.originFar[a]) * r.inverse[a];
+      const float tn = (box[r.nearSide[a]][a][lane] - r.originNear[a]) * r.inverse[a];
+      const float tf = (box[1 - r.nearSide[a]][a][lane] - r.originFar[a]) * r.inverse[a];
       c = tn > c ? tn : c;  // NaN keeps the running bound
       e = tf < e ? tf : e;
     }
@@ -129,6 +133,9 @@ inline unsigned slabTest4Scalar(const BoxLanes& b, const WideRay& r, float tmin,
     entry[lane] = lo > tmin ? lo : tmin;
   }
   return mask;
+}
+inline unsigned slabTest4Scalar(const BoxLanes& b, const WideRay& r, float tmin, float limit, float entry[4]) {
+  return slabTestScalar<4>(b.box, r, tmin, limit, entry);
 }
 
 #if defined(__SSE2__)
@@ -162,6 +169,17 @@ inline unsigned slabTest4Scalar(const BoxLanes& b, const WideRay& r, float tmin,
 #else
   return slabTest4Scalar(b, r, tmin, limit, entry);
 #endif
+}
+
+// The walks of render/accel/wide_bvh.hpp name the ray's set-up and the test
+// by the lanes' type.
+template <typename T>
+[[gnu::always_inline]] inline WideRay wideRayFor(const BoxLanes&, const Ray<T>& ray) {
+  return WideRay(ray);
+}
+[[gnu::always_inline]] inline unsigned slabTestLanes(const BoxLanes& b, const WideRay& r, float tmin, float limit,
+                                                     float entry[4]) {
+  return slabTest4(b, r, tmin, limit, entry);
 }
 
 }  // namespace lattice

@@ -87,7 +87,7 @@ class DifferenceNode final : public CsgNode<T> {
   }
 };
 
-// Inside any child. Children with finite boxes live in a BVH (4-wide with
+// Inside any child. Children with finite boxes live in a BVH (4- or 8-wide with
 // float boxes for float and double, binary for fixed point: UnionBvh), the
 // others (half-spaces, cylinders...) in a flat list that every ray visits.
 // The queries are render/shapes/union_core.hpp's.
@@ -124,8 +124,12 @@ class UnionNode final : public UnionCore<T, UnionNode<T>, CsgNode<T>> {
       finite_.clear();
       boxes.clear();
     }
-    bvh_ = UnionBvh<T>(boxes);
-    if constexpr (std::is_floating_point_v<T>) keepOrientedBoxes();
+    if constexpr (std::is_floating_point_v<T>) {
+      bvh_ = UnionBvh<T>(boxes, WideForm::Auto, cullRuns() ? LeafItems::Culled : LeafItems::Visited);
+      keepOrientedBoxes();
+    } else {
+      bvh_ = UnionBvh<T>(boxes);
+    }
   }
 
   // What UnionCore asks.
@@ -156,18 +160,24 @@ class UnionNode final : public UnionCore<T, UnionNode<T>, CsgNode<T>> {
   // The children's oriented boxes in the BVH's item order, kept only where
   // the path in use reads them (render/accel/oriented_cull.hpp) and some
   // child has one: 120 bytes an item in double, 60 in float.
-  void keepOrientedBoxes() {
+  // Whether the leaves will be culled: the path in use reads the rows and some
+  // child has an oriented box (the BVH then groups small subtrees for it).
+  bool cullRuns() const {
     const CullPath path = activeCullPath();
     const bool lanesRun = path == CullPath::Lanes && (!std::is_same_v<T, double> || doubleLanesRun());
-    if (!(path == CullPath::Portable || lanesRun)) return;
-    const auto& items = bvh_.items();
-    const auto boxAt = [&](std::uint32_t p, OrientedBox<T>& box) { return finite_[items[p]]->orientedBox(box); };
-    // Rows only where some item has a box; each box is then read again
-    // rather than held twice (a scatter of 5000 lattices: 600 KB a copy).
+    if (!(path == CullPath::Portable || lanesRun)) return false;
     OrientedBox<T> probe;
-    bool any = false;
-    for (std::uint32_t p = 0; p < items.size() && !any; ++p) any = boxAt(p, probe);
-    if (any) cull_ = OrientedCull<T>(static_cast<std::uint32_t>(items.size()), boxAt);
+    for (const Primitive<T>* child : finite_)
+      if (child->orientedBox(probe)) return true;
+    return false;
+  }
+  void keepOrientedBoxes() {
+    if (!cullRuns()) return;
+    const auto& items = bvh_.items();
+    // Each box is read again rather than held twice (a scatter of 5000
+    // lattices: 600 KB a copy).
+    cull_ = OrientedCull<T>(static_cast<std::uint32_t>(items.size()),
+                            [&](std::uint32_t p, OrientedBox<T>& box) { return finite_[items[p]]->orientedBox(box); });
   }
 
   UnionBvh<T> bvh_;

@@ -1,4 +1,4 @@
-// The 4-wide float BVH against a brute-force loop over every box, tested the
+// The 4- and 8-wide float BVHs against a brute-force loop over every box, tested the
 // way the binary double walk tested them (SlabTest<double>): on thousands of
 // random rays, rays lying in box faces and along box edges, axis-parallel
 // rays with +0 and -0 direction components, and rays starting inside boxes,
@@ -14,6 +14,7 @@
 #include <functional>
 #include <random>
 #include <set>
+#include <type_traits>
 
 #include "render/accel/wide_bvh.hpp"
 
@@ -143,9 +144,9 @@ bool nearHit(const Bounds<double>& b, const TestRay& r) {
 }
 
 template <typename T>
-void checkAgainstBruteForce(const Boxes& source, unsigned seed) {
+void checkAgainstBruteForce(const Boxes& source, unsigned seed, WideForm form) {
   const std::vector<Bounds<T>> boxes = asT<T>(source);
-  const WideBvh<T> bvh(boxes);
+  const WideBvh<T> bvh(boxes, form);
   Boxes exact;  // the boxes as T holds them, in double
   for (const auto& b : boxes) exact.push_back({Vec3d(b.lo), Vec3d(b.hi)});
   std::size_t bruteHits = 0, extras = 0, nearestFound = 0;
@@ -211,7 +212,7 @@ void checkAgainstBruteForce(const Boxes& source, unsigned seed) {
 
 TEMPLATE_TEST_CASE("the wide BVH visits every box a brute-force loop hits, on random and grazing rays", "[bvh]", float,
                    double) {
-  checkAgainstBruteForce<TestType>(randomBoxes(3000, 3), 11);
+  for (WideForm form : {WideForm::Four, WideForm::Eight}) checkAgainstBruteForce<TestType>(randomBoxes(3000, 3), 11, form);
 }
 
 TEMPLATE_TEST_CASE("the wide BVH loses no box of hair-like long thin boxes", "[bvh]", float, double) {
@@ -225,20 +226,20 @@ TEMPLATE_TEST_CASE("the wide BVH loses no box of hair-like long thin boxes", "[b
     Vec3d a = d * 3.0, b = d * 4.5;
     boxes.push_back({componentMin(a, b) - 0.02, componentMax(a, b) + 0.02});
   }
-  checkAgainstBruteForce<TestType>(boxes, 12);
+  for (WideForm form : {WideForm::Four, WideForm::Eight}) checkAgainstBruteForce<TestType>(boxes, 12, form);
 }
 
-TEMPLATE_TEST_CASE("wide BVH lanes hold their items' boxes rounded outwards, each item once", "[bvh]", float, double) {
-  using T = TestType;
-  const std::vector<Bounds<T>> boxes = asT<T>(randomBoxes(3000, 5));
-  const WideBvh<T> bvh(boxes);
+// Every lane's box holds its subtree's item boxes, and each item is reached once.
+template <typename T, typename NodeT>
+void checkLanes(const WideBvh<T>& bvh, const std::vector<NodeT>& nodes, const std::vector<Bounds<T>>& boxes) {
+  REQUIRE(!nodes.empty());
   std::multiset<std::uint32_t> items(bvh.items().begin(), bvh.items().end());
   REQUIRE(items.size() == boxes.size());
   std::size_t reached = 0;
   std::function<void(std::uint32_t)> check = [&](std::uint32_t index) {
-    const auto& node = bvh.nodes()[index];
+    const auto& node = nodes[index];
     REQUIRE(node.used != 0);
-    for (int lane = 0; lane < 4; ++lane) {
+    for (int lane = 0; lane < NodeT::kLanes; ++lane) {
       if (!(node.used & (1u << lane))) continue;
       auto inside = [&](const Bounds<T>& b) {
         for (int a = 0; a < 3; ++a) {
@@ -247,6 +248,7 @@ TEMPLATE_TEST_CASE("wide BVH lanes hold their items' boxes rounded outwards, eac
         }
       };
       if (node.count[lane] > 0) {
+        REQUIRE(node.count[lane] <= 4);  // one leaf cull pass
         for (std::uint32_t n = 0; n < node.count[lane]; ++n) inside(boxes[bvh.items()[node.ref[lane] + n]]);
         reached += node.count[lane];
       } else {
@@ -261,33 +263,81 @@ TEMPLATE_TEST_CASE("wide BVH lanes hold their items' boxes rounded outwards, eac
   REQUIRE(bvh.depth() < 20);  // 3000 boxes: a wide log-depth tree, not a list
 }
 
+TEMPLATE_TEST_CASE("wide BVH lanes hold their items' boxes rounded outwards, each item once", "[bvh]", float, double) {
+  using T = TestType;
+  const std::vector<Bounds<T>> boxes = asT<T>(randomBoxes(3000, 5));
+  const WideBvh<T> four(boxes, WideForm::Four);
+  REQUIRE(four.form() == WideForm::Four);
+  checkLanes(four, four.nodes(), boxes);
+#if LATTICE_WIDE8
+  if (!eightWideRuns()) {
+    WARN("skipped: this CPU has no AVX2, so no 8-wide tree is built");
+    return;
+  }
+  const WideBvh<T> eight(boxes, WideForm::Eight), culled(boxes, WideForm::Eight, LeafItems::Culled);
+  REQUIRE(eight.form() == WideForm::Eight);
+  REQUIRE(eight.nodes().empty());
+  checkLanes(eight, eight.nodes8(), boxes);
+  checkLanes(culled, culled.nodes8(), boxes);
+  REQUIRE(eight.depth() <= four.depth());
+  REQUIRE(eight.nodes8().size() < four.nodes().size());
+  // Leaf lanes: the binary leaves, or (culled) whole subtrees of up to four.
+  const auto leafLanes = [](const auto& nodes) {
+    std::size_t lanes = 0;
+    for (const auto& node : nodes)
+      for (int lane = 0; lane < 8; ++lane) lanes += (node.used >> lane & 1u) && node.count[lane] > 0;
+    return lanes;
+  };
+  std::size_t binaryLeaves = 0;
+  for (const auto& node : Bvh<T>(boxes).nodes()) binaryLeaves += node.count > 0;
+  REQUIRE(leafLanes(eight.nodes8()) == binaryLeaves);
+  REQUIRE(leafLanes(culled.nodes8()) < binaryLeaves * 3 / 4);
+#endif
+}
+
 TEMPLATE_TEST_CASE("the wide BVH's depth bound holds on degenerate inputs", "[bvh]", float, double) {
   using T = TestType;
   const int n = 20000;
   std::vector<Bounds<T>> equal(n, Bounds<T>{Vec3<T>(T(1)), Vec3<T>(T(2))});
-  std::vector<Bounds<T>> line, point;
+  std::vector<Bounds<T>> line, point, spread;
   for (int i = 0; i < n; ++i) {
     line.push_back({Vec3<T>(T(i), T(0), T(0)), Vec3<T>(T(i + 1), T(1), T(1))});  // touching, in a row
     point.push_back({Vec3<T>(T(0)), Vec3<T>(T(0))});                            // zero volume, all equal
   }
-  for (const auto* boxes : {&equal, &line, &point}) {
-    const WideBvh<T> bvh(*boxes);
-    // The stack holds at most 3 * depth + 1 entries.
+  // Spaced exponentially along x (1 to 1e85: double only): each split peels a
+  // few off, so the depth cap leaves hundreds of items in one leaf.
+  if constexpr (std::is_same_v<T, double>)
+    for (int i = 0; i < 1500; ++i) {
+      const double x = std::pow(1.3, i * 0.5);
+      spread.push_back({Vec3<T>(T(x), T(0), T(0)), Vec3<T>(T(x * 1.01), T(1), T(1))});
+    }
+  for (const auto* boxes : {&equal, &line, &point, &spread})
+  for (WideForm form : {WideForm::Four, WideForm::Eight}) {
+    if (boxes->empty()) continue;
+    const WideBvh<T> bvh(*boxes, form);
+    // The stack holds at most (lanes - 1) * depth + 1 entries.
     REQUIRE(bvh.depth() <= bvh.binaryDepth());
     REQUIRE(bvh.binaryDepth() <= Bvh<T>::kMaxDepth);
     REQUIRE(3 * bvh.depth() + 1 <= WideBvh<T>::kStack);
-    REQUIRE(bvh.depth() <= 2 * int(std::ceil(std::log2(double(n)))));
+    REQUIRE(7 * bvh.depth() + 1 <= WideBvh<T>::kStack8);
+    if (boxes != &spread) REQUIRE(bvh.depth() <= 2 * int(std::ceil(std::log2(double(n)))));
+    if (boxes == &spread) {
+      std::uint32_t largest = 0;
+      for (const auto& node : Bvh<T>(spread).nodes()) largest = std::max(largest, node.count);
+      REQUIRE(largest > 255);  // more than a byte counts
+    }
     // A ray through every box visits each exactly once, in either walk.
     const Ray<T> ray{Vec3<T>(T(-1), T(0.5), T(0.5)), Vec3<T>(T(1), T(0), T(0))};
     const Ray<T> diag{Vec3<T>(T(-1)), Vec3<T>(T(1))};
-    const Ray<T>& r = boxes == &line ? ray : diag;
-    std::vector<int> seen(n, 0);
-    bvh.visitAll(r, T(0), T(1e9), [&](std::uint32_t item) {
+    const Ray<T>& r = boxes == &line || boxes == &spread ? ray : diag;
+    std::vector<int> seen(boxes->size(), 0);
+    const T far = boxes == &spread ? T(1e300) : T(1e9);
+    bvh.visitAll(r, T(0), far, [&](std::uint32_t item) {
       ++seen[item];
       return false;
     });
     REQUIRE(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
-    T limit = T(1e9);
+    T limit = far;
     std::fill(seen.begin(), seen.end(), 0);
     bvh.visitFrontToBack(r, T(0), limit, [&](std::uint32_t item, T&) { ++seen[item]; });
     REQUIRE(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
