@@ -151,6 +151,8 @@ class UnionNode final : public UnionCore<T, UnionNode<T>, CsgNode<T>> {
     return f(*finite_[item]);
   }
   const OrientedCull<T>* cull() const { return cull_.empty() ? nullptr : &cull_; }
+  // A cut box may stop a ray that a child blocks outside it.
+  bool childrenAnswerAlone() const { return !this->limited_; }
 
  private:
   // The children's oriented boxes in the BVH's item order, kept only where
