@@ -14,14 +14,13 @@
 //
 // One cache a row (Renderer::rowLinear), so no two threads share one; it
 // changes no answer, so pictures do not depend on rows or threads.
-// IEEE arithmetics only: fixed point asks the scene as before, because the
-// firmware's baked union builds its children per visit and can name only
-// itself, which would test the whole union twice on every miss.
+// Every arithmetic but on the firmware (LATTICE_FIXED_POINT_ONLY), which asks
+// the scene as before: its baked union builds its children per visit and can
+// name only itself, so a miss would walk the whole union twice.
 #include <cstddef>
 #include <vector>
 
 #include "foundation/ray.hpp"
-#include "foundation/vec.hpp"
 #include "render/shapes/primitive.hpp"
 
 namespace lattice {
@@ -47,7 +46,11 @@ class OccluderCache {
   }
 
  private:
-  static constexpr bool kCaches = kIsIeee<T>;
+#ifdef LATTICE_FIXED_POINT_ONLY
+  static constexpr bool kCaches = false;
+#else
+  static constexpr bool kCaches = true;
+#endif
   std::vector<const Primitive<T>*> last_;  // by light; null: none yet
 };
 

@@ -141,9 +141,11 @@ void rowsEqualUncachedShading() {
 TEST_CASE("occluder cache: every shadow ray answered as the scene's anyHit answers it", "[occluder]") {
   SECTION("double") { cacheAnswersAsTheScene<double>(); }
   SECTION("float") { cacheAnswersAsTheScene<float>(); }
+  SECTION("fixed point") { cacheAnswersAsTheScene<Fixed32>(); }
 }
 
 TEST_CASE("occluder cache: rendered rows equal shading with no cache, on 1 and 3 threads", "[occluder]") {
   SECTION("double") { rowsEqualUncachedShading<double>(); }
   SECTION("float") { rowsEqualUncachedShading<float>(); }
+  SECTION("fixed point") { rowsEqualUncachedShading<Fixed32>(); }
 }
