@@ -76,7 +76,7 @@ template <typename T>
 Renderer<T>::~Renderer() = default;
 
 template <typename T>
-Vec3<T> Renderer<T>::trace(const Ray<T>& ray, std::uint64_t& rays) const {
+Vec3<T> Renderer<T>::trace(const Ray<T>& ray, std::uint64_t& rays, OccluderCache<T>& occluders) const {
   ++rays;
   Hit<T> hit;
   if (!root_->firstHit(ray, T(0), std::numeric_limits<T>::infinity(), hit)) return background_;
@@ -85,14 +85,15 @@ Vec3<T> Renderer<T>::trace(const Ray<T>& ray, std::uint64_t& rays) const {
   return shade(lighting_, point, hit.normal, toObserver, hit.material, [&](std::size_t i, const Vec3<T>& facing) {
     if (!shadows_) return true;
     ++rays;
-    return !inShadow(*root_, point, facing, lighting_.lights[i].position, offsetScale_);
+    return !occluders.blocked(*root_, shadowRay(point, facing, lighting_.lights[i].position, offsetScale_), i);
   });
 }
 
 template <typename T>
 Vec3<T> Renderer<T>::trace(const Ray<T>& ray) const {
   std::uint64_t rays = 0;
-  Vec3<T> c = trace(ray, rays);
+  OccluderCache<T> occluders(lighting_.lights.size());
+  Vec3<T> c = trace(ray, rays, occluders);
   rays_.add(rays);
   return c;
 }
@@ -108,7 +109,9 @@ void Renderer<T>::rowLinear(int y, std::span<Vec3<T>> out) const {
     throw Error(ErrorKind::Internal, fmt::format("row {} of {} asked with a buffer of {} for width {}", y, height_,
                                                  out.size(), width_));
   std::uint64_t rays = 0;
-  for (int x = 0; x < width_; ++x) out[static_cast<std::size_t>(x)] = trace(camera_.primaryRay(x, y), rays);
+  OccluderCache<T> occluders(lighting_.lights.size());  // the row's own: shared by no other thread
+  for (int x = 0; x < width_; ++x)
+    out[static_cast<std::size_t>(x)] = trace(camera_.primaryRay(x, y), rays, occluders);
   rays_.add(rays);
 }
 

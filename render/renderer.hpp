@@ -22,6 +22,7 @@
 #include "foundation/scanline.hpp"
 #include "render/band_cache.hpp"
 #include "render/scene/camera.hpp"
+#include "render/scene/occluder_cache.hpp"
 #include "render/scene/scene.hpp"
 #include "render/scene/shading.hpp"
 #include "foundation/arithmetics.hpp"
@@ -105,7 +106,8 @@ class Renderer final : public RowSource18 {
   // release: scene.root, built by buildPrimitive of a NodeDesc&&; null: kept.
   Renderer(const SceneDesc& scene, const RenderSettings& settings, NodeDesc* release);
 
-  Vec3<T> trace(const Ray<T>& ray, std::uint64_t& rays) const;
+  // Counts the rays in `rays`; shadow rays ask `occluders` first.
+  Vec3<T> trace(const Ray<T>& ray, std::uint64_t& rays, OccluderCache<T>& occluders) const;
   void shadeRow(int y, Color18* out) const;
 
   int width_ = 0, height_ = 0, threads_ = 1;

@@ -65,15 +65,21 @@ T surfaceOffset(const Vec3<T>& point, T sceneScale = T(1)) {
     return T(1e-6) * scale;
 }
 
-// Is the light at lightPosition hidden from `point` (normal facing the side
-// the light is on) by any surface of `scene`? The shadow ray starts at the
-// point lifted along the normal (surfaceOffset) and stops at the light.
+// The shadow ray from `point` (normal facing the side the light is on) to
+// the light at lightPosition: it starts at the point lifted along the normal
+// (surfaceOffset) and reaches the light at t = 1.
+template <typename T>
+Ray<T> shadowRay(const Vec3<T>& point, const Vec3<T>& normal, const Vec3<T>& lightPosition, T sceneScale = T(1)) {
+  const Vec3<T> origin = point + normal * surfaceOffset(point, sceneScale);
+  return {origin, lightPosition - origin};
+}
+
+// Is the light at lightPosition hidden from `point` by any surface of
+// `scene` (anything on the shadow ray for 0 < t < 1)?
 template <typename T>
 bool inShadow(const Primitive<T>& scene, const Vec3<T>& point, const Vec3<T>& normal, const Vec3<T>& lightPosition,
               T sceneScale = T(1)) {
-  const Vec3<T> origin = point + normal * surfaceOffset(point, sceneScale);
-  const Ray<T> ray{origin, lightPosition - origin};  // t = 1 at the light
-  return scene.anyHit(ray, T(0), T(1));
+  return scene.anyHit(shadowRay(point, normal, lightPosition, sceneScale), T(0), T(1));
 }
 
 // Eq. 2.3 at one hit. `normal` is the unit world normal as the primitive

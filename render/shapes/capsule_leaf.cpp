@@ -53,6 +53,15 @@ class CapsuleLeaf final : public Primitive<T> {
     return true;
   }
 
+  // The default's answer (firstCrossing of spans()) without the span list or
+  // the two normals: every shadow ray that reaches the capsule asks this.
+  // crossing() has enter < tmax and leave > tmin, so an end lies in
+  // (tmin, tmax) exactly when the enter is past tmin or the leave before tmax.
+  bool anyHit(const Ray<T>& worldRay, T tmin, T tmax) const override {
+    Interval<T> whole;
+    return crossing(worldRay, tmin, tmax, whole) && (whole.enter > tmin || whole.leave < tmax);
+  }
+
  private:
   // The line's one interval through the capsule, if it overlaps (tmin, tmax).
   bool crossing(const Ray<T>& worldRay, T tmin, T tmax, Interval<T>& whole) const {

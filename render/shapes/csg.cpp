@@ -116,11 +116,13 @@ class UnionNode final : public UnionCore<T, UnionNode<T>, CsgNode<T>> {
         unbounded_.push_back(n);
       }
     }
-    if (finite_.size() == 1) {
-      // One bounded child (a shape over a floor): its own box test is all a
-      // tree would do, so it joins the list, after the unbounded ones as the
-      // tree came after them.
-      unbounded_.push_back(finiteIndex[0]);
+    if (finite_.size() <= 2) {
+      // One or two bounded children (a shape over a floor; the fuzzy
+      // sphere's skin and its scatter of hairs): a tree of them is one node,
+      // whose set-up and box test every ray paid before asking children that
+      // test their own boxes anyway, so they join the list, after the
+      // unbounded ones as the tree came after them, and are asked in order.
+      for (std::uint32_t n : finiteIndex) unbounded_.push_back(n);
       finite_.clear();
       boxes.clear();
     }
@@ -155,6 +157,8 @@ class UnionNode final : public UnionCore<T, UnionNode<T>, CsgNode<T>> {
     return f(*finite_[item]);
   }
   const OrientedCull<T>* cull() const { return cull_.empty() ? nullptr : &cull_; }
+  // A cut box may stop a ray that a child blocks outside it.
+  bool childrenAnswerAlone() const { return !this->limited_; }
 
  private:
   // The children's oriented boxes in the BVH's item order, kept only where
@@ -183,7 +187,7 @@ class UnionNode final : public UnionCore<T, UnionNode<T>, CsgNode<T>> {
   UnionBvh<T> bvh_;
   OrientedCull<T> cull_;  // empty: every item the walk reaches is visited
   std::vector<const Primitive<T>*> finite_;  // BVH item -> child
-  std::vector<std::uint32_t> unbounded_;  // children every ray visits: the unbounded ones, or a lone bounded one
+  std::vector<std::uint32_t> unbounded_;  // children every ray visits: the unbounded ones, and one or two bounded ones
 };
 
 template <typename T>

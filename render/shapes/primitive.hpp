@@ -108,6 +108,15 @@ class Primitive {
     Hit<T> hit;
     return firstHit(ray, tmin, tmax, hit);
   }
+
+  // The same question, answered with who blocks: a node whose own anyHit is
+  // true for this ray (null where anyHit is false). A union hands down its
+  // blocking child's answer, so the renderer can ask that one node first
+  // for the next shadow ray (render/scene/occluder_cache.hpp); any node
+  // answers itself.
+  virtual const Primitive<T>* occluder(const Ray<T>& ray, T tmin, T tmax) const {
+    return anyHit(ray, tmin, tmax) ? this : nullptr;
+  }
 };
 
 template <typename T>

@@ -12,7 +12,11 @@
 //   const UnionBvh<T>& bvh() const;                        // the finite children
 //   template <typename F> decltype(auto) withItem(std::uint32_t item, F f) const;  // f(const Primitive<T>&)
 // and, optionally, const OrientedCull<T>* cull() const: the items' oriented
-// boxes in the BVH's item order (render/accel/oriented_cull.hpp), or null.
+// boxes in the BVH's item order (render/accel/oriented_cull.hpp), or null;
+// and bool childrenAnswerAlone() const: true where a child's anyHit alone
+// makes the union's true (children that outlive the walk, and no cut box
+// that could stop a ray a child would block), so occluder() may name the
+// child; without it the union names itself.
 // and Base is the class UnionCore derives from (Primitive<T>, or a CSG node
 // base holding the children).
 //
@@ -101,6 +105,26 @@ class UnionCore : public Base {
     return walkAll(ray, tmin, tmax, [&](std::uint32_t item) {
       return self.withItem(item, [&](const Primitive<T>& c) { return c.anyHit(ray, tmin, tmax); });
     });
+  }
+
+  // anyHit's walk, in the same order, keeping the child that answered.
+  const Primitive<T>* occluder(const Ray<T>& ray, T tmin, T tmax) const override {
+    const Derived& self = derived();
+    if constexpr (!requires(const Derived& d) { d.childrenAnswerAlone(); }) {
+      return anyHit(ray, tmin, tmax) ? this : nullptr;
+    } else {
+      if (!self.childrenAnswerAlone()) return anyHit(ray, tmin, tmax) ? this : nullptr;
+      if (self.outsideBox(ray, tmin, tmax)) return nullptr;
+      const Primitive<T>* found = nullptr;
+      const auto ask = [&](const Primitive<T>& c) {
+        found = c.occluder(ray, tmin, tmax);
+        return found != nullptr;
+      };
+      for (std::size_t k = 0; k < self.unboundedCount(); ++k)
+        if (self.withUnbounded(k, ask)) return found;
+      walkAll(ray, tmin, tmax, [&](std::uint32_t item) { return self.withItem(item, ask); });
+      return found;
+    }
   }
 
  private:

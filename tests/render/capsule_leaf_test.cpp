@@ -122,3 +122,35 @@ TEMPLATE_TEST_CASE("the capsule's first enter is what its spans give, bit for bi
     CHECK(insides > 500);
   }
 }
+
+TEMPLATE_TEST_CASE("the capsule's anyHit is what its spans give", "[shapes][capsule]", float, double) {
+  // Shadow rays ask anyHit; the capsule answers without a span list, and
+  // must answer as Primitive's default (firstCrossing of spans()) does:
+  // segments that start inside, end inside, pass by, and stop short.
+  using T = TestType;
+  const Mat4d m =
+      glm::translate(Mat4d(1), Vec3d(0.5, -1, 2)) * glm::rotate(Mat4d(1), 0.7, glm::normalize(Vec3d(1, 2, 0.5)));
+  for (const double length : {2.0, 0.0}) {
+    auto capsule = makeCapsule<T>(0.4, length, m, 3);
+    const Vec3d a = Vec3d(m * glm::dvec4(0, 0, 0, 1)), b = Vec3d(m * glm::dvec4(0, 0, length, 1));
+    std::mt19937 rng(37);
+    std::uniform_real_distribution<double> along(0.0, 1.0), reach(0.5, 8.0);
+    int yes = 0, no = 0, fromInside = 0;
+    for (int n = 0; n < 3000; ++n) {
+      const Vec3d target = (a + b) * 0.5 + randomUnit(rng) * 0.9;
+      const Vec3d o = n % 3 == 0 ? a + (b - a) * along(rng) + randomUnit(rng) * 0.2 : target + randomUnit(rng) * 6.0;
+      const Ray<T> ray = makeRay<T>(o, n % 3 == 0 ? randomUnit(rng) : glm::normalize(target - o));
+      const T tmin = T(n % 7 == 0 ? 0.3 : 0.0), tmax = T(reach(rng));
+      SpanList<T> list;
+      capsule->spans(ray, tmin, tmax, list);
+      Hit<T> hit;
+      const bool expected = firstCrossing(list, tmin, tmax, hit);
+      REQUIRE(capsule->anyHit(ray, tmin, tmax) == expected);
+      (expected ? yes : no) += 1;
+      if (expected && !list.empty() && list[0].enter.t <= tmin) ++fromInside;
+    }
+    CHECK(yes > 300);
+    CHECK(no > 300);
+    CHECK(fromInside > 100);
+  }
+}
