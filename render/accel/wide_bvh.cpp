@@ -17,9 +17,9 @@ double halfArea(const Bounds<T>& b) {
 }  // namespace
 
 template <typename T>
-WideBvh<T>::WideBvh(const std::vector<Bounds<T>>& boxes) {
+WideBvh<T>::WideBvh(const std::vector<Bounds<T>>& boxes, unsigned threads) {
   if (boxes.empty()) return;
-  const Bvh<T> binary(boxes);
+  const Bvh<T> binary(boxes, threads);
   items_.assign(binary.items().begin(), binary.items().end());
   binaryDepth_ = binary.depth();
   nodes_.reserve(binary.nodes().size() / 2 + 1);

@@ -44,7 +44,8 @@ class WideBvh {
 
   WideBvh() = default;
   // boxes[n] is the box of item n; every box must be finite and non-empty.
-  explicit WideBvh(const std::vector<Bounds<T>>& boxes);
+  // `threads`: the binary tree's (render/accel/bvh.hpp); the same tree at every count.
+  explicit WideBvh(const std::vector<Bounds<T>>& boxes, unsigned threads = 1);
 
   bool empty() const { return nodes_.empty(); }
   const std::vector<Node>& nodes() const { return nodes_; }

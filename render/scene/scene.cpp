@@ -117,7 +117,7 @@ PrimitivePtr<T> buildNode(Node& node, const Mat4d& parentToWorld, const BuildOpt
   const CsgOp op = node.kind == NodeDesc::Kind::Union          ? CsgOp::Union
                    : node.kind == NodeDesc::Kind::Intersection ? CsgOp::Intersection
                                                                : CsgOp::Difference;
-  return makeCsgNode<T>(op, std::move(children));
+  return makeCsgNode<T>(op, std::move(children), options.threads);
 }
 
 }  // namespace
