@@ -24,7 +24,7 @@ void orderedParallelFor(std::size_t n, unsigned threads, Work&& work) {
     if (threads > 1 && n > 1) {
       std::atomic<std::size_t> next{0};
       std::atomic<std::size_t> limit{n};  // no index at or above it is handed out
-      std::mutex failureMutex;
+      Mutex failureMutex;  // threads.hpp's: the firmware has no std::mutex
       std::size_t failedAt = n;
       std::exception_ptr failure;
       runWorkers(

@@ -33,12 +33,6 @@ int resolveSide(int requested, int sceneDefault, const char* name) {
   return v;
 }
 
-// The scene's tree is built on the render's threads (threads_ is set first).
-BuildOptions onThreads(BuildOptions options, int threads) {
-  options.threads = static_cast<unsigned>(threads);
-  return options;
-}
-
 // Runs work(y) for y in [y0, y1) on `threads` threads. Rows are handed out
 // one at a time from a shared counter, so uneven rows balance out; which
 // thread renders a row never changes its pixels.
@@ -66,8 +60,8 @@ Renderer<T>::Renderer(const SceneDesc& scene, const RenderSettings& settings, No
       height_(resolveSide(settings.height, scene.options.height, "height")),
       threads_(resolveThreads(settings.threads)),
       camera_(scene.camera, width_, height_),
-      root_(release ? buildPrimitive<T>(std::move(*release), Mat4d(1.0), onThreads(settings.build, threads_), 0)
-                    : buildPrimitive<T>(scene.root, Mat4d(1.0), onThreads(settings.build, threads_), 0)),
+      root_(release ? buildPrimitive<T>(std::move(*release), Mat4d(1.0), settings.build, 0)
+                    : buildPrimitive<T>(scene.root, Mat4d(1.0), settings.build, 0)),
       background_(Vec3<T>(glm::clamp(scene.options.background, Vec3d(0.0), Vec3d(1.0)))),
       shadows_(scene.options.shadows),
       offsetScale_(static_cast<T>(std::min(1.0, viewingDistance(scene.camera)))),

@@ -60,12 +60,18 @@ class BvhBuilder {
 
   // The subtree over items [begin, end), whose root sits at `depth`.
   Subtree<T> build(std::uint32_t begin, std::uint32_t end, int depth, unsigned threads) const {
+    // Without threads (the firmware) the parallel build is not compiled at all.
+    if constexpr (kHasThreads)
+      if (threads > 1 && end - begin >= kParallelItems) return buildParallel(begin, end, depth, threads);
     Subtree<T> tree;
-    if (!kHasThreads || threads <= 1 || end - begin < kParallelItems) {
-      tree.nodes.reserve(2 * (end - begin));
-      buildSerial(tree, begin, end, depth);
-      return tree;
-    }
+    tree.nodes.reserve(2 * (end - begin));
+    buildSerial(tree, begin, end, depth);
+    return tree;
+  }
+
+ private:
+  Subtree<T> buildParallel(std::uint32_t begin, std::uint32_t end, int depth, unsigned threads) const {
+    Subtree<T> tree;
     const Split<T> split = splitAt(begin, end, depth);
     tree.depth = depth;
     tree.nodes.push_back({split.box, begin, end - begin});
@@ -96,8 +102,9 @@ class BvhBuilder {
     return tree;
   }
 
- private:
-  std::uint32_t buildSerial(Subtree<T>& tree, std::uint32_t begin, std::uint32_t end, int depth) const {
+  // noipa: one copy (no clone for the caller's constants), the split inlined
+  // into it where it is its one caller (the firmware, whose flash is full).
+  [[gnu::noipa]] std::uint32_t buildSerial(Subtree<T>& tree, std::uint32_t begin, std::uint32_t end, int depth) const {
     tree.depth = std::max(tree.depth, depth);
     const std::uint32_t index = static_cast<std::uint32_t>(tree.nodes.size());
     const Split<T> split = splitAt(begin, end, depth);
