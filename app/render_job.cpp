@@ -35,6 +35,8 @@ namespace {
 // (keeping its shape) to fit the device's screen (a SizeFitted event).
 RenderSettings renderSettings(const RenderJob& job, const SceneDesc& scene, int deviceWidth, int deviceHeight) {
   RenderSettings s = job.render;
+  // The scene's tree is built on the render's threads (render/scene/scene.cpp).
+  s.build.threads = job.render.threads > 0 ? unsigned(job.render.threads) : hardwareThreads();
   if (s.width <= 0) s.width = scene.options.width;
   if (s.height <= 0) s.height = scene.options.height;
   if (deviceWidth > 0 && (s.width > deviceWidth || s.height > deviceHeight)) {

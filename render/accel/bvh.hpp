@@ -52,7 +52,9 @@ class Bvh {
 
   Bvh() = default;
   // boxes[n] is the box of item n; every box must be finite and non-empty.
-  explicit Bvh(const std::vector<Bounds<T>>& boxes);
+  // `threads`: the two subtrees of the top splits are built at once on up to
+  // this many; the tree is the same at every count.
+  explicit Bvh(const std::vector<Bounds<T>>& boxes, unsigned threads = 1);
 
   // A tree over nodes and items that outlive it (constant data): what
   // nodes() and items() of a built tree held.
@@ -149,9 +151,6 @@ class Bvh {
   static constexpr int kMaxDepth = 60;
 
  private:
-  std::uint32_t build(const std::vector<Vec3<T>>& centroids, const std::vector<Bounds<T>>& boxes, std::uint32_t begin,
-                      std::uint32_t end, int depth);
-
   // A built tree's own arrays, or the view's (never both).
   std::span<const Node> nodeSpan() const { return viewNodes_.empty() ? std::span<const Node>(nodes_) : viewNodes_; }
   std::span<const std::uint32_t> itemSpan() const {

@@ -49,9 +49,9 @@ WideForm resolveWideForm(WideForm form) {
 }
 
 template <typename T>
-WideBvh<T>::WideBvh(const std::vector<Bounds<T>>& boxes, WideForm form, LeafItems leaves) {
+WideBvh<T>::WideBvh(const std::vector<Bounds<T>>& boxes, WideForm form, LeafItems leaves, unsigned threads) {
   if (boxes.empty()) return;
-  const Bvh<T> binary(boxes);
+  const Bvh<T> binary(boxes, threads);
   items_.assign(binary.items().begin(), binary.items().end());
   binaryDepth_ = binary.depth();
 #if LATTICE_WIDE8

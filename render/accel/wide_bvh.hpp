@@ -93,8 +93,9 @@ class WideBvh {
 
   WideBvh() = default;
   // boxes[n] is the box of item n; every box must be finite and non-empty.
+  // `threads`: the binary tree's (render/accel/bvh.hpp); the same tree at every count.
   explicit WideBvh(const std::vector<Bounds<T>>& boxes, WideForm form = WideForm::Auto,
-                   LeafItems leaves = LeafItems::Visited);
+                   LeafItems leaves = LeafItems::Visited, unsigned threads = 1);
 
   bool empty() const { return nodes_.empty() && nodes8Empty(); }
   WideForm form() const { return nodes8Empty() ? WideForm::Four : WideForm::Eight; }

@@ -6,6 +6,7 @@
 #include "foundation/transform_condition.hpp"
 #include "foundation/error.hpp"
 #include "foundation/arithmetics.hpp"
+#include "foundation/ordered_parallel_for.hpp"
 
 namespace lattice {
 
@@ -57,6 +58,10 @@ namespace {
 
 const std::string kUnplaced = "scene";  // the root's place when it has none
 
+// Fewer operands than this are built in the caller: starting the threads
+// would cost more than the builds (a scatter has thousands of operands).
+constexpr std::size_t kParallelOperands = 256;
+
 // Node: const NodeDesc (the tree is kept) or NodeDesc (each set operation's
 // operand descriptions are released once its operands are built).
 template <typename T, typename Node>
@@ -89,9 +94,22 @@ PrimitivePtr<T> buildNode(Node& node, const Mat4d& parentToWorld, const BuildOpt
   }
   if (node.children.empty())
     throw Error(ErrorKind::Input, fmt::format("{}: a set operation needs at least one child object", where));
-  std::vector<PrimitivePtr<T>> children;
-  children.reserve(node.children.size());
-  for (Node& child : node.children) children.push_back(buildNode<T>(child, toWorld, options, material, where));
+  std::vector<PrimitivePtr<T>> children(node.children.size());
+  const auto buildChild = [&](std::size_t i, const BuildOptions& childOptions) {
+    children[i] = buildNode<T>(node.children[i], toWorld, childOptions, material, where);
+  };
+  if (kHasThreads && options.threads > 1 && children.size() >= kParallelOperands) {
+    // The first operand in the caller: it builds what its siblings share (a
+    // lattice's table, rasterized on every thread), the rest on every thread,
+    // each below them serially. Each operand fills its own slot, so the tree
+    // is the one the plain loop makes; errors too (ordered_parallel_for.hpp).
+    BuildOptions serial = options;
+    serial.threads = 1;
+    buildChild(0, options);
+    orderedParallelFor(children.size() - 1, options.threads, [&](std::size_t i) { buildChild(i + 1, serial); });
+  } else {
+    for (std::size_t i = 0; i < children.size(); ++i) buildChild(i, options);
+  }
   if constexpr (!std::is_const_v<Node>) std::vector<NodeDesc>().swap(node.children);  // before the BVH's build
   // A set operation of one operand is that operand; skipping the node saves
   // a span merge per ray.
@@ -99,7 +117,7 @@ PrimitivePtr<T> buildNode(Node& node, const Mat4d& parentToWorld, const BuildOpt
   const CsgOp op = node.kind == NodeDesc::Kind::Union          ? CsgOp::Union
                    : node.kind == NodeDesc::Kind::Intersection ? CsgOp::Intersection
                                                                : CsgOp::Difference;
-  return makeCsgNode<T>(op, std::move(children));
+  return makeCsgNode<T>(op, std::move(children), options.threads);
 }
 
 }  // namespace

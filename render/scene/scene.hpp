@@ -36,6 +36,10 @@ struct BuildOptions {
   // Lattices cast shadows on each other and on themselves (thesis plate 4);
   // off, they behave like a particle system (plate 3).
   bool latticeShadows = true;
+  // Threads the build may use (a render job gives the render's count): a
+  // set operation of many operands builds them, and a union its BVH, on this
+  // many (render/scene/scene.cpp). The tree is the same at every count.
+  unsigned threads = 1;
 };
 
 // The result slot of one LeafDesc::build, for the arithmetic T asked for.

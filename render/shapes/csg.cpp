@@ -96,7 +96,8 @@ class UnionNode final : public UnionCore<T, UnionNode<T>, CsgNode<T>> {
   using Core = UnionCore<T, UnionNode<T>, CsgNode<T>>;
 
  public:
-  explicit UnionNode(std::vector<PrimitivePtr<T>> children) : Core(std::move(children)) {
+  // `threads`: the BVH's build's (render/accel/bvh.hpp).
+  UnionNode(std::vector<PrimitivePtr<T>> children, unsigned threads) : Core(std::move(children)) {
     std::vector<Bounds<T>> boxes;
     std::vector<std::uint32_t> finiteIndex;
     // Sized once: grown by doubling, the boxes of a 5000-instance scatter
@@ -127,10 +128,10 @@ class UnionNode final : public UnionCore<T, UnionNode<T>, CsgNode<T>> {
       boxes.clear();
     }
     if constexpr (std::is_floating_point_v<T>) {
-      bvh_ = UnionBvh<T>(boxes, WideForm::Auto, cullRuns() ? LeafItems::Culled : LeafItems::Visited);
+      bvh_ = UnionBvh<T>(boxes, WideForm::Auto, cullRuns() ? LeafItems::Culled : LeafItems::Visited, threads);
       keepOrientedBoxes();
     } else {
-      bvh_ = UnionBvh<T>(boxes);
+      bvh_ = UnionBvh<T>(boxes, threads);
     }
   }
 
@@ -191,13 +192,13 @@ class UnionNode final : public UnionCore<T, UnionNode<T>, CsgNode<T>> {
 };
 
 template <typename T>
-std::unique_ptr<CsgNode<T>> makeNode(CsgOp op, std::vector<PrimitivePtr<T>> children) {
+std::unique_ptr<CsgNode<T>> makeNode(CsgOp op, std::vector<PrimitivePtr<T>> children, unsigned threads = 1) {
   if (children.empty())
     throw Error(ErrorKind::Input, "CSG node without children: union, intersection and difference need at least one");
   for (const auto& c : children)
     if (!c) throw Error(ErrorKind::Internal, "CSG node given a null child");
   switch (op) {
-    case CsgOp::Union: return std::make_unique<UnionNode<T>>(std::move(children));
+    case CsgOp::Union: return std::make_unique<UnionNode<T>>(std::move(children), threads);
     case CsgOp::Intersection: return std::make_unique<IntersectionNode<T>>(std::move(children));
     case CsgOp::Difference: return std::make_unique<DifferenceNode<T>>(std::move(children));
   }
@@ -207,8 +208,8 @@ std::unique_ptr<CsgNode<T>> makeNode(CsgOp op, std::vector<PrimitivePtr<T>> chil
 }  // namespace
 
 template <typename T>
-PrimitivePtr<T> makeCsgNode(CsgOp op, std::vector<PrimitivePtr<T>> children) {
-  return makeNode(op, std::move(children));
+PrimitivePtr<T> makeCsgNode(CsgOp op, std::vector<PrimitivePtr<T>> children, unsigned threads) {
+  return makeNode(op, std::move(children), threads);
 }
 
 template <typename T>
@@ -219,7 +220,7 @@ PrimitivePtr<T> makeCsgNode(CsgOp op, std::vector<PrimitivePtr<T>> children, con
 }
 
 #define LATTICE_INSTANTIATE(T) \
-  template PrimitivePtr<T> makeCsgNode<T>(CsgOp, std::vector<PrimitivePtr<T>>); \
+  template PrimitivePtr<T> makeCsgNode<T>(CsgOp, std::vector<PrimitivePtr<T>>, unsigned); \
   template PrimitivePtr<T> makeCsgNode<T>(CsgOp, std::vector<PrimitivePtr<T>>, const Bounds<T>&);
 LATTICE_FOR_EACH_ARITHMETIC(LATTICE_INSTANTIATE)
 #undef LATTICE_INSTANTIATE

@@ -25,9 +25,10 @@ namespace lattice {
 
 enum class CsgOp { Union, Intersection, Difference };
 
-// Throws lattice::Error (Input) for no children or a null child.
+// Throws lattice::Error (Input) for no children or a null child. `threads`:
+// a union's BVH is built on up to this many (the same tree at every count).
 template <typename T>
-PrimitivePtr<T> makeCsgNode(CsgOp op, std::vector<PrimitivePtr<T>> children);
+PrimitivePtr<T> makeCsgNode(CsgOp op, std::vector<PrimitivePtr<T>> children, unsigned threads = 1);
 
 // The same, with a box the caller knows contains the result (for example a
 // capsule, whose cylinder and half-spaces are all unbounded once rotated):
@@ -36,7 +37,7 @@ template <typename T>
 PrimitivePtr<T> makeCsgNode(CsgOp op, std::vector<PrimitivePtr<T>> children, const Bounds<T>& limit);
 
 #define LATTICE_DECLARE(T) \
-  extern template PrimitivePtr<T> makeCsgNode<T>(CsgOp, std::vector<PrimitivePtr<T>>); \
+  extern template PrimitivePtr<T> makeCsgNode<T>(CsgOp, std::vector<PrimitivePtr<T>>, unsigned); \
   extern template PrimitivePtr<T> makeCsgNode<T>(CsgOp, std::vector<PrimitivePtr<T>>, const Bounds<T>&);
 LATTICE_FOR_EACH_ARITHMETIC(LATTICE_DECLARE)
 #undef LATTICE_DECLARE

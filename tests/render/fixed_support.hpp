@@ -117,7 +117,7 @@ inline bool isSetUpFunction(const std::string& name) {
                                                  "buildPrimitive<", "buildNode<", "::QuarticLeaf(", "makeCsgNode<",
                                                  "::LatticeLeafBase(", "makePolyline<", "makeLatticeLeaf<",
                                                  "::QuarticArithmetic(", "QuarticArithmetic<lattice::Fixed<32> >::prepare(",
-                                                 "::EntryReader(", "::buildInto(", "::buildAs<"};
+                                                 "::EntryReader(", "::buildInto(", "::buildAs<", "BvhBuilder<"};
   for (const std::string& s : setUp)
     if (name.find(s) != std::string::npos) return true;
   return false;
