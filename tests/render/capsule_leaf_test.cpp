@@ -49,6 +49,20 @@ void compare(const Primitive<T>& closed, const Primitive<T>& quartic, const Ray<
   ++c.agreed;
 }
 
+// The capsule the closed-form answers are checked on (radius 0.4, turned and
+// moved off the axes), with its axis' two end points in world space.
+template <typename T>
+struct TurnedCapsule {
+  explicit TurnedCapsule(double length)
+      : m(glm::translate(Mat4d(1), Vec3d(0.5, -1, 2)) * glm::rotate(Mat4d(1), 0.7, glm::normalize(Vec3d(1, 2, 0.5)))),
+        capsule(makeCapsule<T>(0.4, length, m, 3)),
+        a(m * glm::dvec4(0, 0, 0, 1)),
+        b(m * glm::dvec4(0, 0, length, 1)) {}
+  Mat4d m;
+  decltype(makeCapsule<T>(0.4, 1.0, Mat4d(1), 3)) capsule;
+  Vec3d a, b;
+};
+
 }  // namespace
 
 TEMPLATE_TEST_CASE("the closed-form capsule gives the quartic capsule's spans", "[shapes][capsule]", float, double) {
@@ -87,11 +101,10 @@ TEMPLATE_TEST_CASE("the capsule's first enter is what its spans give, bit for bi
   // A union asks its children for firstEnter; the capsule answers it without
   // a span list, and must answer as Primitive's default reads spans().
   using T = TestType;
-  const Mat4d m =
-      glm::translate(Mat4d(1), Vec3d(0.5, -1, 2)) * glm::rotate(Mat4d(1), 0.7, glm::normalize(Vec3d(1, 2, 0.5)));
   for (const double length : {2.0, 0.0}) {
-    auto capsule = makeCapsule<T>(0.4, length, m, 3);
-    const Vec3d a = Vec3d(m * glm::dvec4(0, 0, 0, 1)), b = Vec3d(m * glm::dvec4(0, 0, length, 1));
+    const TurnedCapsule<T> turned(length);
+    const auto& capsule = turned.capsule;
+    const Vec3d a = turned.a, b = turned.b;
     std::mt19937 rng(31);
     std::uniform_real_distribution<double> along(0.0, 1.0);
     int enters = 0, insides = 0;
@@ -128,11 +141,10 @@ TEMPLATE_TEST_CASE("the capsule's anyHit is what its spans give", "[shapes][caps
   // must answer as Primitive's default (firstCrossing of spans()) does:
   // segments that start inside, end inside, pass by, and stop short.
   using T = TestType;
-  const Mat4d m =
-      glm::translate(Mat4d(1), Vec3d(0.5, -1, 2)) * glm::rotate(Mat4d(1), 0.7, glm::normalize(Vec3d(1, 2, 0.5)));
   for (const double length : {2.0, 0.0}) {
-    auto capsule = makeCapsule<T>(0.4, length, m, 3);
-    const Vec3d a = Vec3d(m * glm::dvec4(0, 0, 0, 1)), b = Vec3d(m * glm::dvec4(0, 0, length, 1));
+    const TurnedCapsule<T> turned(length);
+    const auto& capsule = turned.capsule;
+    const Vec3d a = turned.a, b = turned.b;
     std::mt19937 rng(37);
     std::uniform_real_distribution<double> along(0.0, 1.0), reach(0.5, 8.0);
     int yes = 0, no = 0, fromInside = 0;
