@@ -1,6 +1,7 @@
 #include "lht/raster/raster_estimate.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -74,27 +75,38 @@ RasterEstimate estimateRaster(const LatticeBox& box, const LatticeObject& object
   for (std::size_t i = 0; i < points.size(); ++i) firstOf[i + 1] += firstOf[i];
   std::vector<std::uint32_t> exits(drawn.size());
   for (const auto& [i, j] : drawn) exits[firstOf[i]++] = j;  // firstOf[i] ends where group i + 1 starts
+  // Traced on the rasterizer's threads, entry points handed out one at a time
+  // as it does: the tracer is shared read-only, each worker aims its own fan,
+  // and the hits are a sum, the same whatever the order.
   const PairTracer tracer(box, *object.primitive, object.cover ? &*object.cover : nullptr);
-  CoverCull::Fan fan;
-  for (std::size_t i = 0, k = 0; i < points.size(); ++i) {
-    const std::size_t end = firstOf[i];
-    if (k == end) continue;
-    tracer.cull().aim(points[i].toVec(), faces[i], fan);
-    for (; k < end; ++k) {
-      const std::uint32_t j = exits[k];
-      RasterHit hit;
-      bool traced = false;
-      if (tracer.trace(points[i], faces[i], points[j], faces[j], hit, traced, &fan)) ++e.sampledHits;
+  const unsigned rows = std::max(1u, std::min<unsigned>(threads ? threads : hardwareThreads(),
+                                                        static_cast<unsigned>(std::max<std::size_t>(1, points.size()))));
+  std::vector<std::uint64_t> hitsOf(rows, 0);
+  std::atomic<std::size_t> next{0};
+  const auto work = [&](unsigned w) {
+    CoverCull::Fan fan;
+    std::uint64_t hits = 0;  // counted here, stored once: neighbouring counters share a cache line
+    for (std::size_t i = next.fetch_add(1); i < points.size(); i = next.fetch_add(1)) {
+      const std::size_t begin = i == 0 ? 0 : firstOf[i - 1], end = firstOf[i];  // group i, after the sort
+      if (begin == end) continue;
+      tracer.cull().aim(points[i].toVec(), faces[i], fan);
+      for (std::size_t k = begin; k < end; ++k) {
+        const std::uint32_t j = exits[k];
+        RasterHit hit;
+        bool traced = false;
+        if (tracer.trace(points[i], faces[i], points[j], faces[j], hit, traced, &fan)) ++hits;
+      }
     }
-  }
+    hitsOf[w] = hits;
+  };
+  runWorkers(rows, work, [&] { next.store(points.size()); });
+  for (const std::uint64_t h : hitsOf) e.sampledHits += h;
   e.sampled = drawn.size();
   const double share = e.sampled ? double(e.sampledHits) / double(e.sampled) : 0.0;
   e.hits = std::min(e.distinctPairs, static_cast<std::uint64_t>(share * double(e.distinctPairs) + 0.5));
   e.fixedBytes = e.boundaryPoints * kPointBytes;
   // A row's list grows by doubling and is then copied to its exact size:
-  // up to three times its hits at once, in every thread.
-  const unsigned rows = std::max(1u, std::min<unsigned>(threads ? threads : hardwareThreads(),
-                                                        static_cast<unsigned>(std::max<std::uint64_t>(1, e.boundaryPoints))));
+  // up to three times its hits at once, in every thread (`rows` of them).
   const auto rowHits = static_cast<std::uint64_t>(share * double(e.boundaryPoints)) + 1;
   e.rowBytes = rows * 3 * rowHits * RasterEstimate::kHitBytes;
   return e;

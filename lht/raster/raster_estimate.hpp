@@ -14,7 +14,8 @@
 // lattice, are traced by the rasterizer's own PairTracer, grouped by entry
 // point so each point's pairs share one fan of the cover cull as the
 // rasterizer's do (lht/raster/cover_cull.hpp), instead of testing every
-// cover piece for every drawn pair.
+// cover piece for every drawn pair; on the rasterizer's threads, since the
+// count of hits does not depend on which thread traced which pair.
 #include <array>
 #include <cstdint>
 

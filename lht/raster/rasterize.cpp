@@ -123,12 +123,17 @@ class Rasterizer {
     if (!options_.progress) progress.setEnabled(false);
 
     std::vector<RasterStats> stats(threads);
-    std::vector<CoverCull::Fan> fans(threads);
-    const auto work = [this, &stats, &fans, &progress](unsigned w) {
+    const auto work = [this, &stats, &progress](unsigned w) {
+      // A worker's counts and fan are its own locals, the counts stored at the
+      // end: neighbouring slots of shared arrays would share cache lines,
+      // and every pair's count would move the line between the cores.
+      RasterStats counted;
+      CoverCull::Fan fan;
       for (std::size_t i = next_.fetch_add(1); i < points_.size(); i = next_.fetch_add(1)) {
-        tracePoint(i, stats[w], fans[w]);
+        tracePoint(i, counted, fan);
         progress.advance();
       }
+      stats[w] = counted;
     };
     // runWorkers keeps worker 0 in the caller's thread (no allocator arena of
     // its own) and carries the first exception (std::bad_alloc) to the caller.
@@ -153,7 +158,7 @@ class Rasterizer {
  private:
   void tracePoint(std::size_t i, RasterStats& stats, CoverCull::Fan& fan) {
     const LatticePoint& in = points_[i];
-    std::vector<RasterHit>& out = perPoint_[i];
+    std::vector<RasterHit> out;  // grown here, stored once: perPoint_'s neighbouring headers share cache lines
     tracer_.cull().aim(in.toVec(), faces_[i], fan);
     for (std::size_t j = 0; j < points_.size(); ++j) {
       const int multiplicity = multiplicity_[faces_[i] * 64u + faces_[j]];
@@ -171,7 +176,9 @@ class Rasterizer {
       }
     }
     out.shrink_to_fit();  // growth by doubling left up to half of it unused
-    const std::uint64_t held = held_.fetch_add(out.size()) + out.size();
+    const std::size_t kept = out.size();
+    perPoint_[i] = std::move(out);
+    const std::uint64_t held = held_.fetch_add(kept) + kept;
     const std::uint64_t done = done_.fetch_add(1) + 1;
     if (held > options_.maxHits) throw RasterHitLimit(held, done, points_.size());
   }

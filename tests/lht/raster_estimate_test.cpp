@@ -58,6 +58,23 @@ TEST_CASE("raster estimate: a sampled lattice's hits within a few per cent, the 
   }
 }
 
+TEST_CASE("raster estimate: the same hits on every thread count") {
+  // The sample is traced on the rasterizer's threads; which thread traced a
+  // pair must not change what was counted, sampled or every pair traced.
+  for (const LatticeObject& object : {sphereObject(8.0), capsuleObject(0.5, 20.0), sphereObject(2.0)}) {
+    const LatticeBox box(object.bounds, 1.0, 1.0);
+    const RasterEstimate one = estimateRaster(box, object, 1);
+    REQUIRE(one.sampledHits > 0);
+    for (const unsigned threads : {2u, 3u, 8u}) {
+      const RasterEstimate many = estimateRaster(box, object, threads);
+      INFO(object.definition << " on " << threads << " threads");
+      CHECK(many.sampled == one.sampled);
+      CHECK(many.sampledHits == one.sampledHits);
+      CHECK(many.hits == one.hits);
+    }
+  }
+}
+
 TEST_CASE("rasterize: the running count stops the rasterizer past maxHits, and a limit it meets changes nothing") {
   const LatticeObject sphere = sphereObject(3.0);
   const LatticeBox box(sphere.bounds, 1.0, 1.0);
