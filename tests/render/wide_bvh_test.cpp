@@ -289,7 +289,8 @@ TEMPLATE_TEST_CASE("wide BVH lanes hold their items' boxes rounded outwards, eac
     return lanes;
   };
   std::size_t binaryLeaves = 0;
-  for (const auto& node : Bvh<T>(boxes).nodes()) binaryLeaves += node.count > 0;
+  const Bvh<T> binary(boxes);  // named: a range-for over a temporary's nodes() would read freed nodes
+  for (const auto& node : binary.nodes()) binaryLeaves += node.count > 0;
   REQUIRE(leafLanes(eight.nodes8()) == binaryLeaves);
   REQUIRE(leafLanes(culled.nodes8()) < binaryLeaves * 3 / 4);
 #endif
@@ -323,7 +324,8 @@ TEMPLATE_TEST_CASE("the wide BVH's depth bound holds on degenerate inputs", "[bv
     if (boxes != &spread) REQUIRE(bvh.depth() <= 2 * int(std::ceil(std::log2(double(n)))));
     if (boxes == &spread) {
       std::uint32_t largest = 0;
-      for (const auto& node : Bvh<T>(spread).nodes()) largest = std::max(largest, node.count);
+      const Bvh<T> binary(spread);  // named, as above
+      for (const auto& node : binary.nodes()) largest = std::max(largest, node.count);
       REQUIRE(largest > 255);  // more than a byte counts
     }
     // A ray through every box visits each exactly once, in either walk.
