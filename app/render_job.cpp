@@ -18,7 +18,6 @@
 #include "foundation/system/atomic_file.hpp"
 #include "foundation/error.hpp"
 #include "foundation/progress.hpp"
-#include "foundation/system/kept_until_exit.hpp"
 #include "foundation/threads.hpp"
 #include "io/png.hpp"
 #include "io/serial_sink.hpp"
@@ -273,8 +272,6 @@ RenderResult renderWith(lht::SceneWithLattices loaded, const RenderJob& job, con
   result.height = result.wire ? result.wire->choice.height : renderer.height();
   result.rays = renderer.raysTraced();
   result.threads = renderer.threads();
-  // The outputs are written: the scene's teardown would only delay the exit.
-  if (job.processExitsAfter) keepUntilExit(renderer.releaseScene());
   if (job.memory.budget) checkPeakAgainst(budget->budget, job.events);
   if (result.wire && !result.wire->choice.fits)
     throw Error(ErrorKind::Budget,

@@ -65,9 +65,6 @@ struct RenderJob {
   // budget chooses for a user.
   double rdLambda = 0;
   bool quiet = false;   // no progress bars
-  // The process exits once the render returns (`lattice render`): the
-  // scene is kept, not destroyed (foundation/system/kept_until_exit.hpp).
-  bool processExitsAfter = false;
   RenderEvents events;  // told what happened along the way (app/render_events.hpp); empty: nobody
 };
 

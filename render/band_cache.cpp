@@ -51,12 +51,6 @@ void BandCache::startBandAhead(int y0) {
 }
 
 // Waits for the band under way and makes it the current one.
-void BandCache::stopThreads() {
-  std::lock_guard lock(mutex_);
-  aheadStart_ = -1;  // its rows, if any, are rendered again when asked
-  pool_.reset();     // waits for the running band, then joins
-}
-
 void BandCache::takeBandAhead() {
   const int start = std::exchange(aheadStart_, -1);
   pool_->wait();  // rethrows a worker's error

@@ -38,10 +38,6 @@ class BandCache {
   BandCache(const BandCache&) = delete;
   BandCache& operator=(const BandCache&) = delete;
 
-  // Waits for a band being rendered ahead and ends the pool's threads: after
-  // it nothing calls shadeRow until the next row() (which starts a new pool).
-  void stopThreads();
-
   // Row y (0 <= y < height) into out (width pixels); safe from several
   // threads at once (one at a time gets in).
   void row(int y, std::span<Color18> out);

@@ -76,12 +76,6 @@ template <typename T>
 Renderer<T>::~Renderer() = default;
 
 template <typename T>
-PrimitivePtr<T> Renderer<T>::releaseScene() {
-  bands_.stopThreads();  // a band rendered ahead reads the scene
-  return std::move(root_);
-}
-
-template <typename T>
 Vec3<T> Renderer<T>::trace(const Ray<T>& ray, std::uint64_t& rays, OccluderCache<T>& occluders) const {
   ++rays;
   Hit<T> hit;

@@ -100,11 +100,6 @@ class Renderer final : public RowSource18 {
   // Primary plus shadow rays traced so far (statistics).
   std::uint64_t raysTraced() const { return rays_.value(); }
   const Primitive<T>& root() const { return *root_; }
-  // Hands over the built scene once no row is wanted any more, its threads
-  // stopped first: the renderer renders nothing after. For a caller that
-  // disposes of the scene its own way (`lattice render` keeps it until the
-  // process exits, foundation/system/kept_until_exit.hpp).
-  PrimitivePtr<T> releaseScene();
   const Camera<T>& camera() const { return camera_; }
 
  private:

@@ -304,7 +304,6 @@ void addRender(CLI::App& root) {
   cmd->callback([flags, cmd] {
     RenderJob job = jobFrom(*flags, *cmd);
     job.events = sayRenderEvent;
-    job.processExitsAfter = true;  // the command is the process's last work
     const RenderResult r = renderScene(job);
     fmt::print(stderr, "lattice render: {}: {}x{}, {:.2f} s{}, {} rays ({} arithmetic, {} thread{}){}\n", job.scene,
                r.width, r.height, r.seconds, phaseTimes(r.phases), r.rays, job.arithmetic, r.threads,

@@ -2,12 +2,9 @@
 // rows, and float vs double agreement on a real scene.
 #include <catch2/catch.hpp>
 
-#include <atomic>
-#include <chrono>
 #include <cstdlib>
 #include <vector>
 
-#include "render/band_cache.hpp"
 #include "render/renderer.hpp"
 #include "loader/scene_loader.hpp"
 #include "tests/support/golden.hpp"
@@ -148,52 +145,4 @@ TEST_CASE("renderer: image row 0 is the top of the thesis camera's display") {
   // The upper-left of the sphere faces the stronger light: brighter than its lower right.
   const Vec3d upperLeft = r.pixel(11, 11), lowerRight = r.pixel(21, 21);
   REQUIRE(upperLeft.b > lowerRight.b);
-}
-
-TEST_CASE("renderer: releaseScene stops the band rendered ahead before handing the scene over") {
-  const SceneDesc scene = exampleScene("sphere-hole.toml");
-  Renderer<double> four(scene, sized(48, 200, 4));
-  REQUIRE(four.threads() == 4);
-  std::vector<Color18> row(48);
-  four.row(0, row);  // the band after the first is now rendered ahead, reading the scene
-  const Primitive<double>* built = &four.root();
-  const PrimitivePtr<double> released = four.releaseScene();  // without waiting: a null scene read mid-band
-  CHECK(released.get() == built);
-}
-
-TEST_CASE("renderer: a band cache whose threads were stopped renders the same rows again") {
-  const SceneDesc scene = exampleScene("sphere-hole.toml");
-  Renderer<double> one(scene, sized(48, 100, 1));
-  const auto expected = allRows(one);
-  std::vector<Color18> seen(expected.size());
-  const auto rowOf = [&](int y) { return std::span<Color18>(seen).subspan(std::size_t(y) * 48, 48); };
-  int calls = 0;
-  BandCache bands(48, 100, 4, [&](int y, Color18* out) {
-    ++calls;
-    one.row(y, std::span<Color18>(out, 48));
-  });
-  bands.row(0, rowOf(0));
-  bands.stopThreads();  // the band ahead, if under way, finished and dropped
-  for (int y = 1; y < 100; ++y) bands.row(y, rowOf(y));
-  bands.row(0, rowOf(0));
-  CHECK(seen == expected);
-  CHECK(calls > 0);
-}
-
-TEST_CASE("renderer: a band cache's stopThreads returns with no row being shaded") {
-  std::atomic<int> started{0}, finished{0};
-  BandCache bands(8, 400, 2, [&](int, Color18* out) {
-    ++started;
-    // Slow rows, so the band ahead is under way when the threads are stopped.
-    const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(2);
-    while (std::chrono::steady_clock::now() < until) {
-    }
-    std::fill(out, out + 8, Color18{});
-    ++finished;
-  });
-  std::vector<Color18> row(8);
-  bands.row(0, row);  // rows 16.. are now shaded ahead
-  bands.stopThreads();
-  CHECK(started.load() > 16);
-  CHECK(finished.load() == started.load());
 }
