@@ -9,6 +9,7 @@
 #include "foundation/error.hpp"
 #include "io/png_encoder.hpp"
 #include "lht/grid/lattice_box.hpp"
+#include "lht/raster/raster_estimate.hpp"
 #include "lht/table/entry_codec.hpp"
 
 namespace lattice::app {
@@ -69,7 +70,7 @@ std::string RasterRoom::name() const {
 }
 
 lht::RasterAdmissionHook rasterizingWithin(std::shared_ptr<const RasterRoom> room) {
-  return [room = std::move(room)](const lht::LatticeDefinition& lattice, const lht::RasterEstimate& estimate,
+  return [room = std::move(room)](const lht::LatticeDefinition& lattice, lht::LazyRasterEstimate& lazy,
                                   lht::LhtForm form, lht::LhtPrecision requested) {
     // Without procfs a chosen budget cannot be kept (as planBuiltRender
     // says); the default one then counts the lattice alone.
@@ -89,9 +90,16 @@ lht::RasterAdmissionHook rasterizingWithin(std::shared_ptr<const RasterRoom> roo
     const auto tableBytes = [&](std::uint64_t entries) {
       std::uint64_t least = UINT64_MAX;
       for (const lht::LhtPrecision p : precisions)
-        least = std::min(least, expectedTableBytes(form, p, entries, estimate.cells));
+        least = std::min(least, expectedTableBytes(form, p, entries, lazy.worstCase().cells));
       return least;
     };
+    // Every distinct pair a hit within the budget: no sample can refuse the
+    // lattice or lower its count below what the rasterizer can reach, so
+    // none is traced.
+    const RasterAdmission bound = admitRaster(room->budget, now.current, room->leastOutput, lazy.worstCase(), tableBytes);
+    if (bound.fits)
+      return lht::RasterAllowance{bound.maxHits, fmt::format("more than the {} distinct pairs", bound.maxHits)};
+    const lht::RasterEstimate& estimate = lazy.sampled();
     const RasterAdmission admission = admitRaster(room->budget, now.current, room->leastOutput, estimate, tableBytes);
     const std::uint64_t base = now.current + room->leastOutput;
     std::string spacing = "a larger spacing";

@@ -34,7 +34,9 @@ struct RasterRoom {
 // lattice that cannot fit is refused with lattice::Error(Input), naming the
 // figures and the ways out (the on-demand form, a larger spacing, a larger
 // budget); one that can is rasterized with the running count's limit. When
-// what is resident already breaks the budget: lattice::Error(Budget).
+// what is resident already breaks the budget: lattice::Error(Budget). The
+// estimate's sample is traced only when the worst case (every distinct pair
+// a hit) does not fit.
 lht::RasterAdmissionHook rasterizingWithin(std::shared_ptr<const RasterRoom> room);
 
 // Before any thread starts, under a budget: every thread allocates from the

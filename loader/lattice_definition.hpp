@@ -24,7 +24,7 @@ namespace lattice::lht {
 
 class LatticeDefinition;
 class LookupStatsBook;
-struct RasterEstimate;  // lht/raster/raster_estimate.hpp
+class LazyRasterEstimate;  // lht/raster/raster_estimate.hpp
 
 // 64 MiB: Plate 7 at f_lat 4 stores 1.3 million answers (62 MiB at 48 bytes).
 inline constexpr std::uint64_t kDefaultOnDemandCacheBytes = std::uint64_t(64) << 20;
@@ -37,15 +37,15 @@ using TablePackingHook = std::function<LhtPrecision(const LatticeDefinition& lat
                                                     std::uint64_t entries, std::uint64_t hitListBytes)>;
 
 // Under a memory budget: asked before a lattice is rasterized, with the
-// estimate of what rasterizing it holds, the table form and the entry form
-// asked for. Throws lattice::Error to refuse it; else returns the most hits
+// estimate of what rasterizing it holds (its worst case at once, the sampled
+// one traced when asked for), the table form and the entry form asked for. Throws lattice::Error to refuse it; else returns the most hits
 // the rasterizer may hold (its running count), and what to say if it passes
 // them.
 struct RasterAllowance {
   std::uint64_t maxHits = UINT64_MAX;
   std::string refusal;  // follows "rasterizing stopped at N hits (...), "
 };
-using RasterAdmissionHook = std::function<RasterAllowance(const LatticeDefinition& lattice, const RasterEstimate& estimate,
+using RasterAdmissionHook = std::function<RasterAllowance(const LatticeDefinition& lattice, LazyRasterEstimate& estimate,
                                                           LhtForm form, LhtPrecision requested)>;
 
 struct TableSettings {

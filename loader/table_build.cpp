@@ -21,7 +21,7 @@ BuiltTable packTable(const LatticeObject& object, double lambda, double oversamp
                      LhtForm tableForm,
                      const std::function<LhtPrecision(std::uint64_t, std::uint64_t)>& chooseForm,
                      const std::function<std::uint64_t(LhtPrecision)>& hashFor,
-                     const std::function<RasterAllowance(const RasterEstimate&)>& admit = {}) {
+                     const std::function<RasterAllowance(LazyRasterEstimate&)>& admit = {}) {
   const bool rasterized = withForm(
       tableForm, [](auto i) { return RasterizedForm<FormAt<decltype(i)::value>>; }, [] { return false; });
   if (!rasterized)
@@ -34,7 +34,10 @@ BuiltTable packTable(const LatticeObject& object, double lambda, double oversamp
   options.progress = settings.progress;
   options.threads = settings.threads;
   RasterAllowance allowance;
-  if (admit) allowance = admit(estimateRaster(lht.box, object, options.threads));
+  if (admit) {
+    LazyRasterEstimate estimate(lht.box, object, options.threads);
+    allowance = admit(estimate);
+  }
   options.maxHits = allowance.maxHits;
   const RasterResult raster = [&] {
     try {
@@ -86,9 +89,9 @@ BuiltTable buildLatticeTable(const LatticeDefinition& lattice, const TableSettin
   try {
     const LatticeObject solid = sceneObject(lattice.object, lattice.objectText);
     const LhtPrecision requested = lattice.precisionUnder(settings);
-    std::function<RasterAllowance(const RasterEstimate&)> admit;
+    std::function<RasterAllowance(LazyRasterEstimate&)> admit;
     if (settings.admission)
-      admit = [&](const RasterEstimate& estimate) {
+      admit = [&](LazyRasterEstimate& estimate) {
         return settings.admission(lattice, estimate, lattice.formUnder(settings), requested);
       };
     return packTable(

@@ -28,24 +28,66 @@ std::uint64_t nextRandom(std::uint64_t& state) {
   return z ^ (z >> 31);
 }
 
-}  // namespace
-
-RasterEstimate estimateRaster(const LatticeBox& box, const LatticeObject& object, unsigned threads,
-                              std::uint64_t samples) {
+// The box's boundary points, their faces, and the counts that need no tracing.
+struct CountedPairs {
   RasterEstimate e;
+  std::vector<LatticePoint> points;
+  std::vector<std::uint8_t> faces;
+};
+
+CountedPairs countPairs(const LatticeBox& box) {
+  CountedPairs c;
+  RasterEstimate& e = c.e;
   e.cells = box.cells();
   e.pairs = box.pairCountEq13();
-  const std::vector<LatticePoint> points = box.boundaryPoints();
-  std::vector<std::uint8_t> faces(points.size());
+  c.points = box.boundaryPoints();
+  c.faces.resize(c.points.size());
   std::array<std::uint64_t, 64> perFaces{};  // boundary points by their face mask
-  for (std::size_t i = 0; i < points.size(); ++i) ++perFaces[faces[i] = box.facesOf(points[i])];
-  e.boundaryPoints = points.size();
+  for (std::size_t i = 0; i < c.points.size(); ++i) ++perFaces[c.faces[i] = box.facesOf(c.points[i])];
+  e.boundaryPoints = c.points.size();
   for (unsigned a = 0; a < 64; ++a)
     for (unsigned b = 0; b < 64; ++b)
       if (LatticeBox::pairMultiplicity(std::uint8_t(a), std::uint8_t(b)) != 0) {
         e.distinctPairs += perFaces[a] * perFaces[b];
         if (a == b) e.distinctPairs -= perFaces[a];  // p_i = p_o: a point, not a segment
       }
+  e.fixedBytes = e.boundaryPoints * kPointBytes;
+  return c;
+}
+
+// The rasterizer's worker count for `points` entry points.
+unsigned rowsFor(unsigned threads, std::size_t points) {
+  return std::max(1u, std::min<unsigned>(threads ? threads : hardwareThreads(),
+                                         static_cast<unsigned>(std::max<std::size_t>(1, points))));
+}
+
+// A row's list grows by doubling and is then copied to its exact size: up to
+// three times its hits at once, in every thread (`rows` of them).
+std::uint64_t rowBytesFor(unsigned rows, double share, std::uint64_t boundaryPoints) {
+  const auto rowHits = static_cast<std::uint64_t>(share * double(boundaryPoints)) + 1;
+  return rows * 3 * rowHits * RasterEstimate::kHitBytes;
+}
+
+}  // namespace
+
+RasterEstimate worstCaseRaster(const LatticeBox& box, unsigned threads) {
+  RasterEstimate e = countPairs(box).e;
+  e.hits = e.distinctPairs;
+  e.rowBytes = rowBytesFor(rowsFor(threads, e.boundaryPoints), 1.0, e.boundaryPoints);
+  return e;
+}
+
+const RasterEstimate& LazyRasterEstimate::sampled() {
+  if (!sampled_) sampled_ = estimateRaster(box_, object_, threads_);
+  return *sampled_;
+}
+
+RasterEstimate estimateRaster(const LatticeBox& box, const LatticeObject& object, unsigned threads,
+                              std::uint64_t samples) {
+  CountedPairs counted = countPairs(box);
+  RasterEstimate& e = counted.e;
+  const std::vector<LatticePoint>& points = counted.points;
+  const std::vector<std::uint8_t>& faces = counted.faces;
 
   // The pairs to trace, drawn first and then traced grouped by entry point,
   // so the cull aims one fan per point (lht/raster/cover_cull.hpp) as the
@@ -79,8 +121,7 @@ RasterEstimate estimateRaster(const LatticeBox& box, const LatticeObject& object
   // as it does: the tracer is shared read-only, each worker aims its own fan,
   // and the hits are a sum, the same whatever the order.
   const PairTracer tracer(box, *object.primitive, object.cover ? &*object.cover : nullptr);
-  const unsigned rows = std::max(1u, std::min<unsigned>(threads ? threads : hardwareThreads(),
-                                                        static_cast<unsigned>(std::max<std::size_t>(1, points.size()))));
+  const unsigned rows = rowsFor(threads, points.size());
   std::vector<std::uint64_t> hitsOf(rows, 0);
   std::atomic<std::size_t> next{0};
   const auto work = [&](unsigned w) {
@@ -104,11 +145,7 @@ RasterEstimate estimateRaster(const LatticeBox& box, const LatticeObject& object
   e.sampled = drawn.size();
   const double share = e.sampled ? double(e.sampledHits) / double(e.sampled) : 0.0;
   e.hits = std::min(e.distinctPairs, static_cast<std::uint64_t>(share * double(e.distinctPairs) + 0.5));
-  e.fixedBytes = e.boundaryPoints * kPointBytes;
-  // A row's list grows by doubling and is then copied to its exact size:
-  // up to three times its hits at once, in every thread (`rows` of them).
-  const auto rowHits = static_cast<std::uint64_t>(share * double(e.boundaryPoints)) + 1;
-  e.rowBytes = rows * 3 * rowHits * RasterEstimate::kHitBytes;
+  e.rowBytes = rowBytesFor(rows, share, e.boundaryPoints);
   return e;
 }
 

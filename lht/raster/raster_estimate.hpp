@@ -18,6 +18,7 @@
 // count of hits does not depend on which thread traced which pair.
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include "lht/grid/lattice_box.hpp"
 #include "lht/raster/lattice_object.hpp"
@@ -51,5 +52,29 @@ struct RasterEstimate {
 // `threads`: the rasterizer's (0: all hardware threads).
 RasterEstimate estimateRaster(const LatticeBox& box, const LatticeObject& object, unsigned threads,
                               std::uint64_t samples = kEstimateSamples);
+
+// The estimate's bound, without tracing: the counts estimateRaster gives and
+// every distinct pair a hit. No sample can expect more, so whatever fits
+// with it fits with any sample (app/memory_plan.hpp admitRaster).
+RasterEstimate worstCaseRaster(const LatticeBox& box, unsigned threads);
+
+// What an admission is shown: the bound at once, the sampled estimate traced
+// on the first ask only, since a lattice whose worst case fits the budget
+// needs no sample (most renders: the default budget is half the RAM).
+class LazyRasterEstimate {
+ public:
+  LazyRasterEstimate(const LatticeBox& box, const LatticeObject& object, unsigned threads)
+      : box_(box), object_(object), threads_(threads), worstCase_(worstCaseRaster(box, threads)) {}
+  const RasterEstimate& worstCase() const { return worstCase_; }
+  const RasterEstimate& sampled();
+  bool wasSampled() const { return sampled_.has_value(); }
+
+ private:
+  const LatticeBox& box_;
+  const LatticeObject& object_;
+  unsigned threads_;
+  RasterEstimate worstCase_;
+  std::optional<RasterEstimate> sampled_;
+};
 
 }  // namespace lattice::lht

@@ -58,6 +58,41 @@ TEST_CASE("raster estimate: a sampled lattice's hits within a few per cent, the 
   }
 }
 
+TEST_CASE("raster estimate: the worst case counts as the sample does, every distinct pair a hit, and bounds it") {
+  for (const LatticeObject& object : {sphereObject(8.0), capsuleObject(0.5, 20.0), sphereObject(2.0)}) {
+    const LatticeBox box(object.bounds, 1.0, 1.0);
+    for (const unsigned threads : {1u, 2u}) {
+      const RasterEstimate sampled = estimateRaster(box, object, threads);
+      const RasterEstimate worst = worstCaseRaster(box, threads);
+      INFO(object.definition << " on " << threads << " threads");
+      CHECK(worst.cells == sampled.cells);
+      CHECK(worst.pairs == sampled.pairs);
+      CHECK(worst.distinctPairs == sampled.distinctPairs);
+      CHECK(worst.boundaryPoints == sampled.boundaryPoints);
+      CHECK(worst.fixedBytes == sampled.fixedBytes);
+      CHECK(worst.sampled == 0);
+      CHECK(worst.hits == worst.distinctPairs);
+      REQUIRE(sampled.hits < worst.hits);
+      // What the worst case admits, any sample admits: it holds more at every count.
+      CHECK(worst.rowBytes > sampled.rowBytes);
+      CHECK(worst.bytesFor(worst.hits) > sampled.bytesFor(sampled.hits));
+    }
+  }
+}
+
+TEST_CASE("raster estimate: the lazy estimate traces its sample once, on the first ask") {
+  const LatticeObject object = sphereObject(8.0);
+  const LatticeBox box(object.bounds, 1.0, 1.0);
+  LazyRasterEstimate lazy(box, object, 1);
+  CHECK_FALSE(lazy.wasSampled());
+  CHECK(lazy.worstCase().hits == worstCaseRaster(box, 1).hits);
+  CHECK_FALSE(lazy.wasSampled());
+  const RasterEstimate& first = lazy.sampled();
+  CHECK(lazy.wasSampled());
+  CHECK(first.sampledHits == estimateRaster(box, object, 1).sampledHits);
+  CHECK(&lazy.sampled() == &first);
+}
+
 TEST_CASE("raster estimate: the same hits on every thread count") {
   // The sample is traced on the rasterizer's threads; which thread traced a
   // pair must not change what was counted, sampled or every pair traced.
@@ -118,9 +153,9 @@ lattice = "bead"
   REQUIRE(entries > 100);
 
   RasterEstimate seen;
-  settings.admission = [&](const LatticeDefinition& lattice, const RasterEstimate& e, LhtForm, LhtPrecision) {
+  settings.admission = [&](const LatticeDefinition& lattice, LazyRasterEstimate& e, LhtForm, LhtPrecision) {
     CHECK(lattice.name == "bead");
-    seen = e;
+    seen = e.sampled();
     return RasterAllowance{entries / 2, "more than the budget allows"};
   };
   try {
@@ -134,7 +169,7 @@ lattice = "bead"
   CHECK(seen.distinctPairs == whole.stats.distinctPairs);
 
   // A refusal before any work reaches the caller as it was thrown.
-  settings.admission = [](const LatticeDefinition&, const RasterEstimate&, LhtForm, LhtPrecision) -> RasterAllowance {
+  settings.admission = [](const LatticeDefinition&, LazyRasterEstimate&, LhtForm, LhtPrecision) -> RasterAllowance {
     throw Error(ErrorKind::Input, "too large");
   };
   CHECK_THROWS_WITH(buildLatticeTable(bead, settings), Catch::Contains("lattice 'bead': too large"));
