@@ -171,11 +171,14 @@ class ThesisLatticeLeaf final : public LatticeLeafBase<T> {
 
   bool anyHit(const Ray<T>& ray, T tmin, T tmax) const override {
     if (!this->castsShadows_) return false;
-    Chord c;
-    if (!this->clip(ray, tmin, tmax, c)) return false;
-    return blocks(c, tmin, tmax);
+    Located at;
+    const Found found = locate(ray, tmin, tmax, at);
+    return found == Found::EnterAhead || (found == Found::StartsInside && at.leaveT < tmax);
   }
-  bool anyHitClipped(const Ray<T>& /*ray*/, const LocalChord<T>& chord, T tmin, T tmax) const override {
+  // Only the floating-point unions cull and hand chords; fixed point (the
+  // firmware) keeps no second copy of the look-up.
+  bool anyHitClipped(const Ray<T>& ray, const LocalChord<T>& chord, T tmin, T tmax) const override {
+    if constexpr (!kIsIeee<T>) return anyHit(ray, tmin, tmax);
     if (!this->castsShadows_) return false;
     Chord c;
     if (!Base::clipped(chord, tmin, tmax, c)) return false;
@@ -197,15 +200,16 @@ class ThesisLatticeLeaf final : public LatticeLeafBase<T> {
   }
 
   bool firstEnter(const Ray<T>& ray, T tmin, T tmax, Hit<T>& hit, bool& inside) const override {
-    Chord c;
-    if (!this->clip(ray, tmin, tmax, c)) return false;
-    return enterOf(c, tmin, tmax, hit, inside);
+    Located at;
+    return enterOf(locate(ray, tmin, tmax, at), at, hit, inside);
   }
-  bool firstEnterClipped(const Ray<T>& /*ray*/, const LocalChord<T>& chord, T tmin, T tmax, Hit<T>& hit,
+  bool firstEnterClipped(const Ray<T>& ray, const LocalChord<T>& chord, T tmin, T tmax, Hit<T>& hit,
                          bool& inside) const override {
+    if constexpr (!kIsIeee<T>) return firstEnter(ray, tmin, tmax, hit, inside);
     Chord c;
     if (!Base::clipped(chord, tmin, tmax, c)) return false;
-    return enterOf(c, tmin, tmax, hit, inside);
+    Located at;
+    return enterOf(locate(c, tmin, tmax, at), at, hit, inside);
   }
 
   void spans(const Ray<T>& ray, T tmin, T tmax, SpanList<T>& out) const override {
@@ -253,18 +257,18 @@ class ThesisLatticeLeaf final : public LatticeLeafBase<T> {
     const Found found = locate(c, tmin, tmax, at);
     return found == Found::EnterAhead || (found == Found::StartsInside && at.leaveT < tmax);
   }
-  // firstEnter's answer from a clipped chord.
-  bool enterOf(Chord& c, T tmin, T tmax, Hit<T>& hit, bool& inside) const {
-    Located at;
-    switch (locate(c, tmin, tmax, at)) {
+  // firstEnter's answer from what locate found.
+  bool enterOf(Found found, const Located& at, Hit<T>& hit, bool& inside) const {
+    switch (found) {
       case Found::None: return false;
       case Found::EnterAhead: hit = {at.enterT, this->reader_.normal(at.enterEntry), this->material_}; return true;
       case Found::StartsInside: inside = true; return false;
     }
     return false;
   }
-  // locate from the clipped chord.
-  Found locate(Chord& c, T tmin, T tmax, Located& at) const {
+  // locate from the clipped chord (inlined into the one above, so the
+  // fixed-point build runs the code it ran before the chords were handed).
+  [[gnu::always_inline]] Found locate(Chord& c, T tmin, T tmax, Located& at) const {
     if (!roundEnds(c)) return Found::None;
     at.enterEntry = this->find(c.in, c.out);
     if (!at.enterEntry) return Found::None;

@@ -81,7 +81,8 @@ class UnionCore : public Base {
     Hit<T> child;
     auto visit = [&](const Primitive<T>& c, T& lim, const LocalChord<T>* chord = nullptr) {
       if (inside) return;
-      if (chord ? c.firstEnterClipped(ray, *chord, tmin, lim, child, inside) : c.firstEnter(ray, tmin, lim, child, inside)) {
+      if (kCulls && chord ? c.firstEnterClipped(ray, *chord, tmin, lim, child, inside)
+                          : c.firstEnter(ray, tmin, lim, child, inside)) {
         lim = child.t;
         hit = child;
         found = true;
@@ -90,9 +91,14 @@ class UnionCore : public Base {
     };
     for (std::size_t k = 0; k < self.unboundedCount(); ++k)
       self.withUnbounded(k, [&](const Primitive<T>& c) { visit(c, limit); });
-    if (!inside)
+    if (inside) return false;
+    if constexpr (kCulls)
       walkFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim, const LocalChord<T>* chord) {
         self.withItem(item, [&](const Primitive<T>& c) { visit(c, lim, chord); });
+      });
+    else  // no chords: the walk's visit takes none (the firmware runs no more code)
+      derived().bvh().visitFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) {
+        self.withItem(item, [&](const Primitive<T>& c) { visit(c, lim); });
       });
     return found && !inside;
   }
@@ -104,6 +110,10 @@ class UnionCore : public Base {
       if (self.withUnbounded(k, [&](const Primitive<T>& c) { return c.anyHit(ray, tmin, tmax); })) return true;
     // In tree order, not nearest first: with a handful of children per shadow
     // ray, sorting them cost as much as it saved (docs/benchmarks.md, Step 4).
+    if constexpr (!kCulls)
+      return derived().bvh().visitAll(ray, tmin, tmax, [&](std::uint32_t item) {
+        return self.withItem(item, [&](const Primitive<T>& c) { return c.anyHit(ray, tmin, tmax); });
+      });
     return walkAll(ray, tmin, tmax, [&](std::uint32_t item, const LocalChord<T>* chord) {
       return self.withItem(item, [&](const Primitive<T>& c) {
         return chord ? c.anyHitClipped(ray, *chord, tmin, tmax) : c.anyHit(ray, tmin, tmax);
@@ -126,7 +136,10 @@ class UnionCore : public Base {
       };
       for (std::size_t k = 0; k < self.unboundedCount(); ++k)
         if (self.withUnbounded(k, ask)) return found;
-      walkAll(ray, tmin, tmax, [&](std::uint32_t item, const LocalChord<T>* chord) {
+      if constexpr (!kCulls)
+        derived().bvh().visitAll(ray, tmin, tmax, [&](std::uint32_t item) { return self.withItem(item, ask); });
+      else
+        walkAll(ray, tmin, tmax, [&](std::uint32_t item, const LocalChord<T>* chord) {
         if (!chord) return self.withItem(item, ask);
         return self.withItem(item, [&](const Primitive<T>& c) {  // a leaf with a box answers as itself
           found = c.anyHitClipped(ray, *chord, tmin, tmax) ? &c : nullptr;
@@ -162,7 +175,9 @@ class UnionCore : public Base {
             });
       }
     }
-    return derived().bvh().visitAll(ray, tmin, tmax, [&](std::uint32_t item) { return visit(item, nullptr); });
+    // Inlined, so a walk without chords (fixed point, the firmware) runs no more code than before.
+    return derived().bvh().visitAll(ray, tmin, tmax,
+                                    [&](std::uint32_t item) __attribute__((always_inline)) { return visit(item, nullptr); });
   }
   // The chord the last cull pass (positions from `items`) made for `item`.
   static bool chordOf(const LaneChords<T>& lanes, const std::uint32_t* items, std::uint32_t item, LocalChord<T>& chord) {
@@ -196,7 +211,7 @@ class UnionCore : public Base {
       }
     }
     derived().bvh().visitFrontToBack(ray, tmin, limit,
-                                     [&](std::uint32_t item, T& lim) { visit(item, lim, nullptr); });
+                                     [&](std::uint32_t item, T& lim) __attribute__((always_inline)) { visit(item, lim, nullptr); });
   }
 
   const Derived& derived() const { return static_cast<const Derived&>(*this); }
