@@ -91,6 +91,14 @@ class LatticeLeafBase : public Primitive<T> {
     if (!clipToCells(c.local, cells_, c.t0, c.t1) || !(c.t1 > c.t0)) return false;
     return !(c.t1 <= tmin || c.t0 >= tmax);
   }
+  // The same from the union cull's chord (already t1 > t0): only the test
+  // against (tmin, tmax), which may have shrunk since the cull.
+  static bool clipped(const LocalChord<T>& from, T tmin, T tmax, Chord& c) {
+    c.local = from.local;
+    c.t0 = from.t0;
+    c.t1 = from.t1;
+    return !(c.t1 <= tmin || c.t0 >= tmax);
+  }
   // One cell along the ray, in t: the reach of the rounding error.
   static T oneCell(const Chord& c) { return T(1) / lattice::length(c.local.direction); }
   // The span from the entry's s and normal and, when haveLeave, the exit's,
@@ -167,6 +175,15 @@ class ThesisLatticeLeaf final : public LatticeLeafBase<T> {
     const Found found = locate(ray, tmin, tmax, at);
     return found == Found::EnterAhead || (found == Found::StartsInside && at.leaveT < tmax);
   }
+  // Only the floating-point unions cull and hand chords; fixed point (the
+  // firmware) keeps no second copy of the look-up.
+  bool anyHitClipped(const Ray<T>& ray, const LocalChord<T>& chord, T tmin, T tmax) const override {
+    if constexpr (!kIsIeee<T>) return anyHit(ray, tmin, tmax);
+    if (!this->castsShadows_) return false;
+    Chord c;
+    if (!Base::clipped(chord, tmin, tmax, c)) return false;
+    return blocks(c, tmin, tmax);
+  }
 
   bool firstHit(const Ray<T>& ray, T tmin, T tmax, Hit<T>& hit) const override {
     Located at;
@@ -184,12 +201,15 @@ class ThesisLatticeLeaf final : public LatticeLeafBase<T> {
 
   bool firstEnter(const Ray<T>& ray, T tmin, T tmax, Hit<T>& hit, bool& inside) const override {
     Located at;
-    switch (locate(ray, tmin, tmax, at)) {
-      case Found::None: return false;
-      case Found::EnterAhead: hit = {at.enterT, this->reader_.normal(at.enterEntry), this->material_}; return true;
-      case Found::StartsInside: inside = true; return false;
-    }
-    return false;
+    return enterOf(locate(ray, tmin, tmax, at), at, hit, inside);
+  }
+  bool firstEnterClipped(const Ray<T>& ray, const LocalChord<T>& chord, T tmin, T tmax, Hit<T>& hit,
+                         bool& inside) const override {
+    if constexpr (!kIsIeee<T>) return firstEnter(ray, tmin, tmax, hit, inside);
+    Chord c;
+    if (!Base::clipped(chord, tmin, tmax, c)) return false;
+    Located at;
+    return enterOf(locate(c, tmin, tmax, at), at, hit, inside);
   }
 
   void spans(const Ray<T>& ray, T tmin, T tmax, SpanList<T>& out) const override {
@@ -228,7 +248,28 @@ class ThesisLatticeLeaf final : public LatticeLeafBase<T> {
   // rule whatever the exit says, so the exit is then not read.
   Found locate(const Ray<T>& ray, T tmin, T tmax, Located& at) const {
     Chord c;
-    if (!this->clip(ray, tmin, tmax, c) || !roundEnds(c)) return Found::None;
+    if (!this->clip(ray, tmin, tmax, c)) return Found::None;
+    return locate(c, tmin, tmax, at);
+  }
+  // anyHit's answer from a clipped chord.
+  bool blocks(Chord& c, T tmin, T tmax) const {
+    Located at;
+    const Found found = locate(c, tmin, tmax, at);
+    return found == Found::EnterAhead || (found == Found::StartsInside && at.leaveT < tmax);
+  }
+  // firstEnter's answer from what locate found.
+  bool enterOf(Found found, const Located& at, Hit<T>& hit, bool& inside) const {
+    switch (found) {
+      case Found::None: return false;
+      case Found::EnterAhead: hit = {at.enterT, this->reader_.normal(at.enterEntry), this->material_}; return true;
+      case Found::StartsInside: inside = true; return false;
+    }
+    return false;
+  }
+  // locate from the clipped chord (inlined into the one above, so the
+  // fixed-point build runs the code it ran before the chords were handed).
+  [[gnu::always_inline]] Found locate(Chord& c, T tmin, T tmax, Located& at) const {
+    if (!roundEnds(c)) return Found::None;
     at.enterEntry = this->find(c.in, c.out);
     if (!at.enterEntry) return Found::None;
     at.enterT = c.t0 + (c.t1 - c.t0) * this->reader_.s(at.enterEntry);

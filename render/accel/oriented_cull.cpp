@@ -29,7 +29,8 @@ bool cpuHasAvx2() {
 // Four positions from `first`: the scalar reference's operations lane by lane
 // (no fused multiply-add: "fma" is not among the targets).
 __attribute__((target("avx2"))) unsigned keep4Avx2(const double* data, std::size_t stride, std::uint32_t first,
-                                                    const Ray<double>& ray, double tmin, double tmax) {
+                                                    const Ray<double>& ray, double tmin, double tmax,
+                                                    LaneChords<double>* chords) {
   const double* base = data + first;
 #define LATTICE_ROW(r) _mm256_loadu_pd(base + std::size_t(r) * stride)  // a lambda would need the target too
   const __m256d ox = _mm256_set1_pd(ray.origin.x), oy = _mm256_set1_pd(ray.origin.y),
@@ -46,6 +47,10 @@ __attribute__((target("avx2"))) unsigned keep4Avx2(const double* data, std::size
     const __m256d o = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(c0, ox), _mm256_mul_pd(c1, oy)),
                                     _mm256_add_pd(_mm256_mul_pd(c2, oz), c3));
     const __m256d d = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(c0, dx), _mm256_mul_pd(c1, dy)), _mm256_mul_pd(c2, dz));
+    if (chords) {
+      _mm256_storeu_pd(chords->origin[a], o);
+      _mm256_storeu_pd(chords->direction[a], d);
+    }
     const __m256d flat = _mm256_cmp_pd(d, zero, _CMP_EQ_OQ);
     const __m256d outside = _mm256_or_pd(_mm256_cmp_pd(o, zero, _CMP_LT_OQ), _mm256_cmp_pd(o, extent, _CMP_GT_OQ));
     reject = _mm256_or_pd(reject, _mm256_and_pd(flat, outside));
@@ -64,12 +69,16 @@ __attribute__((target("avx2"))) unsigned keep4Avx2(const double* data, std::size
   const __m256d before = _mm256_cmp_pd(t1, _mm256_set1_pd(tmin), _CMP_LE_OQ);
   const __m256d after = _mm256_cmp_pd(t0, _mm256_set1_pd(tmax), _CMP_GE_OQ);
   const __m256d dropped = _mm256_or_pd(_mm256_or_pd(reject, before), after);
+  if (chords) {
+    _mm256_storeu_pd(chords->t0, t0);
+    _mm256_storeu_pd(chords->t1, t1);
+  }
   return static_cast<unsigned>(_mm256_movemask_pd(_mm256_andnot_pd(dropped, chord)));
 }
 
 // The same four lanes in float, SSE2 (every x86-64 has it): blends as and/or.
 unsigned keep4Sse(const float* data, std::size_t stride, std::uint32_t first, const Ray<float>& ray, float tmin,
-                  float tmax) {
+                  float tmax, LaneChords<float>* chords) {
   const float* base = data + first;
   const auto row = [&](int r) { return _mm_loadu_ps(base + std::size_t(r) * stride); };
   const auto pick = [](__m128 mask, __m128 a, __m128 b) { return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b)); };
@@ -83,6 +92,10 @@ unsigned keep4Sse(const float* data, std::size_t stride, std::uint32_t first, co
     const __m128 c0 = row(a), c1 = row(3 + a), c2 = row(6 + a), c3 = row(9 + a), extent = row(12 + a);
     const __m128 o = _mm_add_ps(_mm_add_ps(_mm_mul_ps(c0, ox), _mm_mul_ps(c1, oy)), _mm_add_ps(_mm_mul_ps(c2, oz), c3));
     const __m128 d = _mm_add_ps(_mm_add_ps(_mm_mul_ps(c0, dx), _mm_mul_ps(c1, dy)), _mm_mul_ps(c2, dz));
+    if (chords) {
+      _mm_storeu_ps(chords->origin[a], o);
+      _mm_storeu_ps(chords->direction[a], d);
+    }
     const __m128 flat = _mm_cmpeq_ps(d, zero);
     const __m128 outside = _mm_or_ps(_mm_cmplt_ps(o, zero), _mm_cmpgt_ps(o, extent));
     reject = _mm_or_ps(reject, _mm_and_ps(flat, outside));
@@ -98,6 +111,10 @@ unsigned keep4Sse(const float* data, std::size_t stride, std::uint32_t first, co
   const __m128 before = _mm_cmple_ps(t1, _mm_set1_ps(tmin));
   const __m128 after = _mm_cmpge_ps(t0, _mm_set1_ps(tmax));
   const __m128 dropped = _mm_or_ps(_mm_or_ps(reject, before), after);
+  if (chords) {
+    _mm_storeu_ps(chords->t0, t0);
+    _mm_storeu_ps(chords->t1, t1);
+  }
   return static_cast<unsigned>(_mm_movemask_ps(_mm_andnot_ps(dropped, chord)));
 }
 #endif
@@ -141,7 +158,7 @@ OrientedCull<T>::OrientedCull(const std::vector<OrientedBox<T>>& boxes, const st
       }) {}
 
 template <typename T>
-bool OrientedCull<T>::keepOne(std::uint32_t p, const Ray<T>& ray, T tmin, T tmax) const {
+bool OrientedCull<T>::keepOne(std::uint32_t p, const Ray<T>& ray, T tmin, T tmax, LocalChord<T>* chord) const {
   if (!has_[p]) return true;
   T o[3], d[3];
   for (int a = 0; a < 3; ++a) {
@@ -165,31 +182,50 @@ bool OrientedCull<T>::keepOne(std::uint32_t p, const Ray<T>& ray, T tmin, T tmax
     if (t0 > t1) return false;
   }
   if (!(t1 > t0)) return false;
-  return !(t1 <= tmin || t0 >= tmax);
+  if (t1 <= tmin || t0 >= tmax) return false;
+  if (chord) *chord = {{{o[0], o[1], o[2]}, {d[0], d[1], d[2]}}, t0, t1};
+  return true;
 }
 
 template <typename T>
-unsigned OrientedCull<T>::keepEach(std::uint32_t first, std::uint32_t count, const Ray<T>& ray, T tmin, T tmax) const {
+unsigned OrientedCull<T>::keepEach(std::uint32_t first, std::uint32_t count, const Ray<T>& ray, T tmin, T tmax,
+                                   LaneChords<T>* chords) const {
   unsigned mask = 0;
-  for (std::uint32_t k = 0; k < count; ++k)
-    if (keepOne(first + k, ray, tmin, tmax)) mask |= 1u << k;
+  LocalChord<T> chord;
+  for (std::uint32_t k = 0; k < count; ++k) {
+    if (!keepOne(first + k, ray, tmin, tmax, &chord)) continue;
+    mask |= 1u << k;
+    if (!chords || !has_[first + k]) continue;
+    for (int a = 0; a < 3; ++a) {
+      chords->origin[a][k] = chord.local.origin[a];
+      chords->direction[a][k] = chord.local.direction[a];
+    }
+    chords->t0[k] = chord.t0;
+    chords->t1[k] = chord.t1;
+    chords->written |= 1u << k;
+  }
   return mask;
 }
 
 template <typename T>
-unsigned OrientedCull<T>::keepLanes(std::uint32_t first, std::uint32_t count, const Ray<T>& ray, T tmin, T tmax) const {
+unsigned OrientedCull<T>::keepLanes(std::uint32_t first, std::uint32_t count, const Ray<T>& ray, T tmin, T tmax,
+                                    LaneChords<T>* chords) const {
   const unsigned all = (1u << count) - 1u;
 #if defined(__x86_64__)
   unsigned boxless = 0;  // positions without a box are always kept
   for (std::uint32_t k = 0; k < count; ++k)
     if (!has_[first + k]) boxless |= 1u << k;
+  unsigned kept = all;
   if constexpr (std::is_same_v<T, double>) {
-    if (cpuHasAvx2()) return (keep4Avx2(data_.data(), stride_, first, ray, tmin, tmax) | boxless) & all;
+    if (!cpuHasAvx2()) return all;
+    kept = (keep4Avx2(data_.data(), stride_, first, ray, tmin, tmax, chords) | boxless) & all;
   } else {
-    return (keep4Sse(data_.data(), stride_, first, ray, tmin, tmax) | boxless) & all;
+    kept = (keep4Sse(data_.data(), stride_, first, ray, tmin, tmax, chords) | boxless) & all;
   }
+  if (chords) chords->written = kept & ~boxless;
+  return kept;
 #endif
-  (void)first, (void)ray, (void)tmin, (void)tmax;
+  (void)first, (void)ray, (void)tmin, (void)tmax, (void)chords;
   return all;
 }
 

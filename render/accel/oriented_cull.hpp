@@ -23,6 +23,10 @@
 //   visited as before: the same answers. The scalar reference cull
 //   (CullPath::Portable) does the lane arithmetic one item at a time; tests
 //   force it and compare.
+// * The lanes also hand over what they computed for each kept item: its ray
+//   in the box's coordinates and the chord [t0, t1] (LaneChords), the very
+//   numbers the leaf's own clip would compute, so a leaf given them
+//   (Primitive::firstEnterClipped) skips its map and clip and answers the same.
 // * A cull may keep an item the leaf then rejects (the limit of a
 //   front-to-back walk shrinks while a leaf's items are visited; the cull
 //   used the larger one), never the other way: which hit wins is unchanged.
@@ -43,6 +47,27 @@ template <typename T>
 struct OrientedBox {
   Vec3<T> column[4];
   Vec3<T> extent;
+};
+
+// An item's ray in its box's coordinates and the part [t0, t1] of its whole
+// line inside the box (t1 > t0), as the item's own clip would make them.
+template <typename T>
+struct LocalChord {
+  Ray<T> local;
+  T t0, t1;
+};
+
+// The chords of one cull pass, lane k for the item at position first + k;
+// bit k of `written` set where lane k's were stored (a kept item with a box).
+template <typename T>
+struct LaneChords {
+  T origin[3][4], direction[3][4], t0[4], t1[4];
+  unsigned written = 0;
+  LocalChord<T> at(unsigned k) const {
+    return {{{origin[0][k], origin[1][k], origin[2][k]}, {direction[0][k], direction[1][k], direction[2][k]}},
+            t0[k],
+            t1[k]};
+  }
 };
 
 // Which cull the walks use: Auto (Lanes on x86-64, else None), Lanes (four
@@ -71,13 +96,18 @@ class OrientedCull {
   bool empty() const { return positions_ == 0; }
   // Bit k set (k < count <= 4) when the item at position first + k may answer
   // a query over (tmin, tmax), by the path in use when the cull was made.
-  unsigned keep(std::uint32_t first, std::uint32_t count, const Ray<T>& ray, T tmin, T tmax) const {
-    if (path_ == CullPath::Lanes) return keepLanes(first, count, ray, tmin, tmax);
-    if (path_ == CullPath::Portable) return keepEach(first, count, ray, tmin, tmax);
+  // With `chords`, the kept items' chords are stored there too (its
+  // `written` says which; none on the path None).
+  unsigned keep(std::uint32_t first, std::uint32_t count, const Ray<T>& ray, T tmin, T tmax,
+                LaneChords<T>* chords = nullptr) const {
+    if (chords) chords->written = 0;
+    if (path_ == CullPath::Lanes) return keepLanes(first, count, ray, tmin, tmax, chords);
+    if (path_ == CullPath::Portable) return keepEach(first, count, ray, tmin, tmax, chords);
     return (1u << count) - 1u;
   }
-  // The scalar reference of one position (every path agrees with it).
-  bool keepOne(std::uint32_t position, const Ray<T>& ray, T tmin, T tmax) const;
+  // The scalar reference of one position (every path agrees with it); with
+  // `chord`, a kept item's chord is stored there.
+  bool keepOne(std::uint32_t position, const Ray<T>& ray, T tmin, T tmax, LocalChord<T>* chord = nullptr) const;
 
   // Structure of arrays, one row per quantity, padded by 4 positions so a
   // lane group may read past the last item: rows 0-11 the columns (c0.xyz,
@@ -86,8 +116,10 @@ class OrientedCull {
 
  private:
   const T* row(int r) const { return data_.data() + std::size_t(r) * stride_; }
-  unsigned keepLanes(std::uint32_t first, std::uint32_t count, const Ray<T>& ray, T tmin, T tmax) const;
-  unsigned keepEach(std::uint32_t first, std::uint32_t count, const Ray<T>& ray, T tmin, T tmax) const;
+  unsigned keepLanes(std::uint32_t first, std::uint32_t count, const Ray<T>& ray, T tmin, T tmax,
+                     LaneChords<T>* chords) const;
+  unsigned keepEach(std::uint32_t first, std::uint32_t count, const Ray<T>& ray, T tmin, T tmax,
+                    LaneChords<T>* chords) const;
 
   std::uint32_t positions_ = 0;
   std::size_t stride_ = 0;

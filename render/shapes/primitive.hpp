@@ -95,6 +95,22 @@ class Primitive {
     return true;
   }
 
+  // firstEnter for a ray a union's cull has already mapped into this
+  // primitive's oriented box and clipped (t1 > t0): `chord` holds exactly what
+  // the primitive's own map and clip would give (render/accel/oriented_cull.hpp),
+  // so one that has such a box may skip them. The same answer as firstEnter.
+  virtual bool firstEnterClipped(const Ray<T>& ray, const LocalChord<T>& /*chord*/, T tmin, T tmax, Hit<T>& hit,
+                                 bool& inside) const {
+    return firstEnter(ray, tmin, tmax, hit, inside);
+  }
+
+  // anyHit from such a chord: the same answer as anyHit. A primitive with an
+  // oriented box answers occluder() as itself (the default's way), so a
+  // union may ask this in its place.
+  virtual bool anyHitClipped(const Ray<T>& ray, const LocalChord<T>& /*chord*/, T tmin, T tmax) const {
+    return anyHit(ray, tmin, tmax);
+  }
+
   // A box in the primitive's own coordinates such that it answers nothing
   // (no span, hit or enter) for a ray whose line, mapped into them, misses
   // the box or crosses it outside (tmin, tmax), by the exact test of

@@ -12,7 +12,9 @@
 //   const UnionBvh<T>& bvh() const;                        // the finite children
 //   template <typename F> decltype(auto) withItem(std::uint32_t item, F f) const;  // f(const Primitive<T>&)
 // and, optionally, const OrientedCull<T>* cull() const: the items' oriented
-// boxes in the BVH's item order (render/accel/oriented_cull.hpp), or null;
+// boxes in the BVH's item order (render/accel/oriented_cull.hpp), or null
+// (a kept item with a box is then asked through firstEnterClipped and
+// anyHitClipped with the chord the cull made, so it need not clip again);
 // and bool childrenAnswerAlone() const: true where a child's anyHit alone
 // makes the union's true (children that outlive the walk, and no cut box
 // that could stop a ray a child would block), so occluder() may name the
@@ -50,7 +52,7 @@ class UnionCore : public Base {
       for (const Span<T>& s : list) all.push_back(s);
     };
     for (std::size_t k = 0; k < self.unboundedCount(); ++k) self.withUnbounded(k, add);
-    walkAll(ray, tmin, tmax, [&](std::uint32_t item) {
+    walkAll(ray, tmin, tmax, [&](std::uint32_t item, const LocalChord<T>*) {
       self.withItem(item, add);
       return false;
     });
@@ -77,9 +79,10 @@ class UnionCore : public Base {
     T limit = tmax;
     bool found = false;
     Hit<T> child;
-    auto visit = [&](const Primitive<T>& c, T& lim) {
+    auto visit = [&](const Primitive<T>& c, T& lim, const LocalChord<T>* chord = nullptr) {
       if (inside) return;
-      if (c.firstEnter(ray, tmin, lim, child, inside)) {
+      if (kCulls && chord ? c.firstEnterClipped(ray, *chord, tmin, lim, child, inside)
+                          : c.firstEnter(ray, tmin, lim, child, inside)) {
         lim = child.t;
         hit = child;
         found = true;
@@ -88,8 +91,13 @@ class UnionCore : public Base {
     };
     for (std::size_t k = 0; k < self.unboundedCount(); ++k)
       self.withUnbounded(k, [&](const Primitive<T>& c) { visit(c, limit); });
-    if (!inside)
-      walkFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) {
+    if (inside) return false;
+    if constexpr (kCulls)
+      walkFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim, const LocalChord<T>* chord) {
+        self.withItem(item, [&](const Primitive<T>& c) { visit(c, lim, chord); });
+      });
+    else  // no chords: the walk's visit takes none (the firmware runs no more code)
+      derived().bvh().visitFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) {
         self.withItem(item, [&](const Primitive<T>& c) { visit(c, lim); });
       });
     return found && !inside;
@@ -102,8 +110,14 @@ class UnionCore : public Base {
       if (self.withUnbounded(k, [&](const Primitive<T>& c) { return c.anyHit(ray, tmin, tmax); })) return true;
     // In tree order, not nearest first: with a handful of children per shadow
     // ray, sorting them cost as much as it saved (docs/benchmarks.md, Step 4).
-    return walkAll(ray, tmin, tmax, [&](std::uint32_t item) {
-      return self.withItem(item, [&](const Primitive<T>& c) { return c.anyHit(ray, tmin, tmax); });
+    if constexpr (!kCulls)
+      return derived().bvh().visitAll(ray, tmin, tmax, [&](std::uint32_t item) {
+        return self.withItem(item, [&](const Primitive<T>& c) { return c.anyHit(ray, tmin, tmax); });
+      });
+    return walkAll(ray, tmin, tmax, [&](std::uint32_t item, const LocalChord<T>* chord) {
+      return self.withItem(item, [&](const Primitive<T>& c) {
+        return chord ? c.anyHitClipped(ray, *chord, tmin, tmax) : c.anyHit(ray, tmin, tmax);
+      });
     });
   }
 
@@ -122,7 +136,16 @@ class UnionCore : public Base {
       };
       for (std::size_t k = 0; k < self.unboundedCount(); ++k)
         if (self.withUnbounded(k, ask)) return found;
-      walkAll(ray, tmin, tmax, [&](std::uint32_t item) { return self.withItem(item, ask); });
+      if constexpr (!kCulls)
+        derived().bvh().visitAll(ray, tmin, tmax, [&](std::uint32_t item) { return self.withItem(item, ask); });
+      else
+        walkAll(ray, tmin, tmax, [&](std::uint32_t item, const LocalChord<T>* chord) {
+        if (!chord) return self.withItem(item, ask);
+        return self.withItem(item, [&](const Primitive<T>& c) {  // a leaf with a box answers as itself
+          found = c.anyHitClipped(ray, *chord, tmin, tmax) ? &c : nullptr;
+          return found != nullptr;
+        });
+      });
       return found;
     }
   }
@@ -130,29 +153,65 @@ class UnionCore : public Base {
  private:
   // The BVH's walks, through the oriented-box cull where Derived keeps one.
   static constexpr bool kCulls = std::is_floating_point_v<T> && requires(const Derived& d) { d.cull(); };
+  // visit(item, chord), chord as walkFrontToBack's.
   template <typename Visit>
   bool walkAll(const Ray<T>& ray, T tmin, T tmax, Visit&& visit) const {
     if constexpr (kCulls) {
-      if (const OrientedCull<T>* c = derived().cull())
-        return derived().bvh().visitAll(ray, tmin, tmax, visit,
-                                        [&](std::uint32_t first, std::uint32_t count, T lo, T hi) {
-                                          return c->keep(first, count, ray, lo, hi);
-                                        });
+      if (const OrientedCull<T>* c = derived().cull()) {
+        const std::uint32_t* items = derived().bvh().items().data();
+        LaneChords<T> lanes;
+        std::uint32_t laneFirst = 0;
+        return derived().bvh().visitAll(
+            ray, tmin, tmax,
+            [&](std::uint32_t item) {
+              const LocalChord<T>* chord = nullptr;
+              LocalChord<T> found;
+              if (chordOf(lanes, items + laneFirst, item, found)) chord = &found;
+              return visit(item, chord);
+            },
+            [&](std::uint32_t first, std::uint32_t count, T lo, T hi) {
+              laneFirst = first;
+              return c->keep(first, count, ray, lo, hi, &lanes);
+            });
+      }
     }
-    return derived().bvh().visitAll(ray, tmin, tmax, visit);
+    // Inlined, so a walk without chords (fixed point, the firmware) runs no more code than before.
+    return derived().bvh().visitAll(ray, tmin, tmax,
+                                    [&](std::uint32_t item) __attribute__((always_inline)) { return visit(item, nullptr); });
   }
+  // The chord the last cull pass (positions from `items`) made for `item`.
+  static bool chordOf(const LaneChords<T>& lanes, const std::uint32_t* items, std::uint32_t item, LocalChord<T>& chord) {
+    for (unsigned k = 0, w = lanes.written; w != 0; ++k, w >>= 1)
+      if ((w & 1u) && items[k] == item) {
+        chord = lanes.at(k);
+        return true;
+      }
+    return false;
+  }
+  // visit(item, limit, chord): chord is the cull's for the item (null when
+  // it made none), found by the item's position in the pass just culled.
   template <typename Visit>
   void walkFrontToBack(const Ray<T>& ray, T tmin, T& limit, Visit&& visit) const {
     if constexpr (kCulls) {
       if (const OrientedCull<T>* c = derived().cull()) {
-        derived().bvh().visitFrontToBack(ray, tmin, limit, visit,
-                                         [&](std::uint32_t first, std::uint32_t count, T lo, T hi) {
-                                           return c->keep(first, count, ray, lo, hi);
-                                         });
+        const std::uint32_t* items = derived().bvh().items().data();
+        LaneChords<T> lanes;
+        std::uint32_t laneFirst = 0;
+        derived().bvh().visitFrontToBack(
+            ray, tmin, limit,
+            [&](std::uint32_t item, T& lim) {
+              LocalChord<T> found;
+              visit(item, lim, chordOf(lanes, items + laneFirst, item, found) ? &found : nullptr);
+            },
+            [&](std::uint32_t first, std::uint32_t count, T lo, T hi) {
+              laneFirst = first;
+              return c->keep(first, count, ray, lo, hi, &lanes);
+            });
         return;
       }
     }
-    derived().bvh().visitFrontToBack(ray, tmin, limit, visit);
+    derived().bvh().visitFrontToBack(ray, tmin, limit,
+                                     [&](std::uint32_t item, T& lim) __attribute__((always_inline)) { visit(item, lim, nullptr); });
   }
 
   const Derived& derived() const { return static_cast<const Derived&>(*this); }

@@ -1,11 +1,14 @@
 // The oriented-box cull of a union's BVH leaves (render/accel/oriented_cull.hpp)
 // over lattice leaves: every item it drops is one the leaf itself answers
 // nothing for, the lanes (AVX2, SSE2) and the scalar reference drop the same items,
-// and a scene renders the same pixels with the cull off, scalar or in lanes.
+// the chords the cull hands a kept leaf are the leaf's own (firstEnterClipped
+// and anyHitClipped answer as firstEnter and anyHit do), and a scene renders the same pixels with the
+// cull off, scalar or in lanes.
 #include <catch2/catch.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cstring>
 #include <random>
 
 #include "lht/leaf/lattice_leaf.hpp"
@@ -63,7 +66,7 @@ void checkCull() {
 
   std::mt19937 rng(29);
   std::uniform_real_distribution<double> box(-1.5, 2.5), dir(-1.0, 1.0);
-  int culled = 0, keptAnswering = 0;
+  int culled = 0, keptAnswering = 0, enteredFromChord = 0;
   for (int i = 0; i < 6000; ++i) {
     const Vec3d from(box(rng), box(rng), box(rng));
     Vec3d d(dir(rng), dir(rng), dir(rng));
@@ -71,9 +74,35 @@ void checkCull() {
     if (i % 11 == 0) d = Vec3d(0.0, 0.0, 1.0);
     const Ray<T> ray{Vec3<T>(from), Vec3<T>(d)};
     const T tmin = T(i % 5 == 0 ? 0.3 : 1e-6), tmax = T(i % 3 == 0 ? 0.7 : 1e6);
-    const unsigned scalar = portable.keep(0, 4, ray, tmin, tmax);
-    REQUIRE(none.keep(0, 4, ray, tmin, tmax) == 15u);
-    if (haveLanes) REQUIRE(lanes.keep(0, 4, ray, tmin, tmax) == scalar);
+    LaneChords<T> scalarChords, laneChords;
+    const unsigned scalar = portable.keep(0, 4, ray, tmin, tmax, &scalarChords);
+    REQUIRE(scalarChords.written == scalar);
+    REQUIRE(none.keep(0, 4, ray, tmin, tmax, &laneChords) == 15u);
+    REQUIRE(laneChords.written == 0u);  // no cull, no chords
+    if (haveLanes) {
+      REQUIRE(lanes.keep(0, 4, ray, tmin, tmax, &laneChords) == scalar);
+      REQUIRE(laneChords.written == scalar);
+      for (unsigned k = 0; k < 4; ++k) {
+        if (!(scalar >> k & 1u)) continue;
+        const LocalChord<T> a = laneChords.at(k), b = scalarChords.at(k);
+        REQUIRE(std::memcmp(&a, &b, sizeof a) == 0);  // bit for bit
+      }
+    }
+    for (unsigned k = 0; k < 4; ++k) {
+      if (!(scalar >> k & 1u)) continue;
+      const LocalChord<T> chord = scalarChords.at(k);
+      Hit<T> own, given;
+      bool ownInside = false, givenInside = false;
+      const bool ownFound = leaves[k]->firstEnter(ray, tmin, tmax, own, ownInside);
+      REQUIRE(leaves[k]->firstEnterClipped(ray, chord, tmin, tmax, given, givenInside) == ownFound);
+      REQUIRE(givenInside == ownInside);
+      REQUIRE(leaves[k]->anyHitClipped(ray, chord, tmin, tmax) == leaves[k]->anyHit(ray, tmin, tmax));
+      if (ownFound) {
+        ++enteredFromChord;
+        REQUIRE(std::memcmp(&own.t, &given.t, sizeof own.t) == 0);
+        REQUIRE(std::memcmp(&own.normal, &given.normal, sizeof own.normal) == 0);
+      }
+    }
     REQUIRE((portable.keep(1, 4, ray, tmin, tmax) & 8u) == 8u);  // position 4 has no box: always kept
     for (unsigned k = 0; k < 4; ++k) {
       const bool answered = answers<T>(*leaves[k], ray, tmin, tmax);
@@ -88,6 +117,7 @@ void checkCull() {
   // Not vacuous: many culls, and many kept items that do answer.
   CHECK(culled > 5000);
   CHECK(keptAnswering > 500);
+  CHECK(enteredFromChord > 300);
 }
 
 template <typename T>

@@ -103,6 +103,9 @@ inline FixedPointScan scanFixedPointCode(const std::string& library,
     }
     if (const auto reloc = line.find("R_X86_64_PLT32\t"); reloc != std::string::npos)
       scan.callers[plainFunctionName(line.substr(reloc + 15))].insert(plainFunctionName(current));
+    // A local clone (".part.0", ".isra.0") is called through a PC32 relocation.
+    if (const auto reloc = line.find("R_X86_64_PC32\t"); reloc != std::string::npos && line.find("[clone ") != std::string::npos)
+      scan.callers[plainFunctionName(line.substr(reloc + 14))].insert(plainFunctionName(current));
     if (inFixed && isFloatingPointInstruction(line)) scan.withFloatingPoint.insert(current);
   }
   ::pclose(pipe);
