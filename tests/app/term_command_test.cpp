@@ -279,13 +279,27 @@ TEST_CASE("term --device tek4027 answers lattice send's report requests across a
   std::atomic<bool> stop{false};
   std::thread cable([&] {
     const int a = sender.masterFd(), b = terminal.masterFd();
+    // Writes never block: a far side that is slow to read (a loaded machine)
+    // must not keep the cable from seeing `stop`, or the test would hang.
+    for (const int fd : {a, b}) ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
+    const auto pass = [&](int to, const char* data, ssize_t n) {
+      while (n > 0 && !stop) {
+        const ssize_t put = ::write(to, data, static_cast<std::size_t>(n));
+        if (put > 0) {
+          data += put, n -= put;
+        } else {
+          pollfd room{to, POLLOUT, 0};
+          ::poll(&room, 1, 20);
+        }
+      }
+    };
     char buffer[4096];
     while (!stop) {
       pollfd p[2] = {{a, POLLIN, 0}, {b, POLLIN, 0}};
       ::poll(p, 2, 20);
       ssize_t n;
-      if ((p[0].revents & POLLIN) && (n = ::read(a, buffer, sizeof buffer)) > 0) (void)!::write(b, buffer, static_cast<std::size_t>(n));
-      if ((p[1].revents & POLLIN) && (n = ::read(b, buffer, sizeof buffer)) > 0) (void)!::write(a, buffer, static_cast<std::size_t>(n));
+      if ((p[0].revents & POLLIN) && (n = ::read(a, buffer, sizeof buffer)) > 0) pass(b, buffer, n);
+      if ((p[1].revents & POLLIN) && (n = ::read(b, buffer, sizeof buffer)) > 0) pass(a, buffer, n);
     }
   });
   lattice::testing::CommandRun term;
