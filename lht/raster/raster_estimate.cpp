@@ -55,12 +55,6 @@ CountedPairs countPairs(const LatticeBox& box) {
   return c;
 }
 
-// The rasterizer's worker count for `points` entry points.
-unsigned rowsFor(unsigned threads, std::size_t points) {
-  return std::max(1u, std::min<unsigned>(threads ? threads : hardwareThreads(),
-                                         static_cast<unsigned>(std::max<std::size_t>(1, points))));
-}
-
 // A row's list grows by doubling and is then copied to its exact size: up to
 // three times its hits at once, in every thread (`rows` of them).
 std::uint64_t rowBytesFor(unsigned rows, double share, std::uint64_t boundaryPoints) {
@@ -73,7 +67,7 @@ std::uint64_t rowBytesFor(unsigned rows, double share, std::uint64_t boundaryPoi
 RasterEstimate worstCaseRaster(const LatticeBox& box, unsigned threads) {
   RasterEstimate e = countPairs(box).e;
   e.hits = e.distinctPairs;
-  e.rowBytes = rowBytesFor(rowsFor(threads, e.boundaryPoints), 1.0, e.boundaryPoints);
+  e.rowBytes = rowBytesFor(rasterWorkers(threads, e.boundaryPoints), 1.0, e.boundaryPoints);
   return e;
 }
 
@@ -121,7 +115,7 @@ RasterEstimate estimateRaster(const LatticeBox& box, const LatticeObject& object
   // as it does: the tracer is shared read-only, each worker aims its own fan,
   // and the hits are a sum, the same whatever the order.
   const PairTracer tracer(box, *object.primitive, object.cover ? &*object.cover : nullptr);
-  const unsigned rows = rowsFor(threads, points.size());
+  const unsigned rows = rasterWorkers(threads, points.size());
   std::vector<std::uint64_t> hitsOf(rows, 0);
   std::atomic<std::size_t> next{0};
   const auto work = [&](unsigned w) {

@@ -117,8 +117,7 @@ class Rasterizer {
 
   RasterResult run() {
     const auto start = std::chrono::steady_clock::now();
-    unsigned threads = options_.threads ? options_.threads : hardwareThreads();
-    threads = std::min<unsigned>(threads, static_cast<unsigned>(std::max<std::size_t>(1, points_.size())));
+    const unsigned threads = rasterWorkers(options_.threads, points_.size());
     Progress progress("rasterize", points_.size(), "points");
     if (!options_.progress) progress.setEnabled(false);
 
@@ -195,6 +194,11 @@ class Rasterizer {
 };
 
 }  // namespace
+
+unsigned rasterWorkers(unsigned threads, std::size_t points) {
+  return std::max(1u, std::min<unsigned>(threads ? threads : hardwareThreads(),
+                                         static_cast<unsigned>(std::max<std::size_t>(1, points))));
+}
 
 RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const RasterOptions& options) {
   return rasterize(box, object, nullptr, options);

@@ -5,6 +5,7 @@
 // Given a cover of the object (lht/raster/object_cover.hpp), a pair whose segment
 // stays clear of it is a miss without a trace (lht/raster/cover_cull.hpp); the
 // pairs that may touch are traced as without it, so the table is the same.
+#include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
@@ -44,6 +45,10 @@ struct RasterOptions {
   // Counted a boundary point's row at a time.
   std::uint64_t maxHits = UINT64_MAX;
 };
+
+// The workers rasterizing `points` entry points on `threads` (0: all hardware
+// threads): never more than there are points. The estimate sizes its rows by it.
+unsigned rasterWorkers(unsigned threads, std::size_t points);
 
 // Thrown when the hits pass RasterOptions::maxHits; the caller says why.
 class RasterHitLimit : public std::runtime_error {
