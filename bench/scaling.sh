@@ -21,6 +21,10 @@
 #              by CPU time: the serial fraction if nothing but the trace ran
 #              in parallel (a bound: set-up and output run partly on every
 #              thread), and the Amdahl speed-up it allows at 16 and 64
+#   by phase   each phase's serial part s from its own T1 and TN (s + (T1 - s)
+#              / N = TN): set-up, output and the rest of the process outside
+#              the trace, their sum as a share of T1, and what that share
+#              allows with the trace counted parallel (its own losses are in e)
 # On a shared machine other work inflates TN more than T1 (it takes the
 # second core), so e is an over-estimate there; the CPU shares are the
 # figures that hold (the load average is printed).
@@ -118,6 +122,28 @@ for size in sorted({k[0] for k in data}):
         print(f"| {size} | {n} | {t1 / tn:.2f} | {e:.4f} | {amdahl(e, 16):.1f} | {amdahl(e, 64):.1f} | "
               f"{wall_share:.4f} | {amdahl(wall_share, 16):.1f} | {amdahl(wall_share, 64):.1f} | "
               f"{cpu_share:.4f} | {amdahl(cpu_share, 16):.1f} | {amdahl(cpu_share, 64):.1f} |")
+# The shares above charge every non-trace second as serial, though the PNG's
+# bands and parts of the set-up run on every thread. Phase by phase, a phase
+# taking T1 at one thread and TN at N has the serial part s of s + (T1 - s) / N
+# = TN; the process's rest (whole - set-up - trace - output) is counted the same way.
+print("\nSerial seconds outside the trace, phase by phase from the wall medians (s = (N TN - T1) / (N - 1),\n"
+      "within 0..T1), and the speed-up they allow with the trace itself counted parallel:\n")
+print("| size | threads N | set-up serial | output serial | rest serial | serial, all | share of T1 | at 16 | at 64 |")
+print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+def serial_part(t1, tn, n): return min(max((n * tn - t1) / (n - 1), 0.0), t1)
+for size in sorted({k[0] for k in data}):
+    counts = sorted(t for (s, t) in data if s == size)
+    if 1 not in counts: continue
+    one = data[(size, 1)]
+    rest1 = statistics.median(r[0] - r[1] - r[2] - r[4] for r in one)
+    for n in counts:
+        if n == 1: continue
+        many = data[(size, n)]
+        restn = statistics.median(r[0] - r[1] - r[2] - r[4] for r in many)
+        parts = [serial_part(med(one, i), med(many, i), n) for i in (1, 4)] + [serial_part(rest1, restn, n)]
+        share = sum(parts) / med(one, 0)
+        print(f"| {size} | {n} | {parts[0] * 1000:.1f} ms | {parts[1] * 1000:.1f} ms | {parts[2] * 1000:.1f} ms | "
+              f"{sum(parts) * 1000:.1f} ms | {share:.4f} | {amdahl(share, 16):.1f} | {amdahl(share, 64):.1f} |")
 PY
 }
 bench_write "$out" report

@@ -11,11 +11,17 @@
 
 #include "foundation/error.hpp"
 #include "foundation/threads.hpp"
+#include "io/adler32.hpp"
 
 namespace lattice::io {
 namespace {
 
 constexpr std::size_t kWindowBytes = 32768;  // deflate's window (RFC 1951): the most a dictionary can reach back
+// A band's dictionary: whole rows of at least this many bytes. zlib hashes
+// every dictionary byte, and past the row or two above (the matches a
+// picture's vertical runs make) the rest of the window bought 0.1 % of the
+// file for 6 % of deflate's time (bench/results/2026-12-05-adler.md).
+constexpr std::size_t kDictionaryBytes = 8192;
 
 int paeth(int a, int b, int c) {  // W3C PNG 9.4: the neighbour nearest a + b - c
   const int p = a + b - c, pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
@@ -115,7 +121,7 @@ class BandDeflater {
     out.adler = adler32(0, nullptr, 0);
     for (std::size_t y = first; y < last; ++y) {
       filtered(y, row_.data());
-      out.adler = adler32_z(out.adler, row_.data(), stride);
+      out.adler = adler32Update(static_cast<std::uint32_t>(out.adler), row_.data(), stride);
       const bool lastRow = y + 1 == last;
       deflateRow(out.deflated, lastRow ? (last == std::size_t(px.height) ? Z_FINISH : Z_SYNC_FLUSH) : Z_NO_FLUSH);
     }
@@ -166,7 +172,7 @@ void encodePng(const PngPixels& px, const PngEncoding& encoding, ByteSink& out) 
   layout.rowBytes = std::size_t(px.width) * layout.bpp;
   layout.rowsPerBand = std::max<std::size_t>(1, kPngBandBytes / (layout.rowBytes + 1));
   layout.bands = (std::size_t(px.height) + layout.rowsPerBand - 1) / layout.rowsPerBand;
-  layout.rowsBefore = (kWindowBytes + layout.rowBytes) / (layout.rowBytes + 1);
+  layout.rowsBefore = (kDictionaryBytes + layout.rowBytes) / (layout.rowBytes + 1);
 
   std::vector<Band> bands(layout.bands);
   std::atomic<std::size_t> next{0};

@@ -6,14 +6,15 @@
 // None, Sub, Up or Paeth); the filtered rows are cut into bands of a fixed
 // size (kPngBandBytes, never a function of the thread count, so the bytes
 // are the same on any number of threads) and each band is deflated on its
-// own by zlib as raw deflate, primed with the 32 KiB of filtered data before
-// it (deflateSetDictionary) so the ratio hardly suffers, and ended with a
+// own by zlib as raw deflate, primed with the whole rows of at least 8 KiB
+// before it (deflateSetDictionary) so the ratio hardly suffers, and ended with a
 // sync flush (the last band: finish), a row at a time, so a worker holds its
 // deflate state and a few rows. Raw deflate streams ended so join into
 // one (RFC 1951: a sync flush ends on a byte boundary with no final block),
 // and the zlib wrapper's Adler-32 of the whole is combined from the bands'
-// (adler32_combine); this is how pigz compresses in parallel. The bands go
-// out as IDAT chunks, each with its CRC-32, straight to the file.
+// (adler32_combine; each band's own by io/adler32.hpp); this is how pigz
+// compresses in parallel. The bands go out as IDAT chunks, each with its
+// CRC-32, straight to the file.
 //
 // Why: libpng compresses on one thread, and its simplified API
 // (png_image_write_to_memory) compresses the whole picture twice, once only
