@@ -92,14 +92,9 @@ class UnionCore : public Base {
     for (std::size_t k = 0; k < self.unboundedCount(); ++k)
       self.withUnbounded(k, [&](const Primitive<T>& c) { visit(c, limit); });
     if (inside) return false;
-    if constexpr (kCulls)
-      walkFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim, const LocalChord<T>* chord) {
-        self.withItem(item, [&](const Primitive<T>& c) { visit(c, lim, chord); });
-      });
-    else  // no chords: the walk's visit takes none (the firmware runs no more code)
-      derived().bvh().visitFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim) {
-        self.withItem(item, [&](const Primitive<T>& c) { visit(c, lim); });
-      });
+    walkFrontToBack(ray, tmin, limit, [&](std::uint32_t item, T& lim, const LocalChord<T>* chord) {
+      self.withItem(item, [&](const Primitive<T>& c) { visit(c, lim, chord); });
+    });
     return found && !inside;
   }
 
@@ -110,13 +105,9 @@ class UnionCore : public Base {
       if (self.withUnbounded(k, [&](const Primitive<T>& c) { return c.anyHit(ray, tmin, tmax); })) return true;
     // In tree order, not nearest first: with a handful of children per shadow
     // ray, sorting them cost as much as it saved (docs/benchmarks.md, Step 4).
-    if constexpr (!kCulls)
-      return derived().bvh().visitAll(ray, tmin, tmax, [&](std::uint32_t item) {
-        return self.withItem(item, [&](const Primitive<T>& c) { return c.anyHit(ray, tmin, tmax); });
-      });
     return walkAll(ray, tmin, tmax, [&](std::uint32_t item, const LocalChord<T>* chord) {
       return self.withItem(item, [&](const Primitive<T>& c) {
-        return chord ? c.anyHitClipped(ray, *chord, tmin, tmax) : c.anyHit(ray, tmin, tmax);
+        return kCulls && chord ? c.anyHitClipped(ray, *chord, tmin, tmax) : c.anyHit(ray, tmin, tmax);
       });
     });
   }
@@ -136,11 +127,8 @@ class UnionCore : public Base {
       };
       for (std::size_t k = 0; k < self.unboundedCount(); ++k)
         if (self.withUnbounded(k, ask)) return found;
-      if constexpr (!kCulls)
-        derived().bvh().visitAll(ray, tmin, tmax, [&](std::uint32_t item) { return self.withItem(item, ask); });
-      else
-        walkAll(ray, tmin, tmax, [&](std::uint32_t item, const LocalChord<T>* chord) {
-        if (!chord) return self.withItem(item, ask);
+      walkAll(ray, tmin, tmax, [&](std::uint32_t item, const LocalChord<T>* chord) {
+        if (!kCulls || !chord) return self.withItem(item, ask);
         return self.withItem(item, [&](const Primitive<T>& c) {  // a leaf with a box answers as itself
           found = c.anyHitClipped(ray, *chord, tmin, tmax) ? &c : nullptr;
           return found != nullptr;
@@ -175,7 +163,8 @@ class UnionCore : public Base {
             });
       }
     }
-    // Inlined, so a walk without chords (fixed point, the firmware) runs no more code than before.
+    // Without chords (fixed point, the firmware, a union with no cull) the
+    // BVH's own walk, the visit inlined into it.
     return derived().bvh().visitAll(ray, tmin, tmax,
                                     [&](std::uint32_t item) __attribute__((always_inline)) { return visit(item, nullptr); });
   }
