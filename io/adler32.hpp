@@ -14,7 +14,7 @@
 //
 // Why: zlib's own Adler-32 takes a byte at a time; at 2048 x 2048 the
 // check of 12.6 MB of filtered rows cost more CPU than anything in the
-// process besides the trace and deflate (bench/results/2026-12-05-adler.md).
+// process besides the trace and deflate (bench/results/2026-12-05-lead.md).
 #include <cstddef>
 #include <cstdint>
 

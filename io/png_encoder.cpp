@@ -20,7 +20,7 @@ constexpr std::size_t kWindowBytes = 32768;  // deflate's window (RFC 1951): the
 // A band's dictionary: whole rows of at least this many bytes. zlib hashes
 // every dictionary byte, and past the row or two above (the matches a
 // picture's vertical runs make) the rest of the window bought 0.1 % of the
-// file for 6 % of deflate's time (bench/results/2026-12-05-adler.md).
+// file for 6 % of deflate's time (bench/results/2026-12-05-lead.md).
 constexpr std::size_t kDictionaryBytes = 8192;
 
 int paeth(int a, int b, int c) {  // W3C PNG 9.4: the neighbour nearest a + b - c
