@@ -107,9 +107,19 @@ Vec3<T> shade(const LightingModel<T>& model, const Vec3<T>& point, const Vec3<T>
     const Vec3<T> r = T(2) * nl * n - l;
     const T rs = lattice::dot(r, s);
     Vec3<T> specular(T(0));
-    if (rs > T(0))  // a channel with no specular skips its power (0 x a finite power is 0 in every arithmetic)
-      for (int c = 0; c < 3; ++c)
-        if (m.specular[c] != T(0)) specular[c] = m.specular[c] * power(rs, m.shininess[c]);
+    if (rs > T(0)) {  // a channel with no specular skips its power (0 x a finite power is 0 in every arithmetic)
+      T exponent = T(0), powered = T(0);
+      bool taken = false;  // channels sharing an exponent (the usual material) share one power: same bits
+      for (int c = 0; c < 3; ++c) {
+        if (m.specular[c] == T(0)) continue;
+        if (!taken || !(m.shininess[c] == exponent)) {
+          exponent = m.shininess[c];
+          powered = power(rs, exponent);
+          taken = true;
+        }
+        specular[c] = m.specular[c] * powered;
+      }
+    }
     const T denominator = distance + model.attenuationK;
     if (!(denominator > T(0))) continue;  // K < -D: the fudge factor makes no sense here
     intensity += light.intensity / denominator * (m.diffuse * nl + specular);

@@ -66,6 +66,21 @@ TEST_CASE("lighting: Phong specular peaks at the mirror angle") {
   requireColor(shade(model, kOrigin, kUp, Vec3d(1, 0.0001, 0), 0, allVisible), 0, 0, 0);
 }
 
+TEST_CASE("lighting: each channel takes its own Phong exponent, channels that share one share its power") {
+  // Observer straight above: r . s = 0.8. Exponents 1, 2, 1 and a channel
+  // with no specular between two that share an exponent: 0.8, 0.64, 0.8 times
+  // k_spec 0.5, 0.25 and 0.5 (the second channel's k_spec 0.5, the third 1).
+  Material<double> m{Vec3d(0), Vec3d(0), Vec3d(0.5, 0.5, 1.0), Vec3d(1, 2, 1)};
+  auto model = oneLight(Vec3d(5), 0.0, m);
+  requireColor(shade(model, kOrigin, kUp, Vec3d(0, 3, 0), 0, allVisible), 0.4, 0.32, 0.8);
+  m = {Vec3d(0), Vec3d(0), Vec3d(0.5, 0.0, 1.0), Vec3d(3, 1, 3)};
+  model = oneLight(Vec3d(5), 0.0, m);
+  requireColor(shade(model, kOrigin, kUp, Vec3d(0, 3, 0), 0, allVisible), 0.5 * 0.512, 0, 0.512);
+  m = {Vec3d(0), Vec3d(0), Vec3d(1.0), Vec3d(2, 2, 3)};
+  model = oneLight(Vec3d(5), 0.0, m);
+  requireColor(shade(model, kOrigin, kUp, Vec3d(0, 3, 0), 0, allVisible), 0.64, 0.64, 0.512);
+}
+
 TEST_CASE("lighting: attenuation is 1 over D plus K") {
   auto model = oneLight(Vec3d(8), 3.0, material(0, 0.5, 0, 1));
   // D = 5, K = 3: 8 / 8 * 0.5 * 0.8.
