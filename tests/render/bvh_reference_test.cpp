@@ -9,11 +9,11 @@
 
 #include <algorithm>
 #include <numeric>
-#include <random>
 #include <vector>
 
 #include "foundation/fixed.hpp"
 #include "render/accel/bvh.hpp"
+#include "scattered_boxes.hpp"
 
 using namespace lattice;
 
@@ -110,21 +110,16 @@ struct PlainBuild {
   }
 };
 
-// Clusters of boxes of many sizes (uneven splits, empty bins), a run of
-// identical boxes (the median split) and flat boxes (zero areas).
+// scatteredBoxes, with every seventh box moved far out of its cluster (empty
+// bins between) and every eleventh made flat (zero areas).
 template <typename T>
 std::vector<Bounds<T>> mixedBoxes(int n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> cluster(-30, 30), spread(-2, 2), size(0.01, 0.5);
-  std::vector<Bounds<T>> boxes;
-  Vec3d centre(0.0);
-  for (int i = 0; i < n; ++i) {
-    if (i % 300 == 0) centre = Vec3d(cluster(rng), cluster(rng), cluster(rng));
-    const Vec3d c = centre + Vec3d(spread(rng), spread(rng), spread(rng)) * (i % 7 == 0 ? 8.0 : 1.0);
-    const Vec3d r(size(rng), i % 11 == 0 ? 0.0 : size(rng), size(rng));
-    boxes.push_back({Vec3<T>(c - r), Vec3<T>(c + r)});
+  std::vector<Bounds<T>> boxes = testing::scatteredBoxes<T>(n, seed);
+  for (std::size_t i = 0; i < boxes.size(); i += 7) {
+    const Vec3d away = (Vec3d(boxes[i].lo) - Vec3d(boxes[(i + 3) % boxes.size()].lo)) * 4.0;
+    boxes[i] = {Vec3<T>(Vec3d(boxes[i].lo) + away), Vec3<T>(Vec3d(boxes[i].hi) + away)};
   }
-  for (int i = 0; i < 200; ++i) boxes.push_back(boxes[5]);
+  for (std::size_t i = 0; i < boxes.size(); i += 11) boxes[i].hi.y = boxes[i].lo.y;
   return boxes;
 }
 
