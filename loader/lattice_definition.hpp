@@ -50,7 +50,7 @@ using RasterAdmissionHook = std::function<RasterAllowance(const LatticeDefinitio
 
 struct TableSettings {
   std::optional<LhtPrecision> precision;  // every table's entry form; unset: each definition's own
-  unsigned threads = 0;                   // rasterizer threads; 0: all cores
+  unsigned threads = 0;                   // the set-up's threads (rasterizing, a scatter's placements); 0: all cores
   bool progress = true;                   // a progress bar while rasterizing (on a terminal)
   TablePackingHook packing;               // unset: tables are packed as asked
   RasterAdmissionHook admission;          // unset: every lattice is rasterized, without a count

@@ -28,6 +28,10 @@ namespace lattice::lht {
 
 namespace {
 
+// Fewer placements than this are computed in the caller: starting a thread
+// would cost more than they do (a scatter has thousands).
+constexpr std::size_t kParallelPlacements = 512;
+
 // What one load defines, shared by the parsers of that load's format.
 struct LatticeLoad {
   std::map<std::string, LatticeDefinitionPtr> byName;
@@ -199,16 +203,26 @@ NodeDesc parseScatterNode(const toml::table& table, ParseContext& context, const
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> twist(0.0, 2.0 * std::numbers::pi);
   const LeafDescPtr leaf = std::make_shared<LatticeLeafDesc>(def, load.tables, /*instanced=*/true);
-  std::vector<NodeDesc> instances;
-  instances.reserve(static_cast<std::size_t>(count));
-  const std::string where = context.where(table);
-  for (const Vec3d& p : fibonacciSphere(static_cast<int>(count))) {
-    NodeDesc instance = NodeDesc::makeLeaf(leaf);  // the union's origin is theirs (NodeDesc::origin)
-    const Mat4d spin = glm::rotate(Mat4d(1.0), twist(random), Vec3d(0, 0, 1));
-    instance.transform = glm::translate(Mat4d(1.0), p * radius) * alignZ(p) * spin;
-    instances.push_back(std::move(instance));
-  }
-  return NodeDesc::makeOperation(NodeDesc::Kind::Union, std::move(instances), where);
+  const auto n = static_cast<std::size_t>(count);
+  // The twists drawn in order from the one stream, the points of the
+  // sphere, and the instances, then their transforms (each its own) on the
+  // set-up's threads: the same matrices at every thread count.
+  std::vector<double> twists(n);
+  for (double& angle : twists) angle = twist(random);
+  const std::vector<Vec3d> points = fibonacciSphere(static_cast<int>(count));
+  std::vector<NodeDesc> instances(n, NodeDesc::makeLeaf(leaf));  // the union's origin is theirs (NodeDesc::origin)
+  const auto place = [&](std::size_t first, std::size_t end) {
+    for (std::size_t i = first; i < end; ++i) {
+      const Mat4d spin = glm::rotate(Mat4d(1.0), twists[i], Vec3d(0, 0, 1));
+      instances[i].transform = glm::translate(Mat4d(1.0), points[i] * radius) * alignZ(points[i]) * spin;
+    }
+  };
+  const unsigned threads = load.tables->settings().threads > 0 ? load.tables->settings().threads : hardwareThreads();
+  const unsigned workers = n >= kParallelPlacements ? threads : 1;
+  // Contiguous shares: the work makes no allocation (a worker thread's own
+  // allocator arena would stay resident) and cannot fail.
+  runWorkers(workers, [&](unsigned w) { place(n * w / workers, n * (w + 1) / workers); }, [] {});
+  return NodeDesc::makeOperation(NodeDesc::Kind::Union, std::move(instances), context.where(table));
 }
 
 }  // namespace

@@ -227,8 +227,7 @@ RenderJob jobFrom(RenderFlags& f, const CLI::App& cmd) {
   }
   applyWireArgs(f.wire, cmd, f.serial.baud, job);
   streamToTerminalByDefault(job);  // sixel on a terminal: the picture goes there
-  checkRenderJob(job);
-  return job;
+  return job;  // renderScene checks it first thing (checkRenderJob), before anything is made
 }
 
 // What the render says on stderr as it goes (app/render_events.hpp).

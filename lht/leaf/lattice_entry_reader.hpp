@@ -25,9 +25,10 @@ template <typename T>
 class EntryReader {
  public:
   // Throws lattice::Error(Input) when T cannot follow the lattice placed by
-  // latticeToWorld (the generic arithmetics always can).
-  EntryReader(const LhtLookup& table, const Mat4d& latticeToWorld)
-      : table_(table), normalToWorld_(glm::transpose(Mat3<double>(glm::inverse(latticeToWorld)))) {}
+  // latticeToWorld (the generic arithmetics always can). worldToLattice is
+  // glm::inverse(latticeToWorld), which the leaf has already taken.
+  EntryReader(const LhtLookup& table, const Mat4d& /*latticeToWorld*/, const Mat4d& worldToLattice)
+      : table_(table), normalToWorld_(glm::transpose(Mat3<double>(worldToLattice))) {}
   // With the map normalMap() of a reader built as above (a baked placement).
   EntryReader(const LhtLookup& table, const Mat3<T>& normalMap) : table_(table), normalToWorld_(normalMap) {}
   const Mat3<T>& normalMap() const { return normalToWorld_; }

@@ -36,7 +36,7 @@ class EntryReader<Fixed32> {
  public:
   static constexpr double kSmallestCell = 1e-6;
 
-  EntryReader(const LhtLookup& table, const Mat4d& latticeToWorld)
+  EntryReader(const LhtLookup& table, const Mat4d& latticeToWorld, const Mat4d& worldToLattice)
       : table_(table), precision_(table.precision()) {
     const double cell = singularValueRange(latticeToWorld).smallest;
     if (!(cell >= kSmallestCell))
@@ -45,7 +45,7 @@ class EntryReader<Fixed32> {
                               "--arith fixed resolves (its resolution is 2^-32 = 2.3e-10); use --arith double, "
                               "or scale the whole scene up",
                               cell));
-    const Mat3<double> normalToWorld = glm::transpose(Mat3<double>(glm::inverse(latticeToWorld)));
+    const Mat3<double> normalToWorld = glm::transpose(Mat3<double>(worldToLattice));
     const int bits = static_cast<int>(std::bit_width(static_cast<unsigned>(normalDirectionMax(precision_))));
     const int extraBits = std::max(0, bits - 7);
     directionToWorld_ = Mat3<Fixed32>(normalToWorld * std::ldexp(1.0, -extraBits));

@@ -36,18 +36,7 @@ class LatticeLeafBase : public Primitive<T> {
   // latticeToWorld: the lattice box's own map, then the instance's transform.
   LatticeLeafBase(std::shared_ptr<const LhtFile> lht, const Mat4d& latticeToWorld, MaterialId material,
                   bool castsShadows, LookupStats* stats)
-      : lht_(std::move(lht)),
-        box_(&lht_->box),
-        reader_(checked(LhtLookup(*lht_), latticeToWorld), latticeToWorld),
-        material_(material),
-        castsShadows_(castsShadows),
-        stats_(stats),
-        worldToLattice_(Mat4<T>(glm::inverse(latticeToWorld))) {
-    const auto& c = lht_->box.cells();
-    cells_ = Vec3<T>(T(c[0]), T(c[1]), T(c[2]));
-    const Bounds<double> world = transformBounds(Bounds<double>{Vec3d(0.0), Vec3d(c[0], c[1], c[2])}, latticeToWorld);
-    bounds_ = {Vec3<T>(world.lo), Vec3<T>(world.hi)};
-  }
+      : LatticeLeafBase(std::move(lht), latticeToWorld, glm::inverse(latticeToWorld), material, castsShadows, stats) {}
   // A leaf over a table it does not own (it must outlive the leaf), placed by
   // what placement() of a leaf built as above gave: the same answers.
   LatticeLeafBase(const LatticeBox& box, const LhtLookup& table, const LatticePlacement<T>& p)
@@ -143,6 +132,22 @@ class LatticeLeafBase : public Primitive<T> {
   bool castsShadows_;
 
  private:
+  // The inverse taken once, for the walk's map and the reader's normals.
+  LatticeLeafBase(std::shared_ptr<const LhtFile> lht, const Mat4d& latticeToWorld, const Mat4d& worldToLattice,
+                  MaterialId material, bool castsShadows, LookupStats* stats)
+      : lht_(std::move(lht)),
+        box_(&lht_->box),
+        reader_(checked(LhtLookup(*lht_), latticeToWorld), latticeToWorld, worldToLattice),
+        material_(material),
+        castsShadows_(castsShadows),
+        stats_(stats),
+        worldToLattice_(Mat4<T>(worldToLattice)) {
+    const auto& c = lht_->box.cells();
+    cells_ = Vec3<T>(T(c[0]), T(c[1]), T(c[2]));
+    const Bounds<double> world = transformBounds(Bounds<double>{Vec3d(0.0), Vec3d(c[0], c[1], c[2])}, latticeToWorld);
+    bounds_ = {Vec3<T>(world.lo), Vec3<T>(world.hi)};
+  }
+
   // The transform is held to T's condition limit before the reader sees it.
   static LhtLookup checked(LhtLookup table, const Mat4d& latticeToWorld) {
     const std::string problem = conditionProblemFor<T>(latticeToWorld);

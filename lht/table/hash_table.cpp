@@ -54,26 +54,43 @@ LatticeHashTable::LatticeHashTable(const RasterHits& hits, LhtPrecision precisio
 }
 
 void LatticeHashTable::insert(const std::uint8_t* entry) {
-  std::uint64_t key = loadKey(entry);
+  const std::uint64_t key = loadKey(entry);
   if (key == 0) throw Error(ErrorKind::Input, "an LHT entry with the empty key (0,0,0)->(0,0,0)");
   if (entries_ + 1 >= capacity_) throw Error(ErrorKind::Input, "more LHT entries than the table was sized for");
   filter_.add(key);  // before the loop carries smaller keys on under `key`
+  // Each precision's slot size as a constant, so each copy and swap of a
+  // slot is a few moves instead of a call (a scatter's table is tens of
+  // thousands of inserts); any other size takes the general loop.
+  switch (stride_) {
+    case 9: return place<9>(entry, key);
+    case 10: return place<10>(entry, key);
+    case 12: return place<12>(entry, key);
+    default: return place<0>(entry, key);
+  }
+}
+
+template <std::size_t kStride>
+void LatticeHashTable::place(const std::uint8_t* entry, std::uint64_t key) {
+  const std::size_t stride = kStride ? kStride : stride_;
   std::uint8_t carried[32];  // the entry being placed: the new one, then each smaller one it displaces
   static_assert(sizeof carried >= 16);
-  std::memcpy(carried, entry, stride_);
+  std::memcpy(carried, entry, stride);
   for (std::uint64_t i = homeOf(key, capacity_);; i = i + 1 == capacity_ ? 0 : i + 1) {
     std::uint8_t* at = slot(i);
     const std::uint64_t held = loadKey(at);
     if (held > key) continue;
     if (held == key) throw Error(ErrorKind::Input, fmt::format("LHT key {:012x} stored twice", key));
     if (held == 0) {
-      std::memcpy(at, carried, stride_);
+      std::memcpy(at, carried, stride);
       ++entries_;
       return;
     }
     // A smaller key: ours takes its place and it moves on (its run so far
     // holds only larger keys, ours now among them).
-    std::swap_ranges(carried, carried + stride_, at);
+    std::uint8_t displaced[32];
+    std::memcpy(displaced, at, stride);
+    std::memcpy(at, carried, stride);
+    std::memcpy(carried, displaced, stride);
     key = held;
   }
 }

@@ -178,6 +178,9 @@ class LatticeHashTable {
 
  private:
   std::uint8_t* slot(std::uint64_t index) { return slots_.data() + index * stride_; }
+  // insert()'s probe and displacement for a slot of kStride bytes (0: stride_).
+  template <std::size_t kStride>
+  void place(const std::uint8_t* entry, std::uint64_t key);
   void checkSlots() const;
   void fillFilter();
 

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -210,6 +211,29 @@ TEST_CASE("lattice scene: scatter places N instances on the sphere") {
   double closest = 10.0;
   for (std::size_t i = 1; i < points.size(); ++i) closest = std::min(closest, glm::length(points[i] - points[0]));
   CHECK(closest > 0.05);  // almost uniform: no two points bunch up (mean spacing ~0.11)
+}
+
+TEST_CASE("lattice scene: a scatter's placements are the same matrices at every thread count") {
+  // 700 instances: above the count placed on threads (loader/lattice_scene_loader.cpp).
+  TableSettings one;
+  one.threads = 1;
+  const SceneDesc serial = parseSceneWithLattices(fuzzyScene(700), "fuzzy.toml", one).scene;
+  const std::vector<NodeDesc>& expected = serial.root.children[1].children;
+  REQUIRE(expected.size() == 700);
+  for (unsigned threads : {2u, 3u}) {
+    TableSettings tables;
+    tables.threads = threads;
+    const SceneDesc scene = parseSceneWithLattices(fuzzyScene(700), "fuzzy.toml", tables).scene;
+    const std::vector<NodeDesc>& placed = scene.root.children[1].children;
+    REQUIRE(placed.size() == expected.size());
+    int differ = 0, unplaced = 0;
+    for (std::size_t i = 0; i < placed.size(); ++i) {
+      differ += std::memcmp(&placed[i].transform, &expected[i].transform, sizeof(Mat4d)) != 0;
+      unplaced += placed[i].transform == Mat4d(1.0);
+    }
+    CHECK(differ == 0);
+    CHECK(unplaced == 0);
+  }
 }
 
 namespace {
