@@ -12,9 +12,6 @@ namespace {
 constexpr double kRectSlack = 1e-6;   // cells: the rectangles' own rounding
 constexpr double kSliverReach = 0.25;  // cells: how near p a cut-off sliver may lie
 
-// The two axes spanning the faces across `axis`, in order.
-constexpr int kAcross[3][2] = {{1, 2}, {0, 2}, {0, 1}};
-
 double distanceToBox(const Vec3d& p, const Bounds<double>& box) {
   const Vec3d outside = glm::max(glm::max(box.lo - p, p - box.hi), Vec3d(0.0));
   return glm::length(outside);
@@ -73,7 +70,7 @@ void CoverCull::aim(const Vec3d& p, std::uint8_t facesOfP, Fan& fan) const {
   for (int face = 0; face < 6; ++face) {
     if (facesOfP & (1u << face)) continue;  // pairs sharing a face are never asked
     const int axis = face / 2;
-    const int across[2] = {kAcross[axis][0], kAcross[axis][1]};
+    const int across[2] = {kAcrossAxes[axis][0], kAcrossAxes[axis][1]};
     const double plane = (face % 2) ? cells_[axis] : 0.0;
     const double toPlane = plane - p[axis];  // at least one cell
     const double side = toPlane > 0 ? 1.0 : -1.0;
@@ -118,12 +115,20 @@ bool CoverCull::mayTouch(const Fan& fan, const Vec3d& q, std::uint8_t facesOfQ) 
   if (!active_) return true;
   const int face = std::countr_zero(static_cast<unsigned>(facesOfQ));
   const int axis = face / 2;
-  const double qu = q[kAcross[axis][0]], qv = q[kAcross[axis][1]];
+  const double qu = q[kAcrossAxes[axis][0]], qv = q[kAcrossAxes[axis][1]];
   const std::size_t n = pieces();
   const double* rect = &fan.rects[static_cast<std::size_t>(face) * n * 4];
   const Vec3d d = q - fan.p;
   for (std::size_t k = 0; k < n; ++k, rect += 4)
     if (qu >= rect[0] && qu <= rect[1] && qv >= rect[2] && qv <= rect[3] && touches(k, fan.p, d)) return true;
+  return false;
+}
+
+bool CoverCull::mayTouch(const Fan& fan, const Vec3d& q, std::uint64_t pieces) const {
+  if (!active_) return true;
+  const Vec3d d = q - fan.p;
+  for (; pieces != 0; pieces &= pieces - 1)  // lowest piece first, as the rectangles are tried
+    if (touches(static_cast<std::size_t>(std::countr_zero(pieces)), fan.p, d)) return true;
   return false;
 }
 

@@ -45,7 +45,10 @@
 namespace lattice::lht {
 
 inline constexpr double kCoverMargin = 1e-4;
-inline constexpr std::size_t kMaxCoverPieces = 64;
+inline constexpr std::size_t kMaxCoverPieces = 64;  // a piece is one bit of a 64-bit mask
+
+// The two axes spanning the faces across `axis`, in order: a face's u and v.
+inline constexpr int kAcrossAxes[3][2] = {{1, 2}, {0, 2}, {0, 1}};
 
 class CoverCull {
  public:
@@ -61,13 +64,21 @@ class CoverCull {
   // The segments leaving one point of the box's surface.
   struct Fan {
     Vec3d p{0.0};
-    std::vector<double> rects;  // per face, per piece: u0, u1, v0, v1
+    // Per face, per piece: u0, u1, v0, v1, at rects[(face * pieces + piece) * 4],
+    // u and v the face's axes in acrossAxes order: the exit points of that
+    // face whose segment from p may touch the piece lie within them.
+    std::vector<double> rects;
   };
   // Prepares `fan` for p (on the faces `facesOfP`), reusing its storage.
   void aim(const Vec3d& p, std::uint8_t facesOfP, Fan& fan) const;
   // False only if the segment from fan.p to q (on the faces `facesOfQ`,
   // none of them shared with p) stays clear of the cover.
   bool mayTouch(const Fan& fan, const Vec3d& q, std::uint8_t facesOfQ) const;
+  // The same for an exit point whose lowest face's rectangles hold it for the
+  // pieces in `pieces` (bit k: piece k) and no other (lht/raster/exit_candidates.hpp).
+  bool mayTouch(const Fan& fan, const Vec3d& q, std::uint64_t pieces) const;
+
+  std::size_t pieces() const { return capsules_.size() + boxes_.size(); }
 
  private:
   struct Capsule {
@@ -79,7 +90,6 @@ class CoverCull {
   };
   // Pieces are the capsules, then the boxes, numbered in that order.
   bool touches(std::size_t piece, const Vec3d& p, const Vec3d& d) const;
-  std::size_t pieces() const { return capsules_.size() + boxes_.size(); }
 
   bool active_ = false;
   std::array<int, 3> cells_{};

@@ -9,6 +9,7 @@
 
 #include "foundation/progress.hpp"
 #include "foundation/threads.hpp"
+#include "lht/raster/exit_candidates.hpp"
 
 namespace lattice::lht {
 
@@ -61,6 +62,12 @@ bool PairTracer::trace(const LatticePoint& in, std::uint8_t facesIn, const Latti
   if (facesIn & facesOut) return false;
   const Vec3d from = in.toVec(), to = out.toVec();
   if (!(fan ? cull_.mayTouch(*fan, to, facesOut) : cull_.mayTouch(from, to))) return false;
+  return traceUnculled(in, out, hit, traced);
+}
+
+bool PairTracer::traceUnculled(const LatticePoint& in, const LatticePoint& out, RasterHit& hit, bool& traced) const {
+  traced = false;
+  const Vec3d from = in.toVec(), to = out.toVec();
   double t0, t1;
   if (!bounds_.clip(Ray<double>{from, to - from}, 0.0, 1.0, t0, t1)) return false;
   traced = true;
@@ -103,7 +110,7 @@ class Rasterizer {
  public:
   Rasterizer(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
              const RasterOptions& options)
-      : options_(options), points_(box.boundaryPoints()), tracer_(box, object, cover, options.grazeTolerance) {
+      : options_(options), box_(box), points_(box.boundaryPoints()), tracer_(box, object, cover, options.grazeTolerance) {
     faces_.reserve(points_.size());
     for (const LatticePoint& p : points_) faces_.push_back(box.facesOf(p));
     // Face masks have 6 bits: every pair's multiplicity is one of 64 x 64
@@ -113,6 +120,18 @@ class Rasterizer {
         multiplicity_[a * 64 + b] = static_cast<std::uint8_t>(
             LatticeBox::pairMultiplicity(static_cast<std::uint8_t>(a), static_cast<std::uint8_t>(b)));
     perPoint_.resize(points_.size());
+    // A row's pair counts depend on its point's faces only: eq. 1.3's
+    // multiplicities summed over the points of each face mask.
+    std::array<std::uint64_t, 64> ofMask{};
+    for (const std::uint8_t f : faces_) ++ofMask[f];
+    for (unsigned a = 0; a < 64; ++a)
+      for (unsigned b = 0; b < 64; ++b) {
+        const std::uint8_t m = multiplicity_[a * 64 + b];
+        pairsFrom_[a] += ofMask[b] * m;
+        distinctFrom_[a] += m != 0 ? ofMask[b] : 0;
+      }
+    for (unsigned a = 0; a < 64; ++a)
+      if (multiplicity_[a * 64 + a] != 0 && ofMask[a] != 0) --distinctFrom_[a];  // the point and itself
   }
 
   RasterResult run() {
@@ -128,8 +147,10 @@ class Rasterizer {
       // and every pair's count would move the line between the cores.
       RasterStats counted;
       CoverCull::Fan fan;
+      ExitCandidates exits(box_, points_);
+      std::vector<ExitCandidates::Candidate> candidates;
       for (std::size_t i = next_.fetch_add(1); i < points_.size(); i = next_.fetch_add(1)) {
-        tracePoint(i, counted, fan);
+        tracePoint(i, counted, fan, exits, candidates);
         progress.advance();
       }
       stats[w] = counted;
@@ -155,24 +176,33 @@ class Rasterizer {
   }
 
  private:
-  void tracePoint(std::size_t i, RasterStats& stats, CoverCull::Fan& fan) {
+  void tracePoint(std::size_t i, RasterStats& stats, CoverCull::Fan& fan, ExitCandidates& exits,
+                  std::vector<ExitCandidates::Candidate>& candidates) {
     const LatticePoint& in = points_[i];
+    const std::uint8_t facesIn = faces_[i];
+    // Every pair of the row is counted by its faces; only the candidates are visited.
+    stats.pairs += pairsFrom_[facesIn];
+    stats.distinctPairs += distinctFrom_[facesIn];
     std::vector<RasterHit> out;  // grown here, stored once: perPoint_'s neighbouring headers share cache lines
-    tracer_.cull().aim(in.toVec(), faces_[i], fan);
-    for (std::size_t j = 0; j < points_.size(); ++j) {
-      const int multiplicity = multiplicity_[faces_[i] * 64u + faces_[j]];
-      if (multiplicity == 0) continue;
-      stats.pairs += static_cast<std::uint64_t>(multiplicity);
-      if (i == j) continue;  // a point, not a segment
-      ++stats.distinctPairs;
+    const CoverCull& cull = tracer_.cull();
+    const auto visit = [&](std::size_t j, bool mayTouch) {
+      if (!mayTouch) return;
       RasterHit hit;
       bool traced = false;
-      const bool hits = tracer_.trace(in, faces_[i], points_[j], faces_[j], hit, traced, &fan);
+      const bool hits = tracer_.traceUnculled(in, points_[j], hit, traced);
       if (traced) ++stats.traced;
       if (hits) {
-        stats.hits += static_cast<std::uint64_t>(multiplicity);
+        stats.hits += multiplicity_[facesIn * 64u + faces_[j]];
         out.push_back(hit);
       }
+    };
+    if (cull.active()) {
+      cull.aim(in.toVec(), facesIn, fan);
+      exits.collect(cull, fan, facesIn, candidates);
+      for (const ExitCandidates::Candidate& c : candidates)
+        if (!(facesIn & faces_[c.point])) visit(c.point, cull.mayTouch(fan, points_[c.point].toVec(), c.pieces));
+    } else {
+      for (std::size_t j = 0; j < points_.size(); ++j) visit(j, !(facesIn & faces_[j]));
     }
     out.shrink_to_fit();  // growth by doubling left up to half of it unused
     const std::size_t kept = out.size();
@@ -183,10 +213,13 @@ class Rasterizer {
   }
 
   RasterOptions options_;
+  const LatticeBox& box_;
   std::vector<LatticePoint> points_;
   PairTracer tracer_;
   std::vector<std::uint8_t> faces_;
   std::array<std::uint8_t, 64 * 64> multiplicity_{};  // by (faces of p_i) * 64 + faces of p_o
+  std::array<std::uint64_t, 64> pairsFrom_{};     // eq. 1.3's pairs of a row, by the faces of its p_i
+  std::array<std::uint64_t, 64> distinctFrom_{};  // its distinct pairs (p_i != p_o, multiplicity > 0)
   std::vector<std::vector<RasterHit>> perPoint_;
   std::atomic<std::size_t> next_{0};
   std::atomic<std::uint64_t> held_{0};  // hits so far, all threads (the running count)

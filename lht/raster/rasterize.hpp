@@ -89,6 +89,9 @@ class PairTracer {
   // pairs leaving one point; null: the cull tests the pair alone.
   bool trace(const LatticePoint& in, std::uint8_t facesIn, const LatticePoint& out, std::uint8_t facesOut,
              RasterHit& hit, bool& traced, const CoverCull::Fan* fan = nullptr) const;
+  // The same for a pair sharing no face that the cull let through (or that
+  // has no cull to pass): the pair is traced unless it misses the object's box.
+  bool traceUnculled(const LatticePoint& in, const LatticePoint& out, RasterHit& hit, bool& traced) const;
   const CoverCull& cull() const { return cull_; }
 
  private:
