@@ -124,6 +124,16 @@ bool CoverCull::mayTouch(const Fan& fan, const Vec3d& q, std::uint8_t facesOfQ) 
   return false;
 }
 
+std::uint64_t CoverCull::touching(const Fan& fan, const Vec3d& q, std::uint64_t pieces) const {
+  const Vec3d d = q - fan.p;
+  std::uint64_t near = 0;
+  for (; pieces != 0; pieces &= pieces - 1) {
+    const int k = std::countr_zero(pieces);
+    if (touches(static_cast<std::size_t>(k), fan.p, d)) near |= std::uint64_t(1) << k;
+  }
+  return near;
+}
+
 bool CoverCull::mayTouch(const Fan& fan, const Vec3d& q, std::uint64_t pieces) const {
   if (!active_) return true;
   const Vec3d d = q - fan.p;

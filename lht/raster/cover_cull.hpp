@@ -77,6 +77,9 @@ class CoverCull {
   // The same for an exit point whose lowest face's rectangles hold it for the
   // pieces in `pieces` (bit k: piece k) and no other (lht/raster/exit_candidates.hpp).
   bool mayTouch(const Fan& fan, const Vec3d& q, std::uint64_t pieces) const;
+  // Of `pieces`, those the segment from fan.p to q may touch: every piece
+  // not among them it stays clear of (an active cull only).
+  std::uint64_t touching(const Fan& fan, const Vec3d& q, std::uint64_t pieces) const;
 
   std::size_t pieces() const { return capsules_.size() + boxes_.size(); }
 

@@ -1,6 +1,7 @@
 #include "lht/raster/rasterize.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -35,8 +36,15 @@ PairTracer::PairTracer(const LatticeBox& box, const Primitive<double>& object, d
 
 PairTracer::PairTracer(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
                        double grazeTolerance)
+    : PairTracer(box, object, cover, nullptr, grazeTolerance) {}
+
+PairTracer::PairTracer(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
+                       const ObjectParts* parts, double grazeTolerance)
     : box_(box), object_(object), grazeTolerance_(grazeTolerance), latticeToObject_(box.latticeToObject()) {
   if (cover) cull_ = CoverCull(cover->mapped(box.objectToLattice()), box.cells());
+  // Piece k must be part k's: the cover holds the parts' capsules and nothing else.
+  if (parts && cull_.active() && cover->boxes.empty() && parts->parts.size() == cover->capsules.size())
+    parts_ = parts->parts;
   // The object's box in lattice coordinates, grown by the graze tolerance:
   // a segment that misses it cannot touch the object.
   const Bounds<double>& b = object.bounds();
@@ -65,15 +73,68 @@ bool PairTracer::trace(const LatticePoint& in, std::uint8_t facesIn, const Latti
   return traceUnculled(in, out, hit, traced);
 }
 
+bool PairTracer::clipsBounds(const Vec3d& from, const Vec3d& to) const {
+  double t0, t1;
+  return bounds_.clip(Ray<double>{from, to - from}, 0.0, 1.0, t0, t1);
+}
+
 bool PairTracer::traceUnculled(const LatticePoint& in, const LatticePoint& out, RasterHit& hit, bool& traced) const {
   traced = false;
   const Vec3d from = in.toVec(), to = out.toVec();
-  double t0, t1;
-  if (!bounds_.clip(Ray<double>{from, to - from}, 0.0, 1.0, t0, t1)) return false;
+  if (!clipsBounds(from, to)) return false;
   traced = true;
   hit = RasterHit{in, out, 0.0, {}};
   if (!traceClosed(from, to, hit.s, hit.normal)) return false;
   hit.normal = glm::normalize(hit.normal);
+  return true;
+}
+
+bool PairTracer::traceCandidate(const LatticePoint& in, const LatticePoint& out, const CoverCull::Fan& fan,
+                                std::uint64_t pieces, RasterHit& hit, bool& traced) const {
+  traced = false;
+  const Vec3d from = in.toVec(), to = out.toVec();
+  if (parts_.empty()) return cull_.mayTouch(fan, to, pieces) && traceUnculled(in, out, hit, traced);
+  const std::uint64_t near = cull_.touching(fan, to, pieces);
+  if (near == 0) return false;
+  hit = RasterHit{in, out, 0.0, {}};
+  // The parts decide where one of them is hit first; a miss, a tie or a start
+  // inside a part goes to the whole object, as every segment did before. A
+  // segment entering a part crosses the object's box, so only the others
+  // are clipped against it (for the count of segments traced).
+  if (!nearestPart(from, to, near, hit.s, hit.normal)) {
+    if (!clipsBounds(from, to)) return false;
+    traced = true;
+    if (!traceClosed(from, to, hit.s, hit.normal)) return false;
+  }
+  traced = true;
+  hit.normal = glm::normalize(hit.normal);
+  return true;
+}
+
+// The union's first enter (render/shapes/union_core.hpp: the earliest enter
+// of any child; the first asked on a tie) read from the parts the segment
+// passes near: the others cannot be entered (their pieces are clear of it).
+// Each part's enter is its own arithmetic whatever else is asked, so where
+// one part enters first the answer is the union's to the bit. A part asked
+// up to just past the best enter so far reveals a tie, whose winner depends
+// on the union's order: then, as for a miss or a start inside, false.
+bool PairTracer::nearestPart(const Vec3d& from, const Vec3d& to, std::uint64_t near, double& s, Vec3d& normal) const {
+  const Ray<double> ray = Ray<double>{from, to - from}.transformed(latticeToObject_);
+  Hit<double> best, part;
+  bool found = false, inside = false;
+  for (; near != 0; near &= near - 1) {
+    // The next double above a positive best: ties are entered before it.
+    const double limit = found ? std::bit_cast<double>(std::bit_cast<std::uint64_t>(best.t) + 1) : 1.0;
+    if (parts_[static_cast<std::size_t>(std::countr_zero(near))]->firstEnter(ray, 0.0, limit, part, inside)) {
+      if (found && part.t == best.t) return false;
+      best = part;
+      found = true;
+    }
+    if (inside) return false;
+  }
+  if (!found) return false;
+  s = best.t;
+  normal = best.normal;
   return true;
 }
 
@@ -109,8 +170,11 @@ namespace {
 class Rasterizer {
  public:
   Rasterizer(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
-             const RasterOptions& options)
-      : options_(options), box_(box), points_(box.boundaryPoints()), tracer_(box, object, cover, options.grazeTolerance) {
+             const ObjectParts* parts, const RasterOptions& options)
+      : options_(options),
+        box_(box),
+        points_(box.boundaryPoints()),
+        tracer_(box, object, cover, parts, options.grazeTolerance) {
     faces_.reserve(points_.size());
     for (const LatticePoint& p : points_) faces_.push_back(box.facesOf(p));
     // Face masks have 6 bits: every pair's multiplicity is one of 64 x 64
@@ -185,11 +249,12 @@ class Rasterizer {
     stats.distinctPairs += distinctFrom_[facesIn];
     std::vector<RasterHit> out;  // grown here, stored once: perPoint_'s neighbouring headers share cache lines
     const CoverCull& cull = tracer_.cull();
-    const auto visit = [&](std::size_t j, bool mayTouch) {
-      if (!mayTouch) return;
+    // pieces: a candidate's (lht/raster/exit_candidates.hpp); without a cull every pair is traced.
+    const auto visit = [&](std::size_t j, bool candidate, std::uint64_t pieces) {
       RasterHit hit;
       bool traced = false;
-      const bool hits = tracer_.traceUnculled(in, points_[j], hit, traced);
+      const bool hits = candidate ? tracer_.traceCandidate(in, points_[j], fan, pieces, hit, traced)
+                                  : tracer_.traceUnculled(in, points_[j], hit, traced);
       if (traced) ++stats.traced;
       if (hits) {
         stats.hits += multiplicity_[facesIn * 64u + faces_[j]];
@@ -200,9 +265,10 @@ class Rasterizer {
       cull.aim(in.toVec(), facesIn, fan);
       exits.collect(cull, fan, facesIn, candidates);
       for (const ExitCandidates::Candidate& c : candidates)
-        if (!(facesIn & faces_[c.point])) visit(c.point, cull.mayTouch(fan, points_[c.point].toVec(), c.pieces));
+        if (!(facesIn & faces_[c.point])) visit(c.point, true, c.pieces);
     } else {
-      for (std::size_t j = 0; j < points_.size(); ++j) visit(j, !(facesIn & faces_[j]));
+      for (std::size_t j = 0; j < points_.size(); ++j)
+        if (!(facesIn & faces_[j])) visit(j, false, 0);
     }
     out.shrink_to_fit();  // growth by doubling left up to half of it unused
     const std::size_t kept = out.size();
@@ -239,12 +305,18 @@ RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, c
 
 RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
                        const RasterOptions& options) {
-  Rasterizer rasterizer(box, object, cover, options);
+  return rasterize(box, object, cover, nullptr, options);
+}
+
+RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
+                       const ObjectParts* parts, const RasterOptions& options) {
+  Rasterizer rasterizer(box, object, cover, parts, options);
   return rasterizer.run();
 }
 
 RasterResult rasterize(const LatticeBox& box, const LatticeObject& object, const RasterOptions& options) {
-  return rasterize(box, *object.primitive, object.cover ? &*object.cover : nullptr, options);
+  return rasterize(box, *object.primitive, object.cover ? &*object.cover : nullptr,
+                   object.parts ? &*object.parts : nullptr, options);
 }
 
 }  // namespace lattice::lht
