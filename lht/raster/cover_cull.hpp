@@ -78,21 +78,32 @@ class CoverCull {
   // pieces in `pieces` (bit k: piece k) and no other (lht/raster/exit_candidates.hpp).
   bool mayTouch(const Fan& fan, const Vec3d& q, std::uint64_t pieces) const;
   // Of `pieces`, those the segment from fan.p to q may touch: every piece
-  // not among them it stays clear of (an active cull only).
-  std::uint64_t touching(const Fan& fan, const Vec3d& q, std::uint64_t pieces) const;
+  // not among them it stays clear of (an active cull only). Each is written
+  // to `out` (room for every piece) with how far along the segment it lies
+  // nearest (in units of |q - p|^2: an order, not a distance); returns how many.
+  struct Near {
+    std::uint32_t piece;
+    double along;
+  };
+  std::size_t touching(const Fan& fan, const Vec3d& q, std::uint64_t pieces, Near* out) const;
 
   std::size_t pieces() const { return capsules_.size() + boxes_.size(); }
 
  private:
   struct Capsule {
     Vec3d a, axis;  // axis = b - a
-    double reach2;  // (radius + margin)^2
+    double reach;   // radius + margin
+    double reach2;  // reach^2
   };
   struct Box {
     Vec3d centre, half;  // half extents grown by the margin
   };
   // Pieces are the capsules, then the boxes, numbered in that order.
   bool touches(std::size_t piece, const Vec3d& p, const Vec3d& d) const;
+  // Narrows a capsule's rectangle to the box of its end balls' shadows.
+  static void narrowToBalls(const Capsule& c, const Vec3d& p, int axis, double side, double toPlane, double* rect);
+  // touches(), and where along d the piece lies nearest.
+  bool touchesAlong(std::size_t piece, const Vec3d& p, const Vec3d& d, double& along) const;
 
   bool active_ = false;
   std::array<int, 3> cells_{};

@@ -94,14 +94,15 @@ bool PairTracer::traceCandidate(const LatticePoint& in, const LatticePoint& out,
   traced = false;
   const Vec3d from = in.toVec(), to = out.toVec();
   if (parts_.empty()) return cull_.mayTouch(fan, to, pieces) && traceUnculled(in, out, hit, traced);
-  const std::uint64_t near = cull_.touching(fan, to, pieces);
-  if (near == 0) return false;
+  std::array<CoverCull::Near, kMaxCoverPieces> near;
+  const std::size_t count = cull_.touching(fan, to, pieces, near.data());
+  if (count == 0) return false;
   hit = RasterHit{in, out, 0.0, {}};
   // The parts decide where one of them is hit first; a miss, a tie or a start
   // inside a part goes to the whole object, as every segment did before. A
   // segment entering a part crosses the object's box, so only the others
   // are clipped against it (for the count of segments traced).
-  if (!nearestPart(from, to, near, hit.s, hit.normal)) {
+  if (!nearestPart(from, to, near.data(), count, hit.s, hit.normal)) {
     if (!clipsBounds(from, to)) return false;
     traced = true;
     if (!traceClosed(from, to, hit.s, hit.normal)) return false;
@@ -118,14 +119,19 @@ bool PairTracer::traceCandidate(const LatticePoint& in, const LatticePoint& out,
 // one part enters first the answer is the union's to the bit. A part asked
 // up to just past the best enter so far reveals a tie, whose winner depends
 // on the union's order: then, as for a miss or a start inside, false.
-bool PairTracer::nearestPart(const Vec3d& from, const Vec3d& to, std::uint64_t near, double& s, Vec3d& normal) const {
+bool PairTracer::nearestPart(const Vec3d& from, const Vec3d& to, CoverCull::Near* near, std::size_t count, double& s,
+                             Vec3d& normal) const {
+  // Nearest first, so the parts behind the first one entered are mostly
+  // turned away by their own box test against the shorter limit.
+  for (std::size_t i = 1; i < count; ++i)
+    for (std::size_t j = i; j > 0 && near[j].along < near[j - 1].along; --j) std::swap(near[j], near[j - 1]);
   const Ray<double> ray = Ray<double>{from, to - from}.transformed(latticeToObject_);
   Hit<double> best, part;
   bool found = false, inside = false;
-  for (; near != 0; near &= near - 1) {
+  for (std::size_t i = 0; i < count; ++i) {
     // The next double above a positive best: ties are entered before it.
     const double limit = found ? std::bit_cast<double>(std::bit_cast<std::uint64_t>(best.t) + 1) : 1.0;
-    if (parts_[static_cast<std::size_t>(std::countr_zero(near))]->firstEnter(ray, 0.0, limit, part, inside)) {
+    if (parts_[near[i].piece]->firstEnter(ray, 0.0, limit, part, inside)) {
       if (found && part.t == best.t) return false;
       best = part;
       found = true;

@@ -110,7 +110,8 @@ class PairTracer {
  private:
   bool traceClosed(const Vec3d& from, const Vec3d& to, double& s, Vec3d& normal) const;
   bool clipsBounds(const Vec3d& from, const Vec3d& to) const;
-  bool nearestPart(const Vec3d& from, const Vec3d& to, std::uint64_t near, double& s, Vec3d& normal) const;
+  bool nearestPart(const Vec3d& from, const Vec3d& to, CoverCull::Near* near, std::size_t count, double& s,
+                   Vec3d& normal) const;
 
   const LatticeBox& box_;
   const Primitive<double>& object_;
