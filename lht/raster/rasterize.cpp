@@ -219,8 +219,9 @@ class Rasterizer {
       CoverCull::Fan fan;
       ExitCandidates exits(box_, points_);
       std::vector<ExitCandidates::Candidate> candidates;
+      std::vector<RasterHit> hits;
       for (std::size_t i = next_.fetch_add(1); i < points_.size(); i = next_.fetch_add(1)) {
-        tracePoint(i, counted, fan, exits, candidates);
+        tracePoint(i, counted, fan, exits, candidates, hits);
         progress.advance();
       }
       stats[w] = counted;
@@ -247,13 +248,15 @@ class Rasterizer {
 
  private:
   void tracePoint(std::size_t i, RasterStats& stats, CoverCull::Fan& fan, ExitCandidates& exits,
-                  std::vector<ExitCandidates::Candidate>& candidates) {
+                  std::vector<ExitCandidates::Candidate>& candidates, std::vector<RasterHit>& scratch) {
     const LatticePoint& in = points_[i];
     const std::uint8_t facesIn = faces_[i];
     // Every pair of the row is counted by its faces; only the candidates are visited.
     stats.pairs += pairsFrom_[facesIn];
     stats.distinctPairs += distinctFrom_[facesIn];
-    std::vector<RasterHit> out;  // grown here, stored once: perPoint_'s neighbouring headers share cache lines
+    // Grown in the worker's list, stored once: perPoint_'s neighbouring headers share cache lines.
+    std::vector<RasterHit>& out = scratch;
+    out.clear();
     const CoverCull& cull = tracer_.cull();
     // pieces: a candidate's (lht/raster/exit_candidates.hpp); without a cull every pair is traced.
     const auto visit = [&](std::size_t j, bool candidate, std::uint64_t pieces) {
@@ -276,9 +279,9 @@ class Rasterizer {
       for (std::size_t j = 0; j < points_.size(); ++j)
         if (!(facesIn & faces_[j])) visit(j, false, 0);
     }
-    out.shrink_to_fit();  // growth by doubling left up to half of it unused
+    // Copied at its size: the worker's list keeps its room for the next row.
     const std::size_t kept = out.size();
-    perPoint_[i] = std::move(out);
+    perPoint_[i].assign(out.begin(), out.end());
     const std::uint64_t held = held_.fetch_add(kept) + kept;
     const std::uint64_t done = done_.fetch_add(1) + 1;
     if (held > options_.maxHits) throw RasterHitLimit(held, done, points_.size());
