@@ -9,7 +9,7 @@
 // (the face CoverCull::mayTouch reads), and the marked points are handed out
 // in the order of the box's boundary points. Why: a row of the scene hair's
 // 380 points tested 9 rectangles at each of them, where about one point in
-// six lies in any; the rasterizer then asks the exact test only for the
+// four lies in any; the rasterizer then asks the exact test only for the
 // pieces marked, and counts the pairs it never visits by their faces.
 #include <array>
 #include <cstddef>

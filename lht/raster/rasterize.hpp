@@ -5,6 +5,11 @@
 // Given a cover of the object (lht/raster/object_cover.hpp), a pair whose segment
 // stays clear of it is a miss without a trace (lht/raster/cover_cull.hpp); the
 // pairs that may touch are traced as without it, so the table is the same.
+// The exit points a row visits are the cull's candidates
+// (lht/raster/exit_candidates.hpp); where the object is a union of parts, one
+// a piece of its cover (a polyline's capsules: lht/raster/lattice_object.hpp),
+// a segment is traced against the parts it passes near, with the union's
+// answer to the bit (docs/lattices.md, "Tracing a polyline through its capsules").
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
