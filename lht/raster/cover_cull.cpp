@@ -11,9 +11,9 @@ namespace {
 
 constexpr double kRectSlack = 1e-6;   // cells: the rectangles' own rounding
 constexpr double kSliverReach = 0.25;  // cells: how near p a cut-off sliver may lie
-
-// The two axes spanning the faces across `axis`, in order.
-constexpr int kAcross[3][2] = {{1, 2}, {0, 2}, {0, 1}};
+// Cells: the balls' rectangles' rounding, far above it (a square root and a
+// quotient of terms under 255^2 cells) and far below a grid step.
+constexpr double kBallSlack = 1e-4;
 
 double distanceToBox(const Vec3d& p, const Bounds<double>& box) {
   const Vec3d outside = glm::max(glm::max(box.lo - p, p - box.hi), Vec3d(0.0));
@@ -27,7 +27,7 @@ CoverCull::CoverCull(const ObjectCover& cover, const std::array<int, 3>& cells, 
   diagonal_ = glm::length(Vec3d(cells[0], cells[1], cells[2]));
   for (const CoverCapsule& c : cover.capsules) {
     const double reach = c.radius + margin;
-    capsules_.push_back({c.a, c.b - c.a, reach * reach});
+    capsules_.push_back({c.a, c.b - c.a, reach, reach * reach});
     grown_.push_back({glm::min(c.a, c.b) - Vec3d(reach), glm::max(c.a, c.b) + Vec3d(reach)});
   }
   for (const Bounds<double>& b : cover.boxes) {
@@ -73,7 +73,7 @@ void CoverCull::aim(const Vec3d& p, std::uint8_t facesOfP, Fan& fan) const {
   for (int face = 0; face < 6; ++face) {
     if (facesOfP & (1u << face)) continue;  // pairs sharing a face are never asked
     const int axis = face / 2;
-    const int across[2] = {kAcross[axis][0], kAcross[axis][1]};
+    const int across[2] = {kAcrossAxes[axis][0], kAcrossAxes[axis][1]};
     const double plane = (face % 2) ? cells_[axis] : 0.0;
     const double toPlane = plane - p[axis];  // at least one cell
     const double side = toPlane > 0 ? 1.0 : -1.0;
@@ -110,7 +110,38 @@ void CoverCull::aim(const Vec3d& p, std::uint8_t facesOfP, Fan& fan) const {
         rect[2 * i] = low - kRectSlack;
         rect[2 * i + 1] = high + kRectSlack;
       }
+      if (k < capsules_.size()) narrowToBalls(capsules_[k], p, axis, side, std::abs(toPlane), rect);
     }
+  }
+}
+
+// A capsule is the hull of its end balls, and from a point behind both (along
+// the face's axis) its shadow on the face is the hull of theirs, whose box is
+// the box of the two shadows. A ball's shadow along an across axis u spans
+// the slopes m of the two lines from p tangent to its disc in the (axis, u)
+// plane, centre (h, x) in front of p: (m h - x)^2 = R^2 (m^2 + 1), so
+// m = (h x -+ R sqrt(h^2 + x^2 - R^2)) / (h^2 - R^2). Both balls must lie
+// kSliverReach beyond p's plane, where these are well conditioned; else the
+// box's rectangle stands. A diagonal capsule's rectangle shrinks the most.
+void CoverCull::narrowToBalls(const Capsule& c, const Vec3d& p, int axis, double side, double toPlane, double* rect) {
+  const Vec3d ends[2] = {c.a, c.a + c.axis};
+  double h[2];
+  for (int e = 0; e < 2; ++e) {
+    h[e] = (ends[e][axis] - p[axis]) * side;
+    if (!(h[e] - c.reach > kSliverReach)) return;
+  }
+  for (int i = 0; i < 2; ++i) {
+    const int u = kAcrossAxes[axis][i];
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (int e = 0; e < 2; ++e) {
+      const double x = ends[e][u] - p[u];
+      const double root = c.reach * std::sqrt(h[e] * h[e] + x * x - c.reach2);
+      const double across = h[e] * h[e] - c.reach2;
+      low = std::min(low, (h[e] * x - root) / across);
+      high = std::max(high, (h[e] * x + root) / across);
+    }
+    rect[2 * i] = std::max(rect[2 * i], p[u] + low * toPlane - kBallSlack);
+    rect[2 * i + 1] = std::min(rect[2 * i + 1], p[u] + high * toPlane + kBallSlack);
   }
 }
 
@@ -118,12 +149,46 @@ bool CoverCull::mayTouch(const Fan& fan, const Vec3d& q, std::uint8_t facesOfQ) 
   if (!active_) return true;
   const int face = std::countr_zero(static_cast<unsigned>(facesOfQ));
   const int axis = face / 2;
-  const double qu = q[kAcross[axis][0]], qv = q[kAcross[axis][1]];
+  const double qu = q[kAcrossAxes[axis][0]], qv = q[kAcrossAxes[axis][1]];
   const std::size_t n = pieces();
   const double* rect = &fan.rects[static_cast<std::size_t>(face) * n * 4];
   const Vec3d d = q - fan.p;
   for (std::size_t k = 0; k < n; ++k, rect += 4)
     if (qu >= rect[0] && qu <= rect[1] && qv >= rect[2] && qv <= rect[3] && touches(k, fan.p, d)) return true;
+  return false;
+}
+
+bool CoverCull::touchesAlong(std::size_t piece, const Vec3d& p, const Vec3d& d, double& along) const {
+  if (piece >= capsules_.size()) {
+    along = glm::dot(boxes_[piece - capsules_.size()].centre - p, d);
+    return touches(piece, p, d);
+  }
+  const Capsule& c = capsules_[piece];
+  const Vec3d a = glm::cross(c.a - p, d);
+  const Vec3d b = glm::cross(c.axis, d);
+  const double ab = glm::dot(a, b), bb = glm::dot(b, b);
+  const double t = ab >= 0.0 ? 0.0 : (-ab >= bb ? 1.0 : -ab / bb);  // as touches() finds it
+  const Vec3d g = a + t * b;
+  along = glm::dot(c.a + t * c.axis - p, d);
+  return glm::dot(g, g) <= c.reach2 * glm::dot(d, d);
+}
+
+std::size_t CoverCull::touching(const Fan& fan, const Vec3d& q, std::uint64_t pieces, Near* out) const {
+  const Vec3d d = q - fan.p;
+  std::size_t n = 0;
+  for (; pieces != 0; pieces &= pieces - 1) {
+    const auto k = static_cast<std::uint32_t>(std::countr_zero(pieces));
+    double along;
+    if (touchesAlong(k, fan.p, d, along)) out[n++] = {k, along};
+  }
+  return n;
+}
+
+bool CoverCull::mayTouch(const Fan& fan, const Vec3d& q, std::uint64_t pieces) const {
+  if (!active_) return true;
+  const Vec3d d = q - fan.p;
+  for (; pieces != 0; pieces &= pieces - 1)  // lowest piece first, as the rectangles are tried
+    if (touches(static_cast<std::size_t>(std::countr_zero(pieces)), fan.p, d)) return true;
   return false;
 }
 

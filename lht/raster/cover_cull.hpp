@@ -45,7 +45,10 @@
 namespace lattice::lht {
 
 inline constexpr double kCoverMargin = 1e-4;
-inline constexpr std::size_t kMaxCoverPieces = 64;
+inline constexpr std::size_t kMaxCoverPieces = 64;  // a piece is one bit of a 64-bit mask
+
+// The two axes spanning the faces across `axis`, in order: a face's u and v.
+inline constexpr int kAcrossAxes[3][2] = {{1, 2}, {0, 2}, {0, 1}};
 
 class CoverCull {
  public:
@@ -61,25 +64,46 @@ class CoverCull {
   // The segments leaving one point of the box's surface.
   struct Fan {
     Vec3d p{0.0};
-    std::vector<double> rects;  // per face, per piece: u0, u1, v0, v1
+    // Per face, per piece: u0, u1, v0, v1, at rects[(face * pieces + piece) * 4],
+    // u and v the face's axes in acrossAxes order: the exit points of that
+    // face whose segment from p may touch the piece lie within them.
+    std::vector<double> rects;
   };
   // Prepares `fan` for p (on the faces `facesOfP`), reusing its storage.
   void aim(const Vec3d& p, std::uint8_t facesOfP, Fan& fan) const;
   // False only if the segment from fan.p to q (on the faces `facesOfQ`,
   // none of them shared with p) stays clear of the cover.
   bool mayTouch(const Fan& fan, const Vec3d& q, std::uint8_t facesOfQ) const;
+  // The same for an exit point whose lowest face's rectangles hold it for the
+  // pieces in `pieces` (bit k: piece k) and no other (lht/raster/exit_candidates.hpp).
+  bool mayTouch(const Fan& fan, const Vec3d& q, std::uint64_t pieces) const;
+  // Of `pieces`, those the segment from fan.p to q may touch: every piece
+  // not among them it stays clear of (an active cull only). Each is written
+  // to `out` (room for every piece) with how far along the segment it lies
+  // nearest (in units of |q - p|^2: an order, not a distance); returns how many.
+  struct Near {
+    std::uint32_t piece;
+    double along;
+  };
+  std::size_t touching(const Fan& fan, const Vec3d& q, std::uint64_t pieces, Near* out) const;
+
+  std::size_t pieces() const { return capsules_.size() + boxes_.size(); }
 
  private:
   struct Capsule {
     Vec3d a, axis;  // axis = b - a
-    double reach2;  // (radius + margin)^2
+    double reach;   // radius + margin
+    double reach2;  // reach^2
   };
   struct Box {
     Vec3d centre, half;  // half extents grown by the margin
   };
   // Pieces are the capsules, then the boxes, numbered in that order.
   bool touches(std::size_t piece, const Vec3d& p, const Vec3d& d) const;
-  std::size_t pieces() const { return capsules_.size() + boxes_.size(); }
+  // Narrows a capsule's rectangle to the box of its end balls' shadows.
+  static void narrowToBalls(const Capsule& c, const Vec3d& p, int axis, double side, double toPlane, double* rect);
+  // touches(), and where along d the piece lies nearest.
+  bool touchesAlong(std::size_t piece, const Vec3d& p, const Vec3d& d, double& along) const;
 
   bool active_ = false;
   std::array<int, 3> cells_{};

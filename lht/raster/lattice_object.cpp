@@ -6,7 +6,7 @@
 
 #include "foundation/fnv1a.hpp"
 #include "render/shapes/composite_shapes.hpp"
-#include "render/shapes/polyline_shape.hpp"
+#include "render/shapes/polyline_parts.hpp"
 #include "render/shapes/quartic_presets.hpp"
 #include "foundation/error.hpp"
 
@@ -39,6 +39,20 @@ Bounds<double> nodeBounds(const NodeDesc& node, const Mat4d& parentToObject) {
   return box;
 }
 
+// A polyline leaf's capsules, built as buildPrimitive builds its union (the
+// leaf's shape with the node's transform), in the order coverOf gives their
+// capsules; nothing for any other node.
+std::optional<ObjectParts> polylineParts(const NodeDesc& node) {
+  if (node.kind != NodeDesc::Kind::Leaf || !node.leaf) return std::nullopt;
+  const std::optional<LeafShape> shape = node.leaf->shape();
+  const PolylineShape* polyline = shape ? std::get_if<PolylineShape>(&*shape) : nullptr;
+  if (!polyline) return std::nullopt;
+  ObjectParts parts;
+  parts.owner = makePolylineNamingParts<double>(polyline->points, polyline->radius, Mat4d(1.0) * node.transform,
+                                                node.material.value_or(0), parts.parts);
+  return parts;
+}
+
 }  // namespace
 
 std::uint64_t LatticeObject::hash() const { return fnv1a64(definition); }
@@ -66,13 +80,16 @@ LatticeObject polylineObject(const std::vector<Vec3d>& points, double radius, co
   LatticeObject object;
   object.definition = fmt::format("polyline '{}' radius={:.17g}", name, radius);
   for (const Vec3d& p : points) object.definition += fmt::format(" ({:.17g},{:.17g},{:.17g})", p.x, p.y, p.z);
+  ObjectParts parts;
   try {
-    object.primitive = makePolyline<double>(points, radius, Mat4d(1.0), 0);
+    parts.owner = makePolylineNamingParts<double>(points, radius, Mat4d(1.0), 0, parts.parts);
   } catch (const Error& e) {
     throw Error(e.kind(), fmt::format("{}: {}", name, e.what()));
   }
+  object.primitive = parts.owner;
   object.bounds = polylineBounds(points, radius);
   object.cover = polylineCover(points, radius);
+  object.parts = std::move(parts);
   return object;
 }
 
@@ -87,6 +104,7 @@ LatticeObject sceneObject(const NodeDesc& node, std::string definition) {
   object.bounds.lo = glm::max(object.bounds.lo, built.lo);
   object.bounds.hi = glm::min(object.bounds.hi, built.hi);
   object.cover = coverOf(node, Mat4d(1.0));
+  object.parts = polylineParts(node);
   object.definition = std::move(definition);
   return object;
 }

@@ -13,6 +13,14 @@
 
 namespace lattice::lht {
 
+// The object as a union of parts that the cover's pieces hold one each
+// (part k inside piece k): the rasterizer traces a segment against the parts
+// it passes near (lht/raster/rasterize.hpp) instead of walking the union.
+struct ObjectParts {
+  std::shared_ptr<const Primitive<double>> owner;  // the union of the parts, which holds them
+  std::vector<const Primitive<double>*> parts;
+};
+
 struct LatticeObject {
   std::string definition;  // canonical; equal definitions rasterize identically
   Bounds<double> bounds;   // tight box in object coordinates (sets the lattice size)
@@ -20,6 +28,10 @@ struct LatticeObject {
   // Pieces containing the solid (object coordinates), for the rasterizer's
   // cull; unset: none known, every pair is traced.
   std::optional<ObjectCover> cover;
+  // Set where the primitive is exactly the union of parts built by the same
+  // call (a polyline's capsules), each inside its piece of `cover`; unset,
+  // every segment is traced against the whole primitive.
+  std::optional<ObjectParts> parts;
   std::uint64_t hash() const;
 };
 

@@ -5,6 +5,11 @@
 // Given a cover of the object (lht/raster/object_cover.hpp), a pair whose segment
 // stays clear of it is a miss without a trace (lht/raster/cover_cull.hpp); the
 // pairs that may touch are traced as without it, so the table is the same.
+// The exit points a row visits are the cull's candidates
+// (lht/raster/exit_candidates.hpp); where the object is a union of parts, one
+// a piece of its cover (a polyline's capsules: lht/raster/lattice_object.hpp),
+// a segment is traced against the parts it passes near, with the union's
+// answer to the bit (docs/lattices.md, "Tracing a polyline through its capsules").
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
@@ -67,6 +72,9 @@ class RasterHitLimit : public std::runtime_error {
 RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const RasterOptions& options = {});
 RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
                        const RasterOptions& options = {});
+// With the object's parts (null: none): the same result again.
+RasterResult rasterize(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
+                       const ObjectParts* parts, const RasterOptions& options);
 // A lattice object's primitive, with its cover when it has one.
 RasterResult rasterize(const LatticeBox& box, const LatticeObject& object, const RasterOptions& options = {});
 
@@ -80,6 +88,11 @@ class PairTracer {
   // answers, fewer traces.
   PairTracer(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
              double grazeTolerance = RasterOptions{}.grazeTolerance);
+  // With the object's parts too (null: none; lht/raster/lattice_object.hpp),
+  // which traceCandidate asks in place of the object where the cover's
+  // pieces are theirs: the same answers, fewer capsules asked.
+  PairTracer(const LatticeBox& box, const Primitive<double>& object, const ObjectCover* cover,
+             const ObjectParts* parts, double grazeTolerance);
   // The hit of the segment from `in` to `out` (points on the box's surface),
   // with its unit normal; false for a miss, including the pairs rasterize()
   // never traces (a shared face, a segment missing the object's box).
@@ -89,10 +102,21 @@ class PairTracer {
   // pairs leaving one point; null: the cull tests the pair alone.
   bool trace(const LatticePoint& in, std::uint8_t facesIn, const LatticePoint& out, std::uint8_t facesOut,
              RasterHit& hit, bool& traced, const CoverCull::Fan* fan = nullptr) const;
+  // The same for a pair sharing no face that the cull let through (or that
+  // has no cull to pass): the pair is traced unless it misses the object's box.
+  bool traceUnculled(const LatticePoint& in, const LatticePoint& out, RasterHit& hit, bool& traced) const;
+  // The same for an exit point of the fan's candidates (lht/raster/exit_candidates.hpp)
+  // sharing no face with fan.p's point `in`: the cull's exact test on the
+  // pieces whose rectangles hold it, then the trace (an active cull only).
+  bool traceCandidate(const LatticePoint& in, const LatticePoint& out, const CoverCull::Fan& fan,
+                      std::uint64_t pieces, RasterHit& hit, bool& traced) const;
   const CoverCull& cull() const { return cull_; }
 
  private:
   bool traceClosed(const Vec3d& from, const Vec3d& to, double& s, Vec3d& normal) const;
+  bool clipsBounds(const Vec3d& from, const Vec3d& to) const;
+  bool nearestPart(const Vec3d& from, const Vec3d& to, CoverCull::Near* near, std::size_t count, double& s,
+                   Vec3d& normal) const;
 
   const LatticeBox& box_;
   const Primitive<double>& object_;
@@ -100,6 +124,8 @@ class PairTracer {
   Mat4d latticeToObject_{1.0};
   Bounds<double> bounds_;
   CoverCull cull_;
+  // The object's parts by cover piece, where every piece is one part's; empty: none.
+  std::vector<const Primitive<double>*> parts_;
 };
 
 }  // namespace lattice::lht

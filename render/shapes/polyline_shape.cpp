@@ -2,6 +2,7 @@
 // per segment, each placed by the rigid map taking the z axis onto it, joined
 // by a CSG union.
 #include "render/shapes/polyline_shape.hpp"
+#include "render/shapes/polyline_parts.hpp"
 
 #include <fmt/format.h>
 
@@ -32,22 +33,33 @@ Mat4d segmentFrame(const Vec3d& a, const Vec3d& b) {
 }  // namespace
 
 template <typename T>
-PrimitivePtr<T> makePolyline(const std::vector<Vec3d>& points, double radius, const Mat4d& objectToWorld,
-                             MaterialId material) {
+PrimitivePtr<T> makePolylineNamingParts(const std::vector<Vec3d>& points, double radius, const Mat4d& objectToWorld,
+                                        MaterialId material, std::vector<const Primitive<T>*>& parts) {
   if (points.size() < 2) throw Error(ErrorKind::Input, "a polyline needs at least two points");
   std::vector<PrimitivePtr<T>> pieces;
+  parts.clear();
   for (std::size_t i = 1; i < points.size(); ++i) {
     const double length = glm::length(points[i] - points[i - 1]);
     if (!(length > 0.0) || !std::isfinite(length))
       throw Error(ErrorKind::Input, fmt::format("polyline points {} and {} coincide (or are not finite)", i - 1, i));
     pieces.push_back(makeCapsule<T>(radius, length, objectToWorld * segmentFrame(points[i - 1], points[i]), material));
+    parts.push_back(pieces.back().get());  // the union keeps the object where it is
   }
   if (pieces.size() == 1) return std::move(pieces.front());
   return makeCsgNode<T>(CsgOp::Union, std::move(pieces));
 }
 
-#define LATTICE_INSTANTIATE(T) \
-  template PrimitivePtr<T> makePolyline<T>(const std::vector<Vec3d>&, double, const Mat4d&, MaterialId);
+template <typename T>
+PrimitivePtr<T> makePolyline(const std::vector<Vec3d>& points, double radius, const Mat4d& objectToWorld,
+                             MaterialId material) {
+  std::vector<const Primitive<T>*> parts;
+  return makePolylineNamingParts<T>(points, radius, objectToWorld, material, parts);
+}
+
+#define LATTICE_INSTANTIATE(T)                                                                                 \
+  template PrimitivePtr<T> makePolyline<T>(const std::vector<Vec3d>&, double, const Mat4d&, MaterialId);       \
+  template PrimitivePtr<T> makePolylineNamingParts<T>(const std::vector<Vec3d>&, double, const Mat4d&, MaterialId, \
+                                                      std::vector<const Primitive<T>*>&);
 LATTICE_FOR_EACH_ARITHMETIC(LATTICE_INSTANTIATE)
 #undef LATTICE_INSTANTIATE
 
