@@ -129,6 +129,15 @@ bench_picture() {
   "$1/app/lattice" render "$2" --width "$3" --height "$3" -q -o "$4" 2>/dev/null
 }
 
+# bench_same_picture A B LATTICE: "identical" when the PNGs A and B are the
+# same bytes, "same pixels" when only their encoding differs (LATTICE's
+# `diff` finds no pixel apart: a change to the PNG encoder), else "DIFFERENT".
+bench_same_picture() {
+  if cmp -s "$1" "$2"; then echo identical
+  elif "$3" diff "$1" "$2" 2>/dev/null | grep -q '^differing *0 pixels'; then echo "same pixels"
+  else echo DIFFERENT; fi
+}
+
 # bench_loaded COMMAND...: runs it between two lines of the load average.
 bench_loaded() {
   echo "load average before: $(bench_loadavg)"

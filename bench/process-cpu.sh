@@ -44,12 +44,6 @@ one() {
   echo "$cpu $(((t1 - t0) / 1000))"
 }
 
-# "identical", "same pixels" or "DIFFER" for two pictures.
-compare() {
-  if cmp -s "$1" "$2"; then echo identical
-  elif "$after" diff "$1" "$2" 2>/dev/null | grep -q '^differing *0 pixels'; then echo "same pixels"
-  else echo DIFFER; fi
-}
 
 echo "# $(date -u '+%F %H:%M') UTC, $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg); $runs alternating runs, ${w}x$h"
 echo "| scene | thr | binary | ${phase:+$phase }CPU ms, median | min-max | x before | wall ms, median | min-max | x before | pictures |"
@@ -61,8 +55,8 @@ for scene in $scenes; do
     for ((r = 0; r < runs; r++)); do
       one "$before" "$scene" "$out/b.png" "$t" >>"$out/before"
       one "$after" "$scene" "$out/a.png" "$t" >>"$out/after"
-      verdict=$(compare "$out/b.png" "$out/a.png")
-      [[ $same == DIFFER || $verdict == identical ]] || same=$verdict
+      verdict=$(bench_same_picture "$out/b.png" "$out/a.png" "$after")
+      [[ $same == DIFFERENT || $verdict == identical ]] || same=$verdict
     done
     python3 - "$scene" "$t" "$out/before" "$out/after" "$same" <<'PY'
 import statistics, sys

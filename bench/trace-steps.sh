@@ -8,7 +8,8 @@
 # (renderImage's CPU seconds, all threads: steadier than wall time on a
 # shared machine). Prints each binary's median and min-max and its ratio to
 # the first binary's median, the load average at the start and the end, and
-# whether every binary wrote the same PNG bytes as the first.
+# whether every binary wrote the same PNG bytes as the first (or the same
+# pixels, where a binary's PNG encoder differs: bench_same_picture).
 #   bench/trace-steps.sh BIN1 BIN2 [BIN3 ...] [--runs N] [--threads T]
 #                        [--scene "NAME:RENDER ARGUMENTS"]...
 # e.g. --scene "plate7:scenes/fuzzy-sphere-5000.toml"
@@ -42,8 +43,7 @@ for s in "${scenes[@]}"; do
   for i in "${!bins[@]}"; do
     # shellcheck disable=SC2086
     m=$(bench_median ${times[$i]})
-    same=identical
-    cmp -s "$out/0.png" "$out/$i.png" || same=DIFFERENT
+    same=$(bench_same_picture "$out/0.png" "$out/$i.png" "${bins[$i]}")
     printf '%-14s %-40s %.4f (%s) %.3f %s\n' "$name" "${bins[$i]}" "$m" "$(bench_range ${times[$i]})" \
       "$(awk -v a="$m" -v b="$first" 'BEGIN { print a / b }')" "$same"
   done
