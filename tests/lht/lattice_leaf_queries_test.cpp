@@ -134,7 +134,15 @@ TEST_CASE("lattice chord: the cheap rounding is std::round's, clamped, on halves
     REQUIRE(nearestGridCoordinate<float>(vf, 255) == std::clamp(static_cast<int>(std::round(vf)), 0, 255));
   }
   CHECK(nearestGridCoordinate<double>(std::nan(""), 40) == 0);
+  CHECK(nearestGridCoordinate<float>(std::nanf(""), 40) == 0);
   CHECK(nearestGridCoordinate<double>(7.3, 5) == 5);
+  // The clamp's selects at the ends a chord lies on, and beyond them.
+  CHECK(nearestGridCoordinate<double>(-std::numeric_limits<double>::infinity(), 40) == 0);
+  CHECK(nearestGridCoordinate<double>(std::numeric_limits<double>::infinity(), 40) == 40);
+  CHECK(nearestGridCoordinate<double>(std::nextafter(40.0, 1e9), 40) == 40);
+  CHECK(nearestGridCoordinate<double>(std::nextafter(0.0, -1.0), 40) == 0);
+  CHECK(nearestGridCoordinate<float>(std::numeric_limits<float>::infinity(), 40) == 40);
+  CHECK(nearestGridCoordinate<float>(-std::numeric_limits<float>::infinity(), 40) == 0);
 }
 
 TEST_CASE("lattice chord: the clip gives Bounds::clip's t0 and t1 to the bit, and the affine map Ray::transformed's") {
