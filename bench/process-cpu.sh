@@ -34,16 +34,16 @@ one() {
   local bin=$1 scene=$2 png=$3 t=$4 t0 t1 cpu report
   t0=$(date +%s%N)
   report=$(perf stat -x, -e task-clock -o "$out/stat" "$bin" render "$root/scenes/$scene.toml" --threads "$t" \
-    --width "$w" --height "$h" -o "$png" 2>&1 >/dev/null | tail -n 1)
+    --width "$w" --height "$h" --quiet -o "$png" 2>&1 >/dev/null | tail -n 1)
   t1=$(date +%s%N)
   if [[ -n $phase ]]; then
     cpu=$(grep -o "(CPU .*)" <<<"$report" | grep -o "$phase [0-9.]* s" | awk '{ printf "%.3f", $2 * 1000 }')
   else
     cpu=$(grep task-clock "$out/stat" | cut -d, -f1)
   fi
+  [[ -n $cpu ]] || bench_die "no ${phase:-task-clock} CPU figure from $bin: $report"
   echo "$cpu $(((t1 - t0) / 1000))"
 }
-
 
 echo "# $(date -u '+%F %H:%M') UTC, $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg); $runs alternating runs, ${w}x$h"
 echo "| scene | thr | binary | ${phase:+$phase }CPU ms, median | min-max | x before | wall ms, median | min-max | x before | pictures |"

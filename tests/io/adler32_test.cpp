@@ -20,8 +20,8 @@ std::uint32_t zlibAdler(std::uint32_t adler, const std::vector<std::uint8_t>& by
   return static_cast<std::uint32_t>(adler32_z(adler, bytes.data() + from, size));
 }
 
-struct PortableAdlerOnExit {
-  ~PortableAdlerOnExit() { forceAdlerPath(AdlerPath::Auto); }
+struct AutoAdlerPathOnExit {
+  ~AutoAdlerPathOnExit() { forceAdlerPath(AdlerPath::Auto); }
 };
 
 }  // namespace
@@ -29,7 +29,7 @@ struct PortableAdlerOnExit {
 TEST_CASE("Adler-32 by blocks equals zlib's at every length, start and offset", "[io][png]") {
   const AdlerPath path = GENERATE(AdlerPath::Auto, AdlerPath::Portable);
   forceAdlerPath(path);
-  PortableAdlerOnExit restore;
+  AutoAdlerPathOnExit restore;
   std::mt19937 random(11);
   std::vector<std::uint8_t> noise(3 * 5536 + 100), ones(3 * 5536 + 100, 0xff);
   for (auto& b : noise) b = static_cast<std::uint8_t>(random());
